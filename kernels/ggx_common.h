@@ -1,0 +1,79 @@
+// ggx_common.h - shared device-side helpers for every ggxcl kernel header:
+// the inlining attribute, constants, a struct of three scalar floats and the
+// few vector operations the samplers need.
+//
+// The math is written on scalar floats: `ggx_vec3` is a plain struct, not the
+// OpenCL `float3` vector type, so after inlining it dissolves into scalars
+// and PoCL can turn the work-items of a work-group into SIMD lanes (float3
+// values and out-of-line calls in the hot path block LLVM's vectorizer).
+#ifndef GGX_COMMON_H
+#define GGX_COMMON_H
+
+// Force inlining: PoCL vectorizes across work-items only when the
+// per-work-item code is a straight line with no calls.
+#define GGX_INLINE inline __attribute__((always_inline))
+
+#define GGX_PI 3.14159265358979323846f
+#define GGX_TWO_PI 6.28318530717958647692f
+#define GGX_INV_PI 0.31830988618379067154f
+
+typedef struct {
+    float x, y, z;
+} ggx_vec3;
+
+// What every sampler returns: the microfacet normal m, the reflected
+// direction o, their densities (per steradian) and the white-furnace
+// estimator weight f(i,o) cos(o) / pdf(o) with Fresnel 1 (0 when wasted).
+typedef struct {
+    ggx_vec3 m, o;
+    float pdf_m, pdf_o, weight;
+} ggx_sample;
+
+GGX_INLINE ggx_vec3 ggx_vec3_make(float x, float y, float z)
+{
+    ggx_vec3 v;
+    v.x = x;
+    v.y = y;
+    v.z = z;
+    return v;
+}
+
+GGX_INLINE float ggx_dot(ggx_vec3 a, ggx_vec3 b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+GGX_INLINE ggx_vec3 ggx_add(ggx_vec3 a, ggx_vec3 b)
+{
+    return ggx_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z);
+}
+
+GGX_INLINE ggx_vec3 ggx_scale(ggx_vec3 a, float s)
+{
+    return ggx_vec3_make(a.x * s, a.y * s, a.z * s);
+}
+
+GGX_INLINE ggx_vec3 ggx_normalize(ggx_vec3 a)
+{
+    return ggx_scale(a, rsqrt(ggx_dot(a, a)));
+}
+
+GGX_INLINE ggx_vec3 ggx_cross(ggx_vec3 a, ggx_vec3 b)
+{
+    return ggx_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+
+// Mirror reflection of i about the unit normal m: o = 2 (i.m) m - i.
+GGX_INLINE ggx_vec3 ggx_reflect(ggx_vec3 i, ggx_vec3 m)
+{
+    float twice_dot = 2.0f * ggx_dot(i, m);
+    return ggx_vec3_make(twice_dot * m.x - i.x, twice_dot * m.y - i.y, twice_dot * m.z - i.z);
+}
+
+// The stretch of Heitz 2018 sec. 2: (ax wx, ay wy, wz).  Its length is t(w).
+GGX_INLINE ggx_vec3 ggx_stretch(ggx_vec3 w, float ax, float ay)
+{
+    return ggx_vec3_make(ax * w.x, ay * w.y, w.z);
+}
+
+#endif

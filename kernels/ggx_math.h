@@ -1,0 +1,102 @@
+// ggx_math.h - the GGX (Trowbridge-Reitz) microfacet model in tangent space,
+// where the surface normal is (0, 0, 1): the normal distribution D, Smith's
+// Lambda, masking G1, masking-shadowing G2 (height-correlated and separable),
+// the projected area sigma and the VNDF and reflection densities.
+// Anisotropic forms take (ax, ay); the `_iso` forms take one alpha.
+// Notation: t(w) = |(ax wx, ay wy, wz)|, see SPEC.md "Shared math".
+#ifndef GGX_MATH_H
+#define GGX_MATH_H
+
+#include "ggx_common.h"
+
+GGX_INLINE float ggx_t(ggx_vec3 w, float ax, float ay)
+{
+    ggx_vec3 s = ggx_stretch(w, ax, ay);
+    return sqrt(ggx_dot(s, s));
+}
+
+// D(m) = 1 / (pi ax ay (mx^2/ax^2 + my^2/ay^2 + mz^2)^2) for mz > 0 (Walter 2007, eq. 33).
+GGX_INLINE float ggx_D(ggx_vec3 m, float ax, float ay)
+{
+    float qx = m.x / ax, qy = m.y / ay;
+    float s = qx * qx + qy * qy + m.z * m.z;
+    return m.z > 0.0f ? 1.0f / (GGX_PI * ax * ay * s * s) : 0.0f;
+}
+
+GGX_INLINE float ggx_D_iso(ggx_vec3 m, float alpha)
+{
+    float a2 = alpha * alpha;
+    float s = (m.x * m.x + m.y * m.y) / a2 + m.z * m.z;
+    return m.z > 0.0f ? 1.0f / (GGX_PI * a2 * s * s) : 0.0f;
+}
+
+// Smith Lambda(w) = (t(w)/|wz| - 1)/2 for wz > 0, and Lambda(-w) = 1 + Lambda(w).
+GGX_INLINE float ggx_lambda(ggx_vec3 w, float ax, float ay)
+{
+    float half_ratio = 0.5f * ggx_t(w, ax, ay) / fabs(w.z);
+    return w.z > 0.0f ? half_ratio - 0.5f : half_ratio + 0.5f;
+}
+
+// G1(w) = 1/(1 + Lambda(w)) = 2 wz / (wz + t(w)) for wz > 0, else 0.
+GGX_INLINE float ggx_G1(ggx_vec3 w, float ax, float ay)
+{
+    return w.z > 0.0f ? 2.0f * w.z / (w.z + ggx_t(w, ax, ay)) : 0.0f;
+}
+
+// Height-correlated G2 = 1/(1 + Lambda(i) + Lambda(o)) written without
+// divisions by iz or oz: 2 iz oz / (t(i) oz + t(o) iz) (Heitz 2014, eq. 99).
+// Takes t(i) and t(o) so callers that have them pay no square root.
+GGX_INLINE float ggx_G2_from_t(float iz, float oz, float ti, float to)
+{
+    return (iz > 0.0f && oz > 0.0f) ? 2.0f * iz * oz / (ti * oz + to * iz) : 0.0f;
+}
+
+GGX_INLINE float ggx_G2(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_G2_from_t(i.z, o.z, ggx_t(i, ax, ay), ggx_t(o, ax, ay));
+}
+
+// The separable form G1(i) G1(o).
+GGX_INLINE float ggx_G2_separable(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_G1(i, ax, ay) * ggx_G1(o, ax, ay);
+}
+
+// 1 / (iz + t(i)) without the cancellation of iz + t for iz < 0:
+// (t - iz) / (ax^2 ix^2 + ay^2 iy^2) (Eto & Tokuyoshi 2023 supplement, sec. 3).
+GGX_INLINE float ggx_inv_iz_plus_t(float iz, float t, float ax, float ay, ggx_vec3 i)
+{
+    float sx = ax * i.x, sy = ay * i.y;
+    return iz >= 0.0f ? 1.0f / (iz + t) : (t - iz) / (sx * sx + sy * sy);
+}
+
+// Projected area of the microsurface seen from i: sigma(i) = (iz + t(i))/2.
+GGX_INLINE float ggx_projected_area(ggx_vec3 i, float ax, float ay)
+{
+    return 0.5f / ggx_inv_iz_plus_t(i.z, ggx_t(i, ax, ay), ax, ay, i);
+}
+
+// VNDF Dv(m; i) = max(0, i.m) D(m) / sigma(i) (Heitz 2018, eq. 1).
+GGX_INLINE float ggx_vndf_pdf(ggx_vec3 m, ggx_vec3 i, float ax, float ay)
+{
+    float inv = ggx_inv_iz_plus_t(i.z, ggx_t(i, ax, ay), ax, ay, i);
+    return 2.0f * fmax(0.0f, ggx_dot(i, m)) * ggx_D(m, ax, ay) * inv;
+}
+
+// Density of the reflection o of i about a VNDF-sampled m:
+// Dv(m; i) / (4 i.m) = D(m) / (2 (iz + t(i))).
+GGX_INLINE float ggx_vndf_reflection_pdf(ggx_vec3 m, ggx_vec3 i, float ax, float ay)
+{
+    float inv = ggx_inv_iz_plus_t(i.z, ggx_t(i, ax, ay), ax, ay, i);
+    return 0.5f * ggx_D(m, ax, ay) * inv;
+}
+
+// Half vector of i and o, or (0, 0, 0) when o = -i (no microfacet reflects i into o).
+GGX_INLINE ggx_vec3 ggx_half_vector(ggx_vec3 i, ggx_vec3 o)
+{
+    ggx_vec3 h = ggx_add(i, o);
+    float len2 = ggx_dot(h, h);
+    return len2 > 0.0f ? ggx_scale(h, rsqrt(len2)) : ggx_vec3_make(0.0f, 0.0f, 0.0f);
+}
+
+#endif

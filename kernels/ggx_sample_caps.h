@@ -1,0 +1,38 @@
+// ggx_sample_caps.h - method `caps`: visible normals as half vectors between
+// the stretched view and a direction drawn uniformly from a spherical cap
+// (Dupuy & Benyoub 2023, sec. 3).  No basis, so no basis singularity.
+#ifndef GGX_SAMPLE_CAPS_H
+#define GGX_SAMPLE_CAPS_H
+
+#include "ggx_sincos.h"
+#include "ggx_vndf.h"
+
+// A direction drawn uniformly from the spherical cap z in (-lower, 1] around +z:
+// phi = 2 pi u1, z = (1 - u2)(1 + lower) - lower (Dupuy & Benyoub, Listing 3).
+GGX_INLINE ggx_vec3 ggx_sample_cap(float lower, float u1, float u2)
+{
+    float z = (1.0f - u2) * (1.0f + lower) - lower;
+    float sin_theta = sqrt(clamp(1.0f - z * z, 0.0f, 1.0f));
+    float sin_phi, cos_phi;
+    ggx_sincos_2pi(u1, &sin_phi, &cos_phi);
+    return ggx_vec3_make(sin_theta * cos_phi, sin_theta * sin_phi, z);
+}
+
+GGX_INLINE ggx_sample ggx_sample_caps(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    float ti = ggx_t(i, ax, ay);
+    ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // warp to the hemisphere configuration
+    ggx_vec3 c = ggx_sample_cap(v.z, u1, u2);                     // reflected direction in that space (eq. 10)
+    ggx_vec3 h = ggx_add(c, v);                                   // unnormalized half vector (sec. 3.3)
+    float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
+    ggx_sample out = ggx_finish_vndf_sample(i, h, ax, ay, inv_sum);
+    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
+    return out;
+}
+
+GGX_INLINE float ggx_pdf_caps(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_pdf_vndf_reflection(i, o, ax, ay);
+}
+
+#endif

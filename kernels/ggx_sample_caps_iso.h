@@ -1,0 +1,77 @@
+// ggx_sample_caps_iso.h - method `caps-iso`: isotropic spherical-cap VNDF
+// sampling in world space with no local basis (Benyoub 2024 blog).  It takes
+// the world-space normal n and view i and returns m and o in world space.
+// The cap is drawn around +z and carried onto n by the half-turn about
+// w = n + z: x -> (w.x) w / w.z - x, which maps z to n.  Singular at n = -z.
+#ifndef GGX_SAMPLE_CAPS_ISO_H
+#define GGX_SAMPLE_CAPS_ISO_H
+
+#include "ggx_sample_caps.h"
+
+// The isotropic stretch about n: the tangential part of x scaled by alpha.
+GGX_INLINE ggx_vec3 ggx_stretch_about(ggx_vec3 x, ggx_vec3 n, float alpha)
+{
+    float xn = ggx_dot(x, n);
+    return ggx_add(ggx_scale(x, alpha), ggx_scale(n, (1.0f - alpha) * xn));
+}
+
+// |x_t|^2, the squared tangential part x - (x.n) n, taken as a vector so a
+// nearly normal x keeps its relative precision.
+GGX_INLINE float ggx_tangential2(ggx_vec3 x, ggx_vec3 n, float xn)
+{
+    ggx_vec3 t = ggx_add(x, ggx_scale(n, -xn));
+    return ggx_dot(t, t);
+}
+
+// t(i) about n: |alpha i_t + iz n| with i_t the tangential part of i.
+GGX_INLINE float ggx_t_about(ggx_vec3 i, ggx_vec3 n, float alpha)
+{
+    ggx_vec3 s = ggx_stretch_about(i, n, alpha);
+    return sqrt(ggx_dot(s, s));
+}
+
+// 1/(iz + t) about n, cancellation-free for iz < 0 (as ggx_inv_iz_plus_t).
+GGX_INLINE float ggx_inv_iz_plus_t_about(ggx_vec3 i, ggx_vec3 n, float alpha, float iz, float ti)
+{
+    return iz >= 0.0f ? 1.0f / (iz + ti) : (ti - iz) / (alpha * alpha * ggx_tangential2(i, n, iz));
+}
+
+GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
+{
+    // Stretch the tangential part of i by alpha (blog: "warp to the hemisphere configuration").
+    float iz = ggx_dot(i, n);
+    float ti = ggx_t_about(i, n, alpha);
+    ggx_vec3 v = ggx_scale(ggx_stretch_about(i, n, alpha), 1.0f / ti);
+    // A cap around +z with the height of v above the surface, then the half-turn onto n.
+    ggx_vec3 c_std = ggx_sample_cap(iz / ti, u1, u2);
+    ggx_vec3 w = ggx_vec3_make(n.x, n.y, n.z + 1.0f);
+    ggx_vec3 c = ggx_add(ggx_scale(w, ggx_dot(w, c_std) / w.z), ggx_scale(c_std, -1.0f));
+    ggx_vec3 h = ggx_add(c, v);                                   // standard-space half vector
+    // Unstretch: m = normalize(alpha h_t + hz n); D(m) = |A h|^4/(pi alpha^2 |h|^4).
+    ggx_vec3 a = ggx_stretch_about(h, n, alpha);
+    float ratio = ggx_dot(a, a) / ggx_dot(h, h);
+    float inv_sum = ggx_inv_iz_plus_t_about(i, n, alpha, iz, ti);
+    ggx_sample out;
+    out.m = ggx_normalize(a);
+    out.o = ggx_reflect(i, out.m);
+    out.pdf_o = 0.5f * ratio * ratio / (GGX_PI * alpha * alpha) * inv_sum;
+    out.pdf_m = 4.0f * ggx_dot(i, out.m) * out.pdf_o;
+    float oz = ggx_dot(out.o, n);
+    float g2 = ggx_G2_from_t(iz, oz, ti, ggx_t_about(out.o, n, alpha));
+    out.weight = iz > 0.0f ? g2 / (2.0f * iz * inv_sum) : 0.0f;
+    return out;
+}
+
+// pdf of o from (n, i, o): D(m)/(2 (iz + t)) with m the half vector, all about n
+// (the blog's appendix writes the same as alpha^2 / (4 pi N^2 sigma)).
+GGX_INLINE float ggx_pdf_caps_iso(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
+{
+    ggx_vec3 m = ggx_half_vector(i, o);
+    float mz = ggx_dot(m, n);
+    float s = ggx_tangential2(m, n, mz) / (alpha * alpha) + mz * mz;
+    float D = mz > 0.0f ? 1.0f / (GGX_PI * alpha * alpha * s * s) : 0.0f;
+    float iz = ggx_dot(i, n);
+    return 0.5f * D * ggx_inv_iz_plus_t_about(i, n, alpha, iz, ggx_t_about(i, n, alpha));
+}
+
+#endif

@@ -1,0 +1,83 @@
+// ggx_sample_heitz.h - methods `heitz` (Heitz 2018, JCGT 7(4): the warped
+// disk form, as refactored in Listing 2 of Dupuy & Benyoub 2023) and
+// `heitz2017` (the half-disk form of the 2017 report, hal-01509746).
+// Both sample the visible part of the unit hemisphere seen from the
+// stretched view, through a basis (T1, T2) around it.
+#ifndef GGX_SAMPLE_HEITZ_H
+#define GGX_SAMPLE_HEITZ_H
+
+#include "ggx_sincos.h"
+#include "ggx_vndf.h"
+
+// Lifts the disk point (t1, t2) in the plane of (T1, T2) onto the unit hemisphere along v.
+GGX_INLINE ggx_vec3 ggx_lift_to_hemisphere(float t1, float t2, ggx_vec3 T1, ggx_vec3 T2, ggx_vec3 v)
+{
+    float tv = sqrt(fmax(0.0f, 1.0f - t1 * t1 - t2 * t2));
+    return ggx_vec3_make(t1 * T1.x + t2 * T2.x + tv * v.x,
+                         t1 * T1.y + t2 * T2.y + tv * v.y,
+                         t1 * T1.z + t2 * T2.z + tv * v.z);
+}
+
+// Unit vector (sx, sy, 0)/|(sx, sy)|, or (1, 0, 0) when the view is the pole.
+GGX_INLINE ggx_vec3 ggx_tangent_or_x(float sx, float sy)
+{
+    float len2 = sx * sx + sy * sy;
+    float inv = rsqrt(len2);
+    return len2 > 0.0f ? ggx_vec3_make(sx * inv, sy * inv, 0.0f) : ggx_vec3_make(1.0f, 0.0f, 0.0f);
+}
+
+GGX_INLINE ggx_sample ggx_sample_heitz(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    float ti = ggx_t(i, ax, ay);
+    ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // stretched view (Heitz 2018, sec. 2)
+    ggx_vec3 T1 = ggx_tangent_or_x(-v.y, v.x);                    // basis around v (Listing 2, l. 5-8)
+    ggx_vec3 T2 = ggx_cross(v, T1);
+    float sin_phi, cos_phi;
+    ggx_sincos_2pi(u2, &sin_phi, &cos_phi);
+    float r = sqrt(u1);                                          // uniform point on the unit disk
+    float t1 = r * cos_phi, t2 = r * sin_phi;
+    float s = 0.5f * (1.0f + v.z);                               // warp onto the visible cross section
+    t2 = (1.0f - s) * sqrt(fmax(0.0f, 1.0f - t1 * t1)) + s * t2;
+    ggx_vec3 h = ggx_lift_to_hemisphere(t1, t2, T1, T2, v);
+    h.z = fmax(0.0f, h.z);
+    float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
+    ggx_sample out = ggx_finish_vndf_sample(i, h, ax, ay, inv_sum);
+    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
+    return out;
+}
+
+GGX_INLINE ggx_sample ggx_sample_heitz2017(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    float ti = ggx_t(i, ax, ay);
+    ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // stretch view (report sec. 1)
+    ggx_vec3 T1 = ggx_tangent_or_x(v.y, -v.x);                    // T1 = normalize(V x z), eq. 1
+    ggx_vec3 T2 = ggx_cross(T1, v);                               // eq. 2
+    // Choose a half disk by its projected area, a = 1/(1 + vz) (eq. 4), and
+    // scale the angle within it: phi in [0, pi) or [pi, 2 pi).
+    float a = 1.0f / (1.0f + v.z);
+    int first_half = u2 < a;
+    float turn = first_half ? 0.5f * u2 / a : 0.5f + 0.5f * (u2 - a) / (1.0f - a);
+    float sin_phi, cos_phi;
+    ggx_sincos_2pi(turn, &sin_phi, &cos_phi);
+    float r = sqrt(u1);                                          // eq. 3
+    float p1 = r * cos_phi;
+    float p2 = r * sin_phi * (first_half ? 1.0f : v.z);         // eq. 5: the tangent half disk is foreshortened
+    ggx_vec3 h = ggx_lift_to_hemisphere(p1, p2, T1, T2, v);      // eq. 6
+    h.z = fmax(0.0f, h.z);
+    float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
+    ggx_sample out = ggx_finish_vndf_sample(i, h, ax, ay, inv_sum);
+    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
+    return out;
+}
+
+GGX_INLINE float ggx_pdf_heitz(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_pdf_vndf_reflection(i, o, ax, ay);
+}
+
+GGX_INLINE float ggx_pdf_heitz2017(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_pdf_vndf_reflection(i, o, ax, ay);
+}
+
+#endif

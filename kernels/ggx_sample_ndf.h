@@ -1,0 +1,43 @@
+// ggx_sample_ndf.h - method `ndf`: sampling the normal distribution D(m) mz
+// (Walter et al. 2007, sec. 5.4; seed blog part 1) and its reflection pdf.
+#ifndef GGX_SAMPLE_NDF_H
+#define GGX_SAMPLE_NDF_H
+
+#include "ggx_math.h"
+#include "ggx_sincos.h"
+
+GGX_INLINE ggx_sample ggx_sample_ndf(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    ggx_sample out;
+    // Walter eq. 35-36 in slope space: |slope|/alpha = r = sqrt(u1/(1-u1)), phi = 2 pi u2.
+    float one_minus_u1 = 1.0f - u1;
+    float r = sqrt(u1 / one_minus_u1);
+    float sin_phi, cos_phi;
+    ggx_sincos_2pi(u2, &sin_phi, &cos_phi);
+    // The normal of slope (sx, sy) is (-sx, -sy, 1) normalized.
+    out.m = ggx_normalize(ggx_vec3_make(-ax * r * cos_phi, -ay * r * sin_phi, 1.0f));
+    out.o = ggx_reflect(i, out.m);
+    // D(m) = 1/(pi ax ay mz^4 (1 + r^2)^2) and 1 + r^2 = 1/(1 - u1), so
+    // pdf(m) = D(m) mz = (1 - u1)^2 / (pi ax ay mz^3).
+    float mz = out.m.z;
+    out.pdf_m = one_minus_u1 * one_minus_u1 / (GGX_PI * ax * ay * mz * mz * mz);
+    // Reflection Jacobian |dm/do| = 1/(4 |o.m|) = 1/(4 |i.m|) (Walter eq. 14).
+    float i_dot_m = ggx_dot(i, out.m);
+    out.pdf_o = out.pdf_m / (4.0f * fabs(i_dot_m));
+    // weight = D G2 / (4 iz) / pdf_o = G2 (i.m) / (iz mz); a back-facing m reflects nothing.
+    float g2 = ggx_G2(i, out.o, ax, ay);
+    out.weight = (i_dot_m > 0.0f && i.z > 0.0f) ? g2 * i_dot_m / (i.z * mz) : 0.0f;
+    return out;
+}
+
+// pdf of o recomputed from (i, o): the sampled m is the half vector flipped
+// into the upper hemisphere (m and -m reflect i into the same o).
+GGX_INLINE float ggx_pdf_ndf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    ggx_vec3 h = ggx_half_vector(i, o);
+    ggx_vec3 m = h.z < 0.0f ? ggx_scale(h, -1.0f) : h;
+    float i_dot_m = fabs(ggx_dot(i, m));
+    return i_dot_m > 0.0f ? ggx_D(m, ax, ay) * m.z / (4.0f * i_dot_m) : 0.0f;
+}
+
+#endif

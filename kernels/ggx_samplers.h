@@ -1,0 +1,52 @@
+// ggx_samplers.h - every ggxcl sampler and pdf for user kernels, plus a
+// dispatcher by method id.  Include this one header to get all of them:
+//   ggx_sample_<method>(...) -> ggx_sample {m, o, pdf_m, pdf_o, weight}
+//   ggx_pdf_<method>(...)    -> pdf of o recomputed from (i, o) alone
+// Method ids match the C++ enum ggxcl::Method.
+#ifndef GGX_SAMPLERS_H
+#define GGX_SAMPLERS_H
+
+#include "ggx_philox.h"
+#include "ggx_sample_bounded.h"
+#include "ggx_sample_caps.h"
+#include "ggx_sample_caps_iso.h"
+#include "ggx_sample_heitz.h"
+#include "ggx_sample_ndf.h"
+
+#define GGX_METHOD_NDF 0
+#define GGX_METHOD_HEITZ 1
+#define GGX_METHOD_HEITZ2017 2
+#define GGX_METHOD_CAPS 3
+#define GGX_METHOD_CAPS_ISO 4
+#define GGX_METHOD_BOUNDED 5
+
+// With a compile-time constant `method` the chain folds to one sampler.
+// Only caps-iso reads n (world space); the others work in tangent space.
+GGX_INLINE ggx_sample ggx_sample_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay,
+                                        float u1, float u2)
+{
+    if (method == GGX_METHOD_NDF)
+        return ggx_sample_ndf(i, ax, ay, u1, u2);
+    if (method == GGX_METHOD_HEITZ)
+        return ggx_sample_heitz(i, ax, ay, u1, u2);
+    if (method == GGX_METHOD_HEITZ2017)
+        return ggx_sample_heitz2017(i, ax, ay, u1, u2);
+    if (method == GGX_METHOD_CAPS_ISO)
+        return ggx_sample_caps_iso(n, i, ax, u1, u2);
+    if (method == GGX_METHOD_BOUNDED)
+        return ggx_sample_bounded(i, ax, ay, u1, u2);
+    return ggx_sample_caps(i, ax, ay, u1, u2);
+}
+
+GGX_INLINE float ggx_pdf_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    if (method == GGX_METHOD_NDF)
+        return ggx_pdf_ndf(i, o, ax, ay);
+    if (method == GGX_METHOD_CAPS_ISO)
+        return ggx_pdf_caps_iso(n, i, o, ax);
+    if (method == GGX_METHOD_BOUNDED)
+        return ggx_pdf_bounded(i, o, ax, ay);
+    return ggx_pdf_vndf_reflection(i, o, ax, ay);
+}
+
+#endif

@@ -1,0 +1,46 @@
+// ggx_vndf.h - pieces shared by the samplers of visible normals (heitz,
+// heitz2017, caps, bounded): the stretch into the standard configuration
+// where alpha = 1 (Heitz 2018, sec. 2), the unstretch of a normal, D(m)
+// evaluated from the standard-space normal, and the estimator weight.
+#ifndef GGX_VNDF_H
+#define GGX_VNDF_H
+
+#include "ggx_math.h"
+
+// D(m) for m = normalize(ax h.x, ay h.y, h.z), h any non-zero standard-space
+// normal: the NDF term becomes |A h|^4 / (pi ax ay |h|^4) with A = diag(ax, ay, 1).
+GGX_INLINE float ggx_D_from_standard(ggx_vec3 h, float ax, float ay)
+{
+    ggx_vec3 a = ggx_stretch(h, ax, ay);
+    float ratio = ggx_dot(a, a) / ggx_dot(h, h);
+    return ratio * ratio / (GGX_PI * ax * ay);
+}
+
+// Fills m, o and the densities of a sample whose standard-space normal is h;
+// inv_sum = 1 / (k iz + t(i)) with k = 1 for the plain VNDF.
+// pdf(o) = D(m) / (2 (k iz + t)) (Dupuy & Benyoub 2023 eq. 20; Eto & Tokuyoshi supplement sec. 2),
+// pdf(m) = pdf(o) 4 (i.m).
+GGX_INLINE ggx_sample ggx_finish_vndf_sample(ggx_vec3 i, ggx_vec3 h, float ax, float ay, float inv_sum)
+{
+    ggx_sample out;
+    out.m = ggx_normalize(ggx_stretch(h, ax, ay));
+    out.o = ggx_reflect(i, out.m);
+    out.pdf_o = 0.5f * ggx_D_from_standard(h, ax, ay) * inv_sum;
+    out.pdf_m = 4.0f * ggx_dot(i, out.m) * out.pdf_o;
+    return out;
+}
+
+// weight = D G2 / (4 iz) / pdf(o) = G2 (k iz + t(i)) / (2 iz), 0 when iz or oz <= 0.
+GGX_INLINE float ggx_vndf_weight(ggx_vec3 i, ggx_vec3 o, float ax, float ay, float ti, float inv_sum)
+{
+    float g2 = ggx_G2_from_t(i.z, o.z, ti, ggx_t(o, ax, ay));
+    return i.z > 0.0f ? g2 / (2.0f * i.z * inv_sum) : 0.0f;
+}
+
+// pdf of o recomputed from (i, o) for an unbounded VNDF sampler: m is the half vector.
+GGX_INLINE float ggx_pdf_vndf_reflection(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_vndf_reflection_pdf(ggx_half_vector(i, o), i, ax, ay);
+}
+
+#endif

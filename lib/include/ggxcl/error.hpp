@@ -1,0 +1,60 @@
+// error.hpp - the exceptions ggxcl throws: bad arguments (naming the
+// parameter, the value and what is allowed), OpenCL failures (carrying the
+// CL error name) and program build failures (with options and build log).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace ggxcl {
+
+// Base of every ggxcl exception.
+class Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// A caller passed a value outside what is allowed.
+class InvalidArgument : public Error {
+public:
+    InvalidArgument(const std::string& parameter, const std::string& value, const std::string& allowed);
+    const std::string& parameter() const { return parameter_; }
+
+private:
+    std::string parameter_;
+};
+
+// No OpenCL platform or no device matching a selector.
+class DeviceError : public Error {
+public:
+    using Error::Error;
+};
+
+// An OpenCL call failed; `what()` holds the call and the CL error name.
+class ClError : public Error {
+public:
+    ClError(const std::string& call, int code);
+    int code() const { return code_; }
+
+protected:
+    ClError(int code, const std::string& message) : Error(message), code_(code) {}
+
+private:
+    int code_;
+};
+
+// clBuildProgram failed: the message carries the CL error name, the build
+// options and the device's build log.
+class BuildError : public ClError {
+public:
+    BuildError(int code, const std::string& device, const std::string& options, const std::string& log);
+    const std::string& log() const { return log_; }
+
+private:
+    std::string log_;
+};
+
+// The symbolic name of an OpenCL error code, e.g. "CL_OUT_OF_RESOURCES".
+std::string cl_error_name(int code);
+
+} // namespace ggxcl

@@ -1,0 +1,47 @@
+// fields.hpp - the per-sample outputs a caller can ask for.  Only the
+// requested fields are computed and written (no pdf when nobody reads it).
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ggxcl {
+
+enum class Field {
+    m = 0,      // microfacet normal, 3 floats
+    o = 1,      // reflected direction, 3 floats
+    pdf_m = 2,  // density of m per steradian
+    pdf_o = 3,  // density of o per steradian
+    weight = 4, // f cos(o) / pdf(o) with Fresnel 1 and height-correlated G2; 0 when o is below the horizon
+};
+
+inline constexpr std::array<Field, 5> all_fields = {Field::m, Field::o, Field::pdf_m, Field::pdf_o,
+                                                    Field::weight};
+
+std::string_view field_name(Field field);   // "m", "o", "pdf_m", "pdf_o", "weight"
+Field parse_field(std::string_view name);   // throws InvalidArgument naming the allowed fields
+int field_columns(Field field);             // 3 for m and o, else 1
+
+// Fields parsed from a comma-separated list such as "m,o,pdf_m", in the given order.
+std::vector<Field> parse_field_list(std::string_view list);
+
+// A set of fields as a bit mask.
+class FieldSet {
+public:
+    FieldSet() = default;
+    FieldSet(std::initializer_list<Field> fields);
+    FieldSet(const std::vector<Field>& fields);
+    static FieldSet all();
+
+    FieldSet& add(Field field) { bits_ |= 1u << static_cast<unsigned>(field); return *this; }
+    bool has(Field field) const { return bits_ & (1u << static_cast<unsigned>(field)); }
+    bool empty() const { return bits_ == 0; }
+    unsigned bits() const { return bits_; }
+
+private:
+    unsigned bits_ = 0;
+};
+
+} // namespace ggxcl

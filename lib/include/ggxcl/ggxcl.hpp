@@ -1,0 +1,12 @@
+// ggxcl.hpp - the whole public API of ggxcl.
+#pragma once
+
+#include "ggxcl/device.hpp"
+#include "ggxcl/error.hpp"
+#include "ggxcl/fields.hpp"
+#include "ggxcl/kernel_sources.hpp"
+#include "ggxcl/method.hpp"
+#include "ggxcl/params.hpp"
+#include "ggxcl/program_cache.hpp"
+#include "ggxcl/sampler.hpp"
+#include "ggxcl/version.hpp"

@@ -1,0 +1,60 @@
+// params.hpp - what a batch of samples depends on: the method, roughness,
+// view (and normal for caps-iso), either uniform for the whole batch or per
+// sample, and the range of sample indices of a seed.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "ggxcl/method.hpp"
+
+namespace ggxcl {
+
+struct Vec3 {
+    float x = 0.0f, y = 0.0f, z = 1.0f;
+};
+
+// Parameters shared by every sample of a batch.
+struct SampleParams {
+    Method method = Method::caps;
+    float alpha_x = 0.3f, alpha_y = 0.3f;  // GGX alpha > 0; caps-iso needs alpha_x == alpha_y
+    Vec3 view{0.0f, 0.0f, 1.0f};           // unit, pointing away from the surface; tangent space
+                                           // (world space for caps-iso); z < 0 is below the horizon
+    Vec3 normal{0.0f, 0.0f, 1.0f};         // caps-iso only: the world-space surface normal
+};
+
+// Samples first .. first+count-1 of the stream `seed`.  Sample k depends on
+// (seed, k) alone, so any split into ranges gives the same values.
+struct SampleRange {
+    std::uint64_t seed = 0;
+    std::uint64_t first = 0;
+    std::uint64_t count = 0;
+};
+
+// Per-sample parameters held on the host; an empty vector means "use the
+// uniform value of SampleParams".  A non-empty vector has one entry per sample.
+struct PerSampleInputs {
+    std::vector<Vec3> views;
+    std::vector<std::array<float, 2>> alphas;  // (alpha_x, alpha_y)
+    std::vector<Vec3> normals;
+};
+
+// The view from polar angle theta and azimuth phi in degrees:
+// (sin t cos p, sin t sin p, cos t); theta above 90 is below the horizon.
+Vec3 view_from_angles(double theta_degrees, double phi_degrees);
+
+// Throws InvalidArgument unless the parameters are usable: alpha finite
+// and > 0, view and normal finite and of non-zero length, isotropic alpha
+// for caps-iso.  Views and normals are normalized by the caller's choice:
+// normalized() returns a copy with unit vectors.
+void validate(const SampleParams& params);
+SampleParams normalized(const SampleParams& params);
+
+// Largest count one range may hold (indices must not wrap around 2^64).
+void validate(const SampleRange& range);
+
+// Each non-empty per-sample vector must hold `count` entries of valid values.
+void validate(const PerSampleInputs& inputs, const SampleParams& params, std::uint64_t count);
+
+} // namespace ggxcl

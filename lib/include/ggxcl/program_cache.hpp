@@ -1,0 +1,31 @@
+// program_cache.hpp - OpenCL programs built from an embedded source, once
+// per (device, build options) and kept for the life of the cache.  A failed
+// build throws BuildError with the CL error name, the options and the log.
+#pragma once
+
+#include <map>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include "ggxcl/opencl.hpp"
+
+namespace ggxcl {
+
+class ProgramCache {
+public:
+    explicit ProgramCache(cl::Context context) : context_(std::move(context)) {}
+
+    // The program of embedded file `file` built for `device` with `options`.
+    cl::Program get(const cl::Device& device, const std::string& file, const std::string& options);
+
+    // Number of distinct programs built so far.
+    std::size_t size() const;
+
+private:
+    cl::Context context_;
+    mutable std::mutex mutex_;
+    std::map<std::pair<cl_device_id, std::string>, cl::Program> programs_;
+};
+
+} // namespace ggxcl

@@ -1,0 +1,111 @@
+// sampler.hpp - the ggxcl runtime: draws GGX samples on an OpenCL device
+// into host vectors (in bounded chunks) or into the caller's own buffers
+// on the caller's queue, and evaluates the pdf of given directions.
+//
+//   ggxcl::Sampler sampler;                       // GGXCL_DEVICE or the first device
+//   ggxcl::SampleParams p{ggxcl::Method::caps, 0.3f, 0.3f, ggxcl::view_from_angles(60, 0)};
+//   ggxcl::SampleSet s = sampler.generate(p, {/*seed*/ 1, /*first*/ 0, /*count*/ 1 << 20},
+//                                         {ggxcl::Field::m, ggxcl::Field::pdf_m});
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ggxcl/device.hpp"
+#include "ggxcl/fields.hpp"
+#include "ggxcl/opencl.hpp"
+#include "ggxcl/params.hpp"
+#include "ggxcl/program_cache.hpp"
+
+namespace ggxcl {
+
+// Samples on the host.  Vector fields are planar: m[c * count + j] is
+// component c (x, y, z) of sample j.  Fields not requested stay empty.
+struct SampleSet {
+    std::uint64_t count = 0;
+    std::vector<float> m, o, pdf_m, pdf_o, weight;
+
+    Vec3 m_at(std::size_t j) const { return {m[j], m[count + j], m[2 * count + j]}; }
+    Vec3 o_at(std::size_t j) const { return {o[j], o[count + j], o[2 * count + j]}; }
+    const std::vector<float>& column_source(Field field) const;
+};
+
+// Per-sample parameters in the caller's buffers, planar with the stride of
+// the call: view and normal 3 planes (unit vectors), alpha 2 planes
+// (alpha_x, alpha_y).  A default-constructed buffer means "uniform".
+struct DeviceInputs {
+    cl::Buffer view, alpha, normal;
+};
+
+// Output buffers of the caller, planar with the stride of the call: m and o
+// hold 3 planes, the others one.  Only the fields whose buffer is set are
+// computed and written.
+struct DeviceOutputs {
+    cl::Buffer m, o, pdf_m, pdf_o, weight;
+};
+
+class Sampler {
+public:
+    // A sampler with its own context and in-order queue on the device that
+    // `selector` names (see select_device: index or name part; empty means
+    // GGXCL_DEVICE, else the first device).
+    explicit Sampler(const std::string& selector = "");
+    explicit Sampler(const DeviceInfo& device);
+    // A sampler on the caller's context; the caller's queues on it are used by enqueue().
+    Sampler(const cl::Context& context, const cl::Device& device);
+
+    const cl::Context& context() const { return context_; }
+    const cl::Device& device() const { return device_; }
+    cl::CommandQueue& queue() { return queue_; }
+    std::string device_name() const;
+
+    // Samples per device pass in generate()/pdf(); memory stays bounded by
+    // it and the result does not depend on it.  Default 2^20.
+    void set_chunk_size(std::uint64_t samples);
+    std::uint64_t chunk_size() const { return chunk_size_; }
+
+    // Draws the samples of `range` into host vectors.
+    SampleSet generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                       const PerSampleInputs& per_sample = {});
+
+    // Draws the samples of `range` chunk by chunk (chunk_size() at most) and
+    // hands each chunk to `sink` with the offset of its first sample within
+    // the range; memory stays bounded whatever the count.
+    using ChunkSink = std::function<void(const SampleSet& chunk, std::uint64_t offset)>;
+    void generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                         const ChunkSink& sink, const PerSampleInputs& per_sample = {});
+
+    // The pdf of each direction o (per steradian) for the sampler of params.method.
+    std::vector<float> pdf(const SampleParams& params, const std::vector<Vec3>& directions,
+                           const PerSampleInputs& per_sample = {});
+
+    // Enqueues the samples of `range` (count < 2^32) into the caller's
+    // buffers on the caller's queue (of this sampler's context).  `stride`
+    // is the plane stride in floats of every buffer (0: count).
+    cl::Event enqueue(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
+                      const DeviceOutputs& outputs, std::uint32_t stride = 0,
+                      const DeviceInputs& inputs = {}, const std::vector<cl::Event>* wait = nullptr);
+
+    // Enqueues pdf evaluation of `count` directions (planar, 3 planes) into `pdf_out`.
+    cl::Event enqueue_pdf(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
+                          const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride = 0,
+                          const DeviceInputs& inputs = {}, const std::vector<cl::Event>* wait = nullptr);
+
+    // Number of distinct program variants built so far.
+    std::size_t programs_built() const { return programs_->size(); }
+
+private:
+    cl::Kernel kernel(const std::string& name, const SampleParams& params, unsigned write_mask,
+                      const DeviceInputs& inputs);
+
+    cl::Context context_;
+    cl::Device device_;
+    cl::CommandQueue queue_;
+    std::shared_ptr<ProgramCache> programs_;
+    std::uint64_t chunk_size_ = 1u << 20;
+};
+
+} // namespace ggxcl

@@ -1,0 +1,6 @@
+// version.hpp - the library version string.
+#pragma once
+
+namespace ggxcl {
+const char* version();
+}

@@ -1,0 +1,29 @@
+// error.cpp - messages of the ggxcl exceptions.
+#include "ggxcl/error.hpp"
+
+namespace ggxcl {
+
+InvalidArgument::InvalidArgument(const std::string& parameter, const std::string& value,
+                                 const std::string& allowed)
+    : Error("invalid " + parameter + " '" + value + "': allowed is " + allowed), parameter_(parameter)
+{
+}
+
+namespace {
+std::string describe_failure(const std::string& call, int code)
+{
+    return call + " failed: " + cl_error_name(code) + " (" + std::to_string(code) + ")";
+}
+} // namespace
+
+ClError::ClError(const std::string& call, int code) : Error(describe_failure(call, code)), code_(code) {}
+
+BuildError::BuildError(int code, const std::string& device, const std::string& options,
+                       const std::string& log)
+    : ClError(code, describe_failure("clBuildProgram on '" + device + "' with options '" + options + "'",
+                                     code) + "\nbuild log:\n" + log),
+      log_(log)
+{
+}
+
+} // namespace ggxcl

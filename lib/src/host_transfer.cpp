@@ -1,0 +1,166 @@
+// host_transfer.cpp - Sampler::generate, generate_chunks and pdf: the
+// host-memory front end that runs the bulk kernels chunk by chunk through
+// device buffers of bounded size.
+#include <algorithm>
+#include <cmath>
+
+#include "cl_call.hpp"
+#include "ggxcl/error.hpp"
+#include "ggxcl/sampler.hpp"
+
+namespace ggxcl {
+
+namespace {
+
+using detail::translate_cl_errors;
+
+std::size_t bytes(std::uint64_t floats)
+{
+    return static_cast<std::size_t>(floats * sizeof(float));
+}
+
+// Entries [start, start+n) of `values` as planes of stride `capacity`, unit length.
+std::vector<float> planar_units(const std::vector<Vec3>& values, std::uint64_t start, std::uint64_t n,
+                                std::uint64_t capacity)
+{
+    std::vector<float> planes(3 * capacity, 0.0f);
+    for (std::uint64_t j = 0; j < n; ++j) {
+        const Vec3& v = values[start + j];
+        float inv = 1.0f / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        planes[j] = v.x * inv;
+        planes[capacity + j] = v.y * inv;
+        planes[2 * capacity + j] = v.z * inv;
+    }
+    return planes;
+}
+
+std::vector<float> planar_alphas(const std::vector<std::array<float, 2>>& values, std::uint64_t start,
+                                 std::uint64_t n, std::uint64_t capacity)
+{
+    std::vector<float> planes(2 * capacity, 1.0f);
+    for (std::uint64_t j = 0; j < n; ++j) {
+        planes[j] = values[start + j][0];
+        planes[capacity + j] = values[start + j][1];
+    }
+    return planes;
+}
+
+// Device buffers for the per-sample inputs of one chunk, refilled per chunk.
+struct ChunkInputs {
+    DeviceInputs buffers;
+
+    ChunkInputs(const cl::Context& context, const PerSampleInputs& in, std::uint64_t capacity)
+    {
+        if (!in.views.empty()) buffers.view = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(3 * capacity));
+        if (!in.alphas.empty()) buffers.alpha = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(2 * capacity));
+        if (!in.normals.empty()) buffers.normal = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(3 * capacity));
+    }
+
+    void upload(cl::CommandQueue& queue, const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
+                std::uint64_t capacity)
+    {
+        if (!in.views.empty()) write(queue, buffers.view, planar_units(in.views, start, n, capacity));
+        if (!in.alphas.empty()) write(queue, buffers.alpha, planar_alphas(in.alphas, start, n, capacity));
+        if (!in.normals.empty()) write(queue, buffers.normal, planar_units(in.normals, start, n, capacity));
+    }
+
+    static void write(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float>& data)
+    {
+        queue.enqueueWriteBuffer(buffer, CL_TRUE, 0, bytes(data.size()), data.data());
+    }
+};
+
+// Reads the first n entries of each of `planes` planes (stride capacity) into `host`.
+void read_planes(cl::CommandQueue& queue, const cl::Buffer& buffer, int planes, std::uint64_t n,
+                 std::uint64_t capacity, std::vector<float>& host)
+{
+    host.resize(planes * n);
+    for (int c = 0; c < planes; ++c)
+        queue.enqueueReadBuffer(buffer, CL_FALSE, bytes(c * capacity), bytes(n), host.data() + c * n);
+}
+
+} // namespace
+
+void Sampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                              const ChunkSink& sink, const PerSampleInputs& per_sample)
+{
+    validate(params);
+    validate(range);
+    validate(per_sample, params, range.count);
+    if (fields.empty())
+        throw InvalidArgument("fields", "none", "at least one of m, o, pdf_m, pdf_o, weight");
+    const std::uint64_t capacity = std::min(chunk_size_, range.count);
+    translate_cl_errors([&] {
+        DeviceOutputs out;
+        cl::Buffer* buffers[] = {&out.m, &out.o, &out.pdf_m, &out.pdf_o, &out.weight};
+        for (Field f : all_fields)
+            if (fields.has(f))
+                *buffers[int(f)] = cl::Buffer(context_, CL_MEM_WRITE_ONLY, bytes(field_columns(f) * capacity));
+        ChunkInputs inputs(context_, per_sample, capacity);
+        SampleSet chunk;
+        std::vector<float>* hosts[] = {&chunk.m, &chunk.o, &chunk.pdf_m, &chunk.pdf_o, &chunk.weight};
+        for (std::uint64_t start = 0; start < range.count; start += capacity) {
+            std::uint64_t n = std::min(capacity, range.count - start);
+            inputs.upload(queue_, per_sample, start, n, capacity);
+            enqueue(queue_, params, {range.seed, range.first + start, n}, out, std::uint32_t(capacity),
+                    inputs.buffers);
+            chunk.count = n;
+            for (Field f : all_fields)
+                if (fields.has(f))
+                    read_planes(queue_, *buffers[int(f)], field_columns(f), n, capacity, *hosts[int(f)]);
+            queue_.finish();
+            sink(chunk, start);
+        }
+        return 0;
+    });
+}
+
+SampleSet Sampler::generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                            const PerSampleInputs& per_sample)
+{
+    SampleSet all;
+    all.count = range.count;
+    std::vector<float>* hosts[] = {&all.m, &all.o, &all.pdf_m, &all.pdf_o, &all.weight};
+    auto copy_chunk = [&](const SampleSet& chunk, std::uint64_t offset) {
+        const std::vector<float>* parts[] = {&chunk.m, &chunk.o, &chunk.pdf_m, &chunk.pdf_o, &chunk.weight};
+        for (Field f : all_fields) {
+            if (!fields.has(f))
+                continue;
+            int planes = field_columns(f);
+            hosts[int(f)]->resize(planes * range.count);
+            for (int c = 0; c < planes; ++c)
+                std::copy_n(parts[int(f)]->data() + c * chunk.count, chunk.count,
+                            hosts[int(f)]->data() + c * range.count + offset);
+        }
+    };
+    generate_chunks(params, range, fields, copy_chunk, per_sample);
+    return all;
+}
+
+std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Vec3>& directions,
+                                const PerSampleInputs& per_sample)
+{
+    validate(params);
+    const std::uint64_t count = directions.size();
+    if (count == 0)
+        throw InvalidArgument("directions", "0 entries", "at least one direction");
+    validate(per_sample, params, count);
+    const std::uint64_t capacity = std::min(chunk_size_, count);
+    std::vector<float> result(count);
+    translate_cl_errors([&] {
+        cl::Buffer dirs(context_, CL_MEM_READ_ONLY, bytes(3 * capacity));
+        cl::Buffer pdfs(context_, CL_MEM_WRITE_ONLY, bytes(capacity));
+        ChunkInputs inputs(context_, per_sample, capacity);
+        for (std::uint64_t start = 0; start < count; start += capacity) {
+            std::uint64_t n = std::min(capacity, count - start);
+            inputs.upload(queue_, per_sample, start, n, capacity);
+            ChunkInputs::write(queue_, dirs, planar_units(directions, start, n, capacity));
+            enqueue_pdf(queue_, params, std::uint32_t(n), dirs, pdfs, std::uint32_t(capacity), inputs.buffers);
+            queue_.enqueueReadBuffer(pdfs, CL_TRUE, 0, bytes(n), result.data() + start);
+        }
+        return 0;
+    });
+    return result;
+}
+
+} // namespace ggxcl

@@ -1,0 +1,159 @@
+// sampler.cpp - the Sampler: program variants per request, kernel launches
+// into caller buffers, and chunked generation into host vectors.
+#include "ggxcl/sampler.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "cl_call.hpp"
+#include "ggxcl/error.hpp"
+
+namespace ggxcl {
+
+namespace {
+
+using detail::translate_cl_errors;
+
+constexpr std::size_t preferred_group_size = 256;
+constexpr const char* bulk_file = "ggx_bulk.cl";
+
+unsigned write_mask_of(const DeviceOutputs& out)
+{
+    unsigned mask = 0;
+    const cl::Buffer* buffers[] = {&out.m, &out.o, &out.pdf_m, &out.pdf_o, &out.weight};
+    for (unsigned k = 0; k < 5; ++k)
+        if ((*buffers[k])() != nullptr)
+            mask |= 1u << k;
+    return mask;
+}
+
+std::string build_options(Method method, unsigned write_mask, const DeviceInputs& inputs)
+{
+    auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
+    std::string options = "-DGGX_METHOD=" + std::to_string(static_cast<int>(method));
+    options += flag("GGX_WRITE_M", write_mask & 1u) + flag("GGX_WRITE_O", write_mask & 2u) +
+               flag("GGX_WRITE_PDF_M", write_mask & 4u) + flag("GGX_WRITE_PDF_O", write_mask & 8u) +
+               flag("GGX_WRITE_WEIGHT", write_mask & 16u);
+    options += flag("GGX_PER_SAMPLE_VIEW", inputs.view() != nullptr) +
+               flag("GGX_PER_SAMPLE_ALPHA", inputs.alpha() != nullptr) +
+               flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr);
+    return options;
+}
+
+// Arguments 0.. of both kernels after their leading counts: uniform
+// parameters, then the per-sample input buffers.
+void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in)
+{
+    float values[] = {p.view.x, p.view.y, p.view.z, p.alpha_x, p.alpha_y, p.normal.x, p.normal.y, p.normal.z};
+    for (cl_uint k = 0; k < 8; ++k)
+        kernel.setArg(first_arg + k, values[k]);
+    kernel.setArg(first_arg + 8, in.view);
+    kernel.setArg(first_arg + 9, in.alpha);
+    kernel.setArg(first_arg + 10, in.normal);
+}
+
+void check_launch_count(std::uint64_t count, std::uint32_t stride)
+{
+    if (count == 0 || count > std::numeric_limits<std::uint32_t>::max() - preferred_group_size)
+        throw InvalidArgument("count", std::to_string(count), "1 .. 2^32 - 257 per enqueue");
+    if (stride != 0 && stride < count)
+        throw InvalidArgument("stride", std::to_string(stride), "0 (= count) or at least count");
+}
+
+cl::Event launch(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& kernel, std::uint32_t count,
+                 const std::vector<cl::Event>* wait)
+{
+    std::size_t group = std::min(preferred_group_size, device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>());
+    std::size_t global = (count + group - 1) / group * group;
+    cl::Event event;
+    queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(group), wait, &event);
+    return event;
+}
+
+} // namespace
+
+const std::vector<float>& SampleSet::column_source(Field field) const
+{
+    switch (field) {
+    case Field::m: return m;
+    case Field::o: return o;
+    case Field::pdf_m: return pdf_m;
+    case Field::pdf_o: return pdf_o;
+    case Field::weight: return weight;
+    }
+    return m;
+}
+
+Sampler::Sampler(const std::string& selector) : Sampler(select_device(selector)) {}
+
+Sampler::Sampler(const DeviceInfo& device) : Sampler(translate_cl_errors([&] { return cl::Context(device.device); }), device.device) {}
+
+Sampler::Sampler(const cl::Context& context, const cl::Device& device)
+    : context_(context), device_(device), programs_(std::make_shared<ProgramCache>(context))
+{
+    translate_cl_errors([&] { queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE); return 0; });
+}
+
+std::string Sampler::device_name() const
+{
+    return translate_cl_errors([&] { return device_.getInfo<CL_DEVICE_NAME>(); });
+}
+
+void Sampler::set_chunk_size(std::uint64_t samples)
+{
+    if (samples == 0 || samples > (1ull << 30))
+        throw InvalidArgument("chunk size", std::to_string(samples), "1 .. 2^30 samples");
+    chunk_size_ = samples;
+}
+
+cl::Kernel Sampler::kernel(const std::string& name, const SampleParams& params, unsigned write_mask,
+                           const DeviceInputs& inputs)
+{
+    cl::Program program = programs_->get(device_, bulk_file, build_options(params.method, write_mask, inputs));
+    return cl::Kernel(program, name.c_str());
+}
+
+cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
+                           const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
+                           const std::vector<cl::Event>* wait)
+{
+    validate(params);
+    validate(range);
+    check_launch_count(range.count, stride);
+    unsigned mask = write_mask_of(outputs);
+    if (mask == 0)
+        throw InvalidArgument("outputs", "none", "at least one output buffer (m, o, pdf_m, pdf_o or weight)");
+    SampleParams unit = normalized(params);
+    return translate_cl_errors([&] {
+        cl::Kernel k = kernel("ggx_sample_bulk", unit, mask, inputs);
+        k.setArg(0, cl_ulong(range.seed));
+        k.setArg(1, cl_ulong(range.first));
+        k.setArg(2, cl_uint(range.count));
+        k.setArg(3, cl_uint(stride ? stride : range.count));
+        set_param_args(k, 4, unit, inputs);
+        const cl::Buffer* buffers[] = {&outputs.m, &outputs.o, &outputs.pdf_m, &outputs.pdf_o, &outputs.weight};
+        for (cl_uint b = 0; b < 5; ++b)
+            k.setArg(15 + b, *buffers[b]);
+        return launch(queue, device_, k, cl_uint(range.count), wait);
+    });
+}
+
+cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
+                               const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride,
+                               const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
+{
+    validate(params);
+    check_launch_count(count, stride);
+    SampleParams unit = normalized(params);
+    return translate_cl_errors([&] {
+        cl::Kernel k = kernel("ggx_pdf_bulk", unit, 0, inputs);
+        k.setArg(0, cl_uint(count));
+        k.setArg(1, cl_uint(stride ? stride : count));
+        set_param_args(k, 2, unit, inputs);
+        k.setArg(13, directions);
+        k.setArg(14, pdf_out);
+        return launch(queue, device_, k, count, wait);
+    });
+}
+
+} // namespace ggxcl

@@ -1,0 +1,119 @@
+// cli_values.cpp - strict parsers for CLI values (whole string, finite numbers).
+#include "cli_values.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+namespace ggxapp {
+
+namespace {
+
+std::vector<std::string> split(const std::string& text, char separator)
+{
+    std::vector<std::string> parts;
+    std::stringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, separator))
+        parts.push_back(part);
+    if (!text.empty() && text.back() == separator)
+        parts.push_back("");
+    return parts;
+}
+
+// The whole of `text` as a finite double, else nothing.
+bool to_double(const std::string& text, double& value)
+{
+    if (text.empty())
+        return false;
+    std::size_t used = 0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        return false;
+    }
+    return used == text.size() && std::isfinite(value);
+}
+
+} // namespace
+
+std::array<float, 2> parse_alpha(const std::string& flag, const std::string& text)
+{
+    const std::string allowed = "one or two finite numbers > 0, as AX or AX,AY";
+    std::vector<std::string> parts = split(text, ',');
+    if (parts.empty() || parts.size() > 2)
+        throw UsageError(flag, text, allowed);
+    double values[2];
+    for (std::size_t k = 0; k < parts.size(); ++k)
+        if (!to_double(parts[k], values[k]) || !(values[k] > 0.0) || values[k] > 1e30)
+            throw UsageError(flag, text, allowed);
+    return {float(values[0]), float(values[parts.size() - 1])};
+}
+
+std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text)
+{
+    const std::string allowed = "three finite numbers X,Y,Z, not all 0";
+    std::vector<std::string> parts = split(text, ',');
+    double v[3];
+    if (parts.size() != 3 || !to_double(parts[0], v[0]) || !to_double(parts[1], v[1]) || !to_double(parts[2], v[2]) ||
+        (v[0] == 0 && v[1] == 0 && v[2] == 0))
+        throw UsageError(flag, text, allowed);
+    return {float(v[0]), float(v[1]), float(v[2])};
+}
+
+std::uint64_t parse_count(const std::string& flag, const std::string& text)
+{
+    const std::string allowed = "a whole number from 1 to 2^63, written as 1000, 1e6 or 2^24";
+    double value = 0;
+    std::size_t caret = text.find('^');
+    if (caret != std::string::npos) {
+        double base, exponent;
+        if (!to_double(text.substr(0, caret), base) || !to_double(text.substr(caret + 1), exponent))
+            throw UsageError(flag, text, allowed);
+        value = std::pow(base, exponent);
+    } else if (!to_double(text, value)) {
+        throw UsageError(flag, text, allowed);
+    }
+    if (!(value >= 1.0) || value > 9.2233720368547758e18 || value != std::floor(value))
+        throw UsageError(flag, text, allowed);
+    return std::uint64_t(value);
+}
+
+std::uint64_t parse_uint64(const std::string& flag, const std::string& text)
+{
+    const std::string allowed = "a whole number from 0 to 2^64-1";
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+        throw UsageError(flag, text, allowed);
+    try {
+        return std::stoull(text);
+    } catch (const std::exception&) {
+        throw UsageError(flag, text, allowed);
+    }
+}
+
+void check_writable_folder(const std::string& flag, const std::string& path)
+{
+    std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (folder.empty())
+        folder = ".";
+    std::error_code error;
+    bool is_folder = std::filesystem::is_directory(folder, error);
+    if (!is_folder || ::access(folder.c_str(), W_OK) != 0)
+        throw UsageError(flag, path, "a path in an existing, writable folder");
+}
+
+double parse_angle(const std::string& flag, const std::string& text, double low, double high)
+{
+    double value;
+    if (!to_double(text, value) || value < low || value > high) {
+        std::ostringstream allowed;
+        allowed << "degrees from " << low << " to " << high;
+        throw UsageError(flag, text, allowed.str());
+    }
+    return value;
+}
+
+} // namespace ggxapp

@@ -1,0 +1,31 @@
+// cli_values.hpp - parsing of the CLI's value syntaxes: roughness
+// "AX[,AY]", vectors "X,Y,Z", counts "1000", "1e6" or "2^24".  A bad value
+// throws UsageError naming the flag, the value and what is allowed.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace ggxapp {
+
+class UsageError : public std::runtime_error {
+public:
+    UsageError(const std::string& flag, const std::string& value, const std::string& allowed)
+        : std::runtime_error(flag + ": invalid value '" + value + "': allowed is " + allowed)
+    {
+    }
+    explicit UsageError(const std::string& message) : std::runtime_error(message) {}
+};
+
+std::array<float, 2> parse_alpha(const std::string& flag, const std::string& text);
+std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text);
+std::uint64_t parse_count(const std::string& flag, const std::string& text);
+std::uint64_t parse_uint64(const std::string& flag, const std::string& text);
+// Throws UsageError unless a file can be created beside `path`.
+void check_writable_folder(const std::string& flag, const std::string& path);
+
+double parse_angle(const std::string& flag, const std::string& text, double low, double high);
+
+} // namespace ggxapp

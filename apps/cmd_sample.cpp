@@ -1,0 +1,60 @@
+// cmd_sample.cpp - `ggx sample`: samples of one method into a .npy with a
+// JSON sidecar.
+#include <iostream>
+
+#include "cli_values.hpp"
+#include "commands.hpp"
+#include "sample_job.hpp"
+#include "sample_options.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+struct SampleCommand {
+    SampleOptions options;
+    std::string count, first = "0", fields = "m,o,pdf_m,pdf_o,weight", out;
+
+    SampleJob job() const
+    {
+        SampleJob job;
+        job.params = options.params_for(options.parsed_method());
+        job.theta_degrees = options.parsed_theta();
+        job.phi_degrees = options.parsed_phi();
+        job.range = {options.parsed_seed(), parse_uint64("--first", first), parse_count("-n", count)};
+        try {
+            job.fields = ggxcl::parse_field_list(fields);
+        } catch (const ggxcl::InvalidArgument&) {
+            throw UsageError("--fields", fields, "a comma-separated list of distinct m, o, pdf_m, pdf_o, weight");
+        }
+        if (out.size() < 4 || out.substr(out.size() - 4) != ".npy")
+            throw UsageError("--out", out, "a path ending in .npy");
+        check_writable_folder("--out", out);
+        job.out = out;
+        return job;
+    }
+};
+
+} // namespace
+
+Action add_sample_command(CLI::App& app)
+{
+    auto state = std::make_shared<SampleCommand>();
+    CLI::App* cmd = app.add_subcommand("sample", "Write samples of one method to a .npy file with a JSON sidecar");
+    state->options.add_method_options(*cmd);
+    state->options.add_view_options(*cmd);
+    cmd->add_option("-n,--count", state->count, "number of samples: 1000, 1e6 or 2^24")->required();
+    cmd->add_option("--first", state->first, "index of the first sample (for shards)")->capture_default_str();
+    cmd->add_option("--fields", state->fields, "columns, in order: m,o,pdf_m,pdf_o,weight")->capture_default_str();
+    cmd->add_option("--out", state->out, "output .npy path (its .json sidecar goes beside it)")->required();
+    return [cmd, state] {
+        if (!*cmd)
+            return;
+        SampleJob job = state->job();
+        ggxcl::Sampler sampler(state->options.device);
+        run_sample_job(sampler, job);
+        std::cout << job.out << ": " << job.range.count << " samples of " << state->options.method << "\n";
+    };
+}
+
+} // namespace ggxapp

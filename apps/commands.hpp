@@ -1,0 +1,17 @@
+// commands.hpp - the subcommands of the `ggx` tool; each registers its
+// options on a CLI11 subcommand and returns the action to run after parsing.
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace ggxapp {
+
+using Action = std::function<void()>;
+
+Action add_devices_command(CLI::App& app);
+Action add_sample_command(CLI::App& app);
+Action add_demo_command(CLI::App& app);
+
+} // namespace ggxapp

@@ -1,0 +1,69 @@
+// npy_file.cpp - .npy writer and reader (format: numpy.lib.format, v1.0).
+#include "npy_file.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <stdexcept>
+
+namespace ggxapp {
+
+std::string npy_header(std::uint64_t rows, std::uint64_t columns)
+{
+    std::string dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + std::to_string(rows) + ", " +
+                       std::to_string(columns) + "), }";
+    std::size_t unpadded = 10 + dict.size() + 1;  // magic, version, length, dict, newline
+    dict.append((64 - unpadded % 64) % 64, ' ');
+    dict += '\n';
+    std::string header("\x93NUMPY\x01\x00", 8);
+    header += char(dict.size() & 0xff);
+    header += char(dict.size() >> 8);
+    return header + dict;
+}
+
+NpyWriter::NpyWriter(const std::string& path, std::uint64_t rows, std::uint64_t columns)
+    : file_(path), rows_(rows), columns_(columns)
+{
+    std::string header = npy_header(rows, columns);
+    file_.write(header.data(), header.size());
+}
+
+void NpyWriter::append(const std::vector<float>& row_major)
+{
+    if (row_major.size() % columns_ != 0 || written_ + row_major.size() / columns_ > rows_)
+        throw std::logic_error("NpyWriter: chunk does not fit the announced shape");
+    file_.write(row_major.data(), row_major.size() * sizeof(float));
+    written_ += row_major.size() / columns_;
+}
+
+void NpyWriter::commit()
+{
+    if (written_ != rows_)
+        throw std::logic_error("NpyWriter: " + std::to_string(written_) + " of " + std::to_string(rows_) +
+                               " rows written");
+    file_.commit();
+}
+
+NpyArray read_npy(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    char preamble[10];
+    if (!in.read(preamble, 10) || std::memcmp(preamble, "\x93NUMPY\x01\x00", 8) != 0)
+        throw std::runtime_error("'" + path + "' is not a version 1.0 .npy file");
+    std::size_t length = std::uint8_t(preamble[8]) | (std::uint8_t(preamble[9]) << 8);
+    std::string dict(length, '\0');
+    in.read(dict.data(), length);
+    static const std::regex shape(R"re(\{'descr': '<f4', 'fortran_order': False, 'shape': \((\d+), (\d+)\), \}\s*)re");
+    std::smatch match;
+    if (!in || !std::regex_match(dict, match, shape))
+        throw std::runtime_error("'" + path + "' is not a 2-D float32 C-order .npy file");
+    NpyArray array;
+    array.rows = std::stoull(match[1]);
+    array.columns = std::stoull(match[2]);
+    array.data.resize(array.rows * array.columns);
+    if (!in.read(reinterpret_cast<char*>(array.data.data()), array.data.size() * sizeof(float)))
+        throw std::runtime_error("'" + path + "' is shorter than its shape says");
+    return array;
+}
+
+} // namespace ggxapp

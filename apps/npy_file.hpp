@@ -1,0 +1,38 @@
+// npy_file.hpp - NumPy .npy version 1.0 files of little-endian float32 with
+// shape (rows, columns), C order: a streaming writer (rows arrive in
+// chunks, the file is renamed into place when complete) and a reader.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "atomic_file.hpp"
+
+namespace ggxapp {
+
+// The 10-byte preamble plus the dictionary, padded to a multiple of 64 bytes.
+std::string npy_header(std::uint64_t rows, std::uint64_t columns);
+
+class NpyWriter {
+public:
+    NpyWriter(const std::string& path, std::uint64_t rows, std::uint64_t columns);
+    // Appends rows given row-major (rows_in_chunk * columns floats).
+    void append(const std::vector<float>& row_major);
+    // Checks that every announced row was written, then renames into place.
+    void commit();
+
+private:
+    AtomicFile file_;
+    std::uint64_t rows_, columns_, written_ = 0;
+};
+
+struct NpyArray {
+    std::uint64_t rows = 0, columns = 0;
+    std::vector<float> data;  // row-major
+};
+
+// Reads a float32 C-order 2-D .npy; throws std::runtime_error on anything else.
+NpyArray read_npy(const std::string& path);
+
+} // namespace ggxapp

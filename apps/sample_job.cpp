@@ -1,0 +1,91 @@
+// sample_job.cpp - streams samples from the device into a .npy and writes
+// the JSON sidecar.
+#include "sample_job.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "npy_file.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+// The chunk's requested fields as rows (count x columns), in `fields` order.
+std::vector<float> interleave(const ggxcl::SampleSet& chunk, const std::vector<ggxcl::Field>& fields,
+                              std::size_t columns)
+{
+    std::vector<float> rows(chunk.count * columns);
+    std::size_t column = 0;
+    for (ggxcl::Field field : fields) {
+        const std::vector<float>& planes = chunk.column_source(field);
+        for (int c = 0; c < ggxcl::field_columns(field); ++c, ++column)
+            for (std::size_t j = 0; j < chunk.count; ++j)
+                rows[j * columns + column] = planes[c * chunk.count + j];
+    }
+    return rows;
+}
+
+nlohmann::json sidecar(const ggxcl::Sampler& sampler, const SampleJob& job)
+{
+    const ggxcl::SampleParams& p = job.params;
+    nlohmann::json doc;
+    doc["method"] = std::string(ggxcl::method_name(p.method));
+    doc["alpha"] = {p.alpha_x, p.alpha_y};
+    doc["theta_degrees"] = job.theta_degrees;
+    doc["phi_degrees"] = job.phi_degrees;
+    doc["view"] = {p.view.x, p.view.y, p.view.z};
+    doc["view_space"] = p.method == ggxcl::Method::caps_iso ? "world" : "tangent";
+    if (p.method == ggxcl::Method::caps_iso)
+        doc["normal"] = {p.normal.x, p.normal.y, p.normal.z};
+    doc["seed"] = job.range.seed;
+    doc["first"] = job.range.first;
+    doc["count"] = job.range.count;
+    doc["columns"] = column_names(job.fields);
+    doc["dtype"] = "float32";
+    doc["shape"] = {job.range.count, column_names(job.fields).size()};
+    doc["device"] = sampler.device_name();
+    doc["generator"] = "Philox4x32-10, key (seed lo, seed hi), counter (index lo, index hi, 0, 0)";
+    doc["ggxcl_version"] = ggxcl::version();
+    return doc;
+}
+
+} // namespace
+
+std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields)
+{
+    std::vector<std::string> names;
+    for (ggxcl::Field field : fields) {
+        std::string base(ggxcl::field_name(field));
+        if (ggxcl::field_columns(field) == 3)
+            for (const char* axis : {"_x", "_y", "_z"})
+                names.push_back(base + axis);
+        else
+            names.push_back(base);
+    }
+    return names;
+}
+
+std::string sidecar_path(const std::string& npy_path)
+{
+    std::size_t dot = npy_path.rfind('.');
+    std::size_t slash = npy_path.rfind('/');
+    bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+    return (has_extension ? npy_path.substr(0, dot) : npy_path) + ".json";
+}
+
+void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job)
+{
+    const std::size_t columns = column_names(job.fields).size();
+    NpyWriter writer(job.out, job.range.count, columns);
+    AtomicFile json_file(sidecar_path(job.out));  // opened now: fail before sampling if unwritable
+    sampler.generate_chunks(job.params, job.range, ggxcl::FieldSet(job.fields),
+                            [&](const ggxcl::SampleSet& chunk, std::uint64_t) {
+                                writer.append(interleave(chunk, job.fields, columns));
+                            });
+    std::string text = sidecar(sampler, job).dump(2) + "\n";
+    json_file.write(text.data(), text.size());
+    writer.commit();
+    json_file.commit();
+}
+
+} // namespace ggxapp

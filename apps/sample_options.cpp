@@ -1,0 +1,56 @@
+// sample_options.cpp - shared sampling options and their validation.
+#include "sample_options.hpp"
+
+#include "cli_values.hpp"
+
+namespace ggxapp {
+
+void SampleOptions::add_view_options(CLI::App& cmd)
+{
+    cmd.add_option("--alpha", alpha, "GGX roughness AX or AX,AY (each > 0)")->capture_default_str();
+    cmd.add_option("--theta", theta, "view polar angle in degrees, 0..180 (above 90: below the horizon)")
+        ->capture_default_str();
+    cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360")->capture_default_str();
+    cmd.add_option("--seed", seed, "seed of the Philox stream, 0..2^64-1")->capture_default_str();
+    cmd.add_option("--device", device, "device index or name part (see `ggx devices`); default GGXCL_DEVICE, else the first");
+}
+
+void SampleOptions::add_method_options(CLI::App& cmd)
+{
+    cmd.add_option("--method", method, "sampler: " + ggxcl::method_list())->required();
+    cmd.add_option("--normal", normal, "caps-iso only: world-space surface normal X,Y,Z (default 0,0,1)");
+}
+
+ggxcl::Method SampleOptions::parsed_method() const
+{
+    try {
+        return ggxcl::parse_method(method);
+    } catch (const ggxcl::InvalidArgument&) {
+        throw UsageError("--method", method, "one of " + ggxcl::method_list());
+    }
+}
+
+std::uint64_t SampleOptions::parsed_seed() const { return parse_uint64("--seed", seed); }
+double SampleOptions::parsed_theta() const { return parse_angle("--theta", theta, 0.0, 180.0); }
+double SampleOptions::parsed_phi() const { return parse_angle("--phi", phi, -360.0, 360.0); }
+
+ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m) const
+{
+    ggxcl::SampleParams p;
+    p.method = m;
+    std::array<float, 2> a = parse_alpha("--alpha", alpha);
+    if (m == ggxcl::Method::caps_iso && a[0] != a[1])
+        throw UsageError("--alpha", alpha, "one value for caps-iso, which is isotropic");
+    p.alpha_x = a[0];
+    p.alpha_y = a[1];
+    p.view = ggxcl::view_from_angles(parsed_theta(), parsed_phi());
+    if (!normal.empty()) {
+        if (m != ggxcl::Method::caps_iso)
+            throw UsageError("--normal", normal, "only with --method caps-iso (the others work in tangent space)");
+        std::array<float, 3> n = parse_vec3("--normal", normal);
+        p.normal = {n[0], n[1], n[2]};
+    }
+    return ggxcl::normalized(p);
+}
+
+} // namespace ggxapp

@@ -1,0 +1,33 @@
+// sample_options.hpp - the sampling options `ggx sample` and `ggx demo`
+// share (method, roughness, view, normal, seed, device) and their
+// conversion into ggxcl parameters, with usage errors naming the flag.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <ggxcl/ggxcl.hpp>
+
+namespace ggxapp {
+
+struct SampleOptions {
+    std::string method = "caps";
+    std::string alpha = "0.3";
+    std::string theta = "60";
+    std::string phi = "0";
+    std::string normal;  // caps-iso only
+    std::string seed = "0";
+    std::string device;  // selector, else GGXCL_DEVICE, else the first device
+
+    void add_view_options(CLI::App& cmd);  // --alpha, --theta, --phi, --seed, --device
+    void add_method_options(CLI::App& cmd); // --method, --normal
+
+    // The parameters for `method`; throws UsageError naming the bad flag.
+    ggxcl::SampleParams params_for(ggxcl::Method method) const;
+    ggxcl::Method parsed_method() const;
+    std::uint64_t parsed_seed() const;
+    double parsed_theta() const;
+    double parsed_phi() const;
+};
+
+} // namespace ggxapp

@@ -56,10 +56,15 @@ typedef struct {
     float ax, ay;
 } ggx_params;
 
-GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, float view_x, float view_y, float view_z,
-                                      float alpha_x, float alpha_y, float normal_x, float normal_y,
-                                      float normal_z, __global const float* view_in,
-                                      __global const float* alpha_in, __global const float* normal_in)
+// The kernel arguments that carry them: uniform values, then per-sample buffers.
+#define GGX_PARAM_ARGS                                                                      \
+    float view_x, float view_y, float view_z, float alpha_x, float alpha_y, float normal_x, \
+        float normal_y, float normal_z, __global const float *restrict view_in,             \
+        __global const float *restrict alpha_in, __global const float *restrict normal_in
+#define GGX_PARAM_VALUES                                                                    \
+    view_x, view_y, view_z, alpha_x, alpha_y, normal_x, normal_y, normal_z, view_in, alpha_in, normal_in
+
+GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
 {
     ggx_params p;
 #if GGX_PER_SAMPLE_VIEW
@@ -82,20 +87,13 @@ GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, float view_x, float v
     return p;
 }
 
-__kernel void ggx_sample_bulk(ulong seed, ulong first, uint count, uint stride,
-                              float view_x, float view_y, float view_z,
-                              float alpha_x, float alpha_y,
-                              float normal_x, float normal_y, float normal_z,
-                              __global const float* restrict view_in,
-                              __global const float* restrict alpha_in,
-                              __global const float* restrict normal_in,
+__kernel void ggx_sample_bulk(ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS,
                               __global float* restrict m_out, __global float* restrict o_out,
                               __global float* restrict pdf_m_out, __global float* restrict pdf_o_out,
                               __global float* restrict weight_out)
 {
     uint j = min((uint)get_global_id(0), count - 1u);
-    ggx_params p = ggx_load_params(j, stride, view_x, view_y, view_z, alpha_x, alpha_y, normal_x,
-                                   normal_y, normal_z, view_in, alpha_in, normal_in);
+    ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
     float u1, u2;
     ggx_uniforms(seed, first + j, &u1, &u2);
     ggx_sample s = ggx_sample_method(GGX_METHOD, p.normal, p.view, p.ax, p.ay, u1, u2);
@@ -117,18 +115,11 @@ __kernel void ggx_sample_bulk(ulong seed, ulong first, uint count, uint stride,
 }
 
 // pdf of each given direction o (planar, `stride`) for the method's sampler.
-__kernel void ggx_pdf_bulk(uint count, uint stride,
-                           float view_x, float view_y, float view_z,
-                           float alpha_x, float alpha_y,
-                           float normal_x, float normal_y, float normal_z,
-                           __global const float* restrict view_in,
-                           __global const float* restrict alpha_in,
-                           __global const float* restrict normal_in,
-                           __global const float* restrict o_in, __global float* restrict pdf_out)
+__kernel void ggx_pdf_bulk(uint count, uint stride, GGX_PARAM_ARGS, __global const float* restrict o_in,
+                           __global float* restrict pdf_out)
 {
     uint j = min((uint)get_global_id(0), count - 1u);
-    ggx_params p = ggx_load_params(j, stride, view_x, view_y, view_z, alpha_x, alpha_y, normal_x,
-                                   normal_y, normal_z, view_in, alpha_in, normal_in);
+    ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
     ggx_vec3 o = ggx_load3(o_in, j, stride);
     pdf_out[j] = ggx_pdf_method(GGX_METHOD, p.normal, p.view, o, p.ax, p.ay);
 }

@@ -32,9 +32,7 @@ GGX_INLINE ggx_sample ggx_sample_bounded(ggx_vec3 i, float ax, float ay, float u
     ggx_vec3 c = ggx_sample_cap(k * v.z, u1, u2);                 // the cap z in (-k vz, 1]
     ggx_vec3 h = ggx_add(c, v);
     float inv_sum = ggx_bounded_inv_sum(i, k, ti, ax, ay);        // supplement sec. 2: D / (2 (k iz + t))
-    ggx_sample out = ggx_finish_vndf_sample(i, h, ax, ay, inv_sum);
-    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
-    return out;
+    return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 
 // pdf of o from (i, o): D(m)/(2 (k iz + t)) inside the bounded cap, 0 outside.

@@ -25,9 +25,7 @@ GGX_INLINE ggx_sample ggx_sample_caps(ggx_vec3 i, float ax, float ay, float u1, 
     ggx_vec3 c = ggx_sample_cap(v.z, u1, u2);                     // reflected direction in that space (eq. 10)
     ggx_vec3 h = ggx_add(c, v);                                   // unnormalized half vector (sec. 3.3)
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
-    ggx_sample out = ggx_finish_vndf_sample(i, h, ax, ay, inv_sum);
-    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
-    return out;
+    return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 
 GGX_INLINE float ggx_pdf_caps(ggx_vec3 i, ggx_vec3 o, float ax, float ay)

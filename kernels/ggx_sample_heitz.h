@@ -41,9 +41,7 @@ GGX_INLINE ggx_sample ggx_sample_heitz(ggx_vec3 i, float ax, float ay, float u1,
     ggx_vec3 h = ggx_lift_to_hemisphere(t1, t2, T1, T2, v);
     h.z = fmax(0.0f, h.z);
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
-    ggx_sample out = ggx_finish_vndf_sample(i, h, ax, ay, inv_sum);
-    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
-    return out;
+    return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 
 GGX_INLINE ggx_sample ggx_sample_heitz2017(ggx_vec3 i, float ax, float ay, float u1, float u2)
@@ -65,9 +63,7 @@ GGX_INLINE ggx_sample ggx_sample_heitz2017(ggx_vec3 i, float ax, float ay, float
     ggx_vec3 h = ggx_lift_to_hemisphere(p1, p2, T1, T2, v);      // eq. 6
     h.z = fmax(0.0f, h.z);
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
-    ggx_sample out = ggx_finish_vndf_sample(i, h, ax, ay, inv_sum);
-    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
-    return out;
+    return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 
 GGX_INLINE float ggx_pdf_heitz(ggx_vec3 i, ggx_vec3 o, float ax, float ay)

@@ -16,25 +16,26 @@ GGX_INLINE float ggx_D_from_standard(ggx_vec3 h, float ax, float ay)
     return ratio * ratio / (GGX_PI * ax * ay);
 }
 
-// Fills m, o and the densities of a sample whose standard-space normal is h;
-// inv_sum = 1 / (k iz + t(i)) with k = 1 for the plain VNDF.
+// weight = D G2 / (4 iz) / pdf(o) = G2 (k iz + t(i)) / (2 iz), 0 when iz or oz <= 0.
+GGX_INLINE float ggx_vndf_weight(ggx_vec3 i, ggx_vec3 o, float ax, float ay, float ti, float inv_sum)
+{
+    float g2 = ggx_G2_from_t(i.z, o.z, ti, ggx_t(o, ax, ay));
+    return i.z > 0.0f ? g2 / (2.0f * i.z * inv_sum) : 0.0f;
+}
+
+// The sample whose standard-space normal is h: m, o, densities and weight;
+// ti = t(i) and inv_sum = 1 / (k iz + t(i)) with k = 1 for the plain VNDF.
 // pdf(o) = D(m) / (2 (k iz + t)) (Dupuy & Benyoub 2023 eq. 20; Eto & Tokuyoshi supplement sec. 2),
 // pdf(m) = pdf(o) 4 (i.m).
-GGX_INLINE ggx_sample ggx_finish_vndf_sample(ggx_vec3 i, ggx_vec3 h, float ax, float ay, float inv_sum)
+GGX_INLINE ggx_sample ggx_finish_vndf_sample(ggx_vec3 i, ggx_vec3 h, float ax, float ay, float ti, float inv_sum)
 {
     ggx_sample out;
     out.m = ggx_normalize(ggx_stretch(h, ax, ay));
     out.o = ggx_reflect(i, out.m);
     out.pdf_o = 0.5f * ggx_D_from_standard(h, ax, ay) * inv_sum;
     out.pdf_m = 4.0f * ggx_dot(i, out.m) * out.pdf_o;
+    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
     return out;
-}
-
-// weight = D G2 / (4 iz) / pdf(o) = G2 (k iz + t(i)) / (2 iz), 0 when iz or oz <= 0.
-GGX_INLINE float ggx_vndf_weight(ggx_vec3 i, ggx_vec3 o, float ax, float ay, float ti, float inv_sum)
-{
-    float g2 = ggx_G2_from_t(i.z, o.z, ti, ggx_t(o, ax, ay));
-    return i.z > 0.0f ? g2 / (2.0f * i.z * inv_sum) : 0.0f;
 }
 
 // pdf of o recomputed from (i, o) for an unbounded VNDF sampler: m is the half vector.

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# install-deps.sh - installs the Debian 12 packages ggxcl needs to build,
+# run and test, skipping those already present.  Runs apt-get as root (or
+# through sudo).  PoCL is the default OpenCL device: it needs no hardware.
+set -euo pipefail
+
+packages=(
+  g++ cmake make                      # toolchain
+  pocl-opencl-icd ocl-icd-opencl-dev  # OpenCL: PoCL CPU device + ICD loader
+  opencl-c-headers opencl-clhpp-headers
+  librandom123-dev                    # Philox reference (host)
+  libboost-math-dev                   # chi-square distribution, Gauss-Legendre nodes
+  doctest-dev                         # tests
+  libcli11-dev nlohmann-json3-dev     # CLI parsing, JSON sidecars
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

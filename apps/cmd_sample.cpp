@@ -14,6 +14,7 @@ namespace {
 struct SampleCommand {
     SampleOptions options;
     std::string count, first = "0", fields = "m,o,pdf_m,pdf_o,weight", out;
+    bool fields_given = false;
 
     SampleJob job() const
     {
@@ -27,8 +28,14 @@ struct SampleCommand {
         } catch (const ggxcl::InvalidArgument&) {
             throw UsageError("--fields", fields, "a comma-separated list of distinct m, o, pdf_m, pdf_o, weight");
         }
-        if (out.size() < 4 || out.substr(out.size() - 4) != ".npy")
-            throw UsageError("--out", out, "a path ending in .npy");
+        job.format = format_of("--out", out);
+        if (job.format == Format::ply) {
+            try {
+                job.fields = ply_fields(fields_given ? job.fields : std::vector<ggxcl::Field>{ggxcl::Field::o});
+            } catch (const UsageError&) {
+                throw UsageError("--fields", fields, "o or m for a .ply (the direction plotted, colored by its pdf)");
+            }
+        }
         check_writable_folder("--out", out);
         job.out = out;
         return job;
@@ -45,11 +52,14 @@ Action add_sample_command(CLI::App& app)
     state->options.add_view_options(*cmd);
     cmd->add_option("-n,--count", state->count, "number of samples: 1000, 1e6 or 2^24")->required();
     cmd->add_option("--first", state->first, "index of the first sample (for shards)")->capture_default_str();
-    cmd->add_option("--fields", state->fields, "columns, in order: m,o,pdf_m,pdf_o,weight")->capture_default_str();
-    cmd->add_option("--out", state->out, "output .npy path (its .json sidecar goes beside it)")->required();
-    return [cmd, state] {
+    CLI::Option* fields = cmd->add_option("--fields", state->fields,
+                                          "columns, in order: m,o,pdf_m,pdf_o,weight (.ply: o or m)")
+                              ->capture_default_str();
+    cmd->add_option("--out", state->out, "output .npy, .csv or .ply (a .json sidecar goes beside it)")->required();
+    return [cmd, state, fields] {
         if (!*cmd)
             return;
+        state->fields_given = fields->count() > 0;
         SampleJob job = state->job();
         ggxcl::Sampler sampler(state->options.device);
         run_sample_job(sampler, job);

@@ -1,10 +1,12 @@
-// sample_job.cpp - streams samples from the device into a .npy and writes
-// the JSON sidecar.
+// sample_job.cpp - streams samples from the device into the output file and
+// writes the JSON sidecar.
 #include "sample_job.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include "npy_file.hpp"
+#include "atomic_file.hpp"
+#include "cli_values.hpp"
+#include "progress.hpp"
 
 namespace ggxapp {
 
@@ -41,7 +43,9 @@ nlohmann::json sidecar(const ggxcl::Sampler& sampler, const SampleJob& job)
     doc["first"] = job.range.first;
     doc["count"] = job.range.count;
     doc["columns"] = column_names(job.fields);
-    doc["dtype"] = "float32";
+    doc["format"] = job.format == Format::npy ? "npy float32" : job.format == Format::csv ? "csv" : "ply binary";
+    if (job.format == Format::ply)
+        doc["ply"] = "vertices are the first three columns, colored by log10 of the fourth over [-2, 3]";
     doc["shape"] = {job.range.count, column_names(job.fields).size()};
     doc["device"] = sampler.device_name();
     doc["generator"] = "Philox4x32-10, key (seed lo, seed hi), counter (index lo, index hi, 0, 0)";
@@ -65,6 +69,16 @@ std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields)
     return names;
 }
 
+std::vector<ggxcl::Field> ply_fields(const std::vector<ggxcl::Field>& requested)
+{
+    using ggxcl::Field;
+    if (requested.size() == 1 && requested[0] == Field::m)
+        return {Field::m, Field::pdf_m};
+    if (requested.size() == 1 && requested[0] == Field::o)
+        return {Field::o, Field::pdf_o};
+    throw UsageError("--fields", "", "o or m for a .ply (the direction plotted, colored by its pdf)");
+}
+
 std::string sidecar_path(const std::string& npy_path)
 {
     std::size_t dot = npy_path.rfind('.');
@@ -76,15 +90,17 @@ std::string sidecar_path(const std::string& npy_path)
 void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job)
 {
     const std::size_t columns = column_names(job.fields).size();
-    NpyWriter writer(job.out, job.range.count, columns);
+    std::unique_ptr<SampleWriter> writer = make_writer(job.format, job.out, job.range.count, column_names(job.fields));
     AtomicFile json_file(sidecar_path(job.out));  // opened now: fail before sampling if unwritable
+    Progress progress(job.out, job.range.count);
     sampler.generate_chunks(job.params, job.range, ggxcl::FieldSet(job.fields),
-                            [&](const ggxcl::SampleSet& chunk, std::uint64_t) {
-                                writer.append(interleave(chunk, job.fields, columns));
+                            [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
+                                writer->append(interleave(chunk, job.fields, columns));
+                                progress.advance(offset + chunk.count);
                             });
     std::string text = sidecar(sampler, job).dump(2) + "\n";
     json_file.write(text.data(), text.size());
-    writer.commit();
+    writer->commit();
     json_file.commit();
 }
 

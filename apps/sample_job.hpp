@@ -1,6 +1,6 @@
 // sample_job.hpp - one `ggx sample` job: the samples of a range written
-// chunk by chunk into a float32 .npy of shape (count, columns), with a JSON
-// sidecar that records how they were made.
+// chunk by chunk into a .npy, .csv or .ply (see sample_writer.hpp), with a
+// JSON sidecar that records how they were made.
 #pragma once
 
 #include <string>
@@ -8,23 +8,29 @@
 
 #include <ggxcl/ggxcl.hpp>
 
+#include "sample_writer.hpp"
+
 namespace ggxapp {
 
 struct SampleJob {
     ggxcl::SampleParams params;
     double theta_degrees = 0.0, phi_degrees = 0.0;
     ggxcl::SampleRange range;
-    std::vector<ggxcl::Field> fields;  // column order of the file
-    std::string out;                   // path of the .npy
+    std::vector<ggxcl::Field> fields;  // column order of the file; for .ply a direction and its pdf
+    std::string out;                   // output path
+    Format format = Format::npy;
 };
 
 // Column names in file order, e.g. m_x, m_y, m_z, pdf_o.
 std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields);
 
+// For a .ply: the direction the --fields list names (o by default) and its pdf.
+std::vector<ggxcl::Field> ply_fields(const std::vector<ggxcl::Field>& requested);
+
 // "samples.npy" -> "samples.json".
 std::string sidecar_path(const std::string& npy_path);
 
-// Writes the .npy and its sidecar (each through a temporary file).
+// Writes the samples and their sidecar (each through a temporary file).
 void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job);
 
 } // namespace ggxapp

@@ -25,11 +25,10 @@ std::vector<float> planar_units(const std::vector<Vec3>& values, std::uint64_t s
 {
     std::vector<float> planes(3 * capacity, 0.0f);
     for (std::uint64_t j = 0; j < n; ++j) {
-        const Vec3& v = values[start + j];
-        float inv = 1.0f / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-        planes[j] = v.x * inv;
-        planes[capacity + j] = v.y * inv;
-        planes[2 * capacity + j] = v.z * inv;
+        Vec3 v = unit_vector(values[start + j]);
+        planes[j] = v.x;
+        planes[capacity + j] = v.y;
+        planes[2 * capacity + j] = v.z;
     }
     return planes;
 }

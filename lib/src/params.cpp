@@ -38,12 +38,6 @@ void check_direction(const char* name, const Vec3& v)
         throw InvalidArgument(name, text(v), "a finite vector of non-zero length");
 }
 
-Vec3 unit(const Vec3& v)
-{
-    double len = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
-    return {float(v.x / len), float(v.y / len), float(v.z / len)};
-}
-
 void check_isotropic(Method method, float alpha_x, float alpha_y)
 {
     if (method == Method::caps_iso && alpha_x != alpha_y)
@@ -52,6 +46,12 @@ void check_isotropic(Method method, float alpha_x, float alpha_y)
 }
 
 } // namespace
+
+Vec3 unit_vector(const Vec3& v)
+{
+    double len = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+    return {float(v.x / len), float(v.y / len), float(v.z / len)};
+}
 
 Vec3 view_from_angles(double theta_degrees, double phi_degrees)
 {
@@ -73,8 +73,8 @@ SampleParams normalized(const SampleParams& params)
 {
     validate(params);
     SampleParams out = params;
-    out.view = unit(params.view);
-    out.normal = unit(params.normal);
+    out.view = unit_vector(params.view);
+    out.normal = unit_vector(params.normal);
     return out;
 }
 

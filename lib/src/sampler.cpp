@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "cl_call.hpp"
+#include "kernel_launch.hpp"
 #include "ggxcl/error.hpp"
 
 namespace ggxcl {
@@ -14,7 +15,6 @@ namespace {
 
 using detail::translate_cl_errors;
 
-constexpr std::size_t preferred_group_size = 256;
 constexpr const char* bulk_file = "ggx_bulk.cl";
 
 unsigned write_mask_of(const DeviceOutputs& out)
@@ -27,50 +27,10 @@ unsigned write_mask_of(const DeviceOutputs& out)
     return mask;
 }
 
-std::string build_options(Method method, unsigned write_mask, const DeviceInputs& inputs)
-{
-    auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
-    std::string options = "-DGGX_METHOD=" + std::to_string(static_cast<int>(method));
-    options += flag("GGX_WRITE_M", write_mask & 1u) + flag("GGX_WRITE_O", write_mask & 2u) +
-               flag("GGX_WRITE_PDF_M", write_mask & 4u) + flag("GGX_WRITE_PDF_O", write_mask & 8u) +
-               flag("GGX_WRITE_WEIGHT", write_mask & 16u);
-    options += flag("GGX_PER_SAMPLE_VIEW", inputs.view() != nullptr) +
-               flag("GGX_PER_SAMPLE_ALPHA", inputs.alpha() != nullptr) +
-               flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr);
-    return options;
-}
-
-// Arguments 0.. of both kernels after their leading counts: uniform
-// parameters, then the per-sample input buffers.
-void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in)
-{
-    float values[] = {p.view.x, p.view.y, p.view.z, p.alpha_x, p.alpha_y, p.normal.x, p.normal.y, p.normal.z};
-    for (cl_uint k = 0; k < 8; ++k)
-        kernel.setArg(first_arg + k, values[k]);
-    kernel.setArg(first_arg + 8, in.view);
-    kernel.setArg(first_arg + 9, in.alpha);
-    kernel.setArg(first_arg + 10, in.normal);
-}
-
-void check_launch_count(std::uint64_t count, std::uint32_t stride)
-{
-    if (count == 0 || count > std::numeric_limits<std::uint32_t>::max() - preferred_group_size)
-        throw InvalidArgument("count", std::to_string(count), "1 .. 2^32 - 257 per enqueue");
-    if (stride != 0 && stride < count)
-        throw InvalidArgument("stride", std::to_string(stride), "0 (= count) or at least count");
-}
-
-cl::Event launch(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& kernel, std::uint32_t count,
-                 const std::vector<cl::Event>* wait)
-{
-    std::size_t group = std::min(preferred_group_size, device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>());
-    std::size_t global = (count + group - 1) / group * group;
-    cl::Event event;
-    queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(group), wait, &event);
-    return event;
-}
-
 } // namespace
+
+
+using namespace detail;
 
 const std::vector<float>& SampleSet::column_source(Field field) const
 {
@@ -106,11 +66,9 @@ void Sampler::set_chunk_size(std::uint64_t samples)
     chunk_size_ = samples;
 }
 
-cl::Kernel Sampler::kernel(const std::string& name, const SampleParams& params, unsigned write_mask,
-                           const DeviceInputs& inputs)
+cl::Kernel Sampler::kernel(const std::string& file, const std::string& name, const std::string& options)
 {
-    cl::Program program = programs_->get(device_, bulk_file, build_options(params.method, write_mask, inputs));
-    return cl::Kernel(program, name.c_str());
+    return cl::Kernel(programs_->get(device_, file, options), name.c_str());
 }
 
 cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
@@ -125,7 +83,7 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
         throw InvalidArgument("outputs", "none", "at least one output buffer (m, o, pdf_m, pdf_o or weight)");
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
-        cl::Kernel k = kernel("ggx_sample_bulk", unit, mask, inputs);
+        cl::Kernel k = kernel(bulk_file, "ggx_sample_bulk", build_options(unit.method, mask, inputs));
         k.setArg(0, cl_ulong(range.seed));
         k.setArg(1, cl_ulong(range.first));
         k.setArg(2, cl_uint(range.count));
@@ -146,7 +104,7 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
     check_launch_count(count, stride);
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
-        cl::Kernel k = kernel("ggx_pdf_bulk", unit, 0, inputs);
+        cl::Kernel k = kernel(bulk_file, "ggx_pdf_bulk", build_options(unit.method, 0, inputs));
         k.setArg(0, cl_uint(count));
         k.setArg(1, cl_uint(stride ? stride : count));
         set_param_args(k, 2, unit, inputs);

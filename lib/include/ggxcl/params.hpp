@@ -51,6 +51,10 @@ Vec3 view_from_angles(double theta_degrees, double phi_degrees);
 void validate(const SampleParams& params);
 SampleParams normalized(const SampleParams& params);
 
+// v scaled to unit length (computed in double, rounded to float); every
+// view and normal the library receives goes through it.
+Vec3 unit_vector(const Vec3& v);
+
 // Largest count one range may hold (indices must not wrap around 2^64).
 void validate(const SampleRange& range);
 

@@ -47,6 +47,16 @@ struct DeviceOutputs {
     cl::Buffer m, o, pdf_m, pdf_o, weight;
 };
 
+// Counts of directions in bins of equal solid angle over (phi, cos theta):
+// z = cos(theta) in [-1, 1] split into bins_z, phi in [0, 2 pi) into
+// bins_phi; counts[z_bin * bins_phi + phi_bin].
+struct Histogram {
+    int bins_z = 0, bins_phi = 0;
+    std::vector<std::uint64_t> counts;
+    std::uint64_t non_finite = 0;  // samples whose direction was NaN or Inf
+    std::uint64_t total() const;
+};
+
 class Sampler {
 public:
     // A sampler with its own context and in-order queue on the device that
@@ -94,12 +104,16 @@ public:
                           const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride = 0,
                           const DeviceInputs& inputs = {}, const std::vector<cl::Event>* wait = nullptr);
 
+    // Bins the directions (Field::o or Field::m) of `range` on the device;
+    // only the counts come back, so the count of samples is unbounded.
+    Histogram histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
+                        Field direction = Field::o);
+
     // Number of distinct program variants built so far.
     std::size_t programs_built() const { return programs_->size(); }
 
 private:
-    cl::Kernel kernel(const std::string& name, const SampleParams& params, unsigned write_mask,
-                      const DeviceInputs& inputs);
+    cl::Kernel kernel(const std::string& file, const std::string& name, const std::string& options);
 
     cl::Context context_;
     cl::Device device_;

@@ -1,0 +1,62 @@
+// kernel_launch.cpp - build options, parameter arguments and launches
+// shared by the Sampler's kernels.
+#include "kernel_launch.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "ggxcl/error.hpp"
+
+namespace ggxcl {
+
+namespace detail {
+
+std::string build_options(Method method, unsigned write_mask, const DeviceInputs& inputs)
+{
+    auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
+    std::string options = "-DGGX_METHOD=" + std::to_string(static_cast<int>(method));
+    options += flag("GGX_WRITE_M", write_mask & 1u) + flag("GGX_WRITE_O", write_mask & 2u) +
+               flag("GGX_WRITE_PDF_M", write_mask & 4u) + flag("GGX_WRITE_PDF_O", write_mask & 8u) +
+               flag("GGX_WRITE_WEIGHT", write_mask & 16u);
+    options += flag("GGX_PER_SAMPLE_VIEW", inputs.view() != nullptr) +
+               flag("GGX_PER_SAMPLE_ALPHA", inputs.alpha() != nullptr) +
+               flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr);
+    return options;
+}
+
+void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in)
+{
+    float values[] = {p.view.x, p.view.y, p.view.z, p.alpha_x, p.alpha_y, p.normal.x, p.normal.y, p.normal.z};
+    for (cl_uint k = 0; k < 8; ++k)
+        kernel.setArg(first_arg + k, values[k]);
+    kernel.setArg(first_arg + 8, in.view);
+    kernel.setArg(first_arg + 9, in.alpha);
+    kernel.setArg(first_arg + 10, in.normal);
+}
+
+void check_launch_count(std::uint64_t count, std::uint32_t stride)
+{
+    if (count == 0 || count > std::numeric_limits<std::uint32_t>::max() - preferred_group_size)
+        throw InvalidArgument("count", std::to_string(count), "1 .. 2^32 - 257 per enqueue");
+    if (stride != 0 && stride < count)
+        throw InvalidArgument("stride", std::to_string(stride), "0 (= count) or at least count");
+}
+
+std::size_t group_size(const cl::Device& device)
+{
+    return std::min(preferred_group_size, device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>());
+}
+
+cl::Event launch(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& kernel, std::uint32_t count,
+                 const std::vector<cl::Event>* wait)
+{
+    std::size_t group = group_size(device);
+    std::size_t global = (count + group - 1) / group * group;
+    cl::Event event;
+    queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(group), wait, &event);
+    return event;
+}
+
+} // namespace detail
+
+} // namespace ggxcl

@@ -1,0 +1,31 @@
+// kernel_launch.hpp - what the Sampler's front ends share to launch the
+// kernels: build options of a request, the parameter arguments, count
+// checks and the 1-D launch with a fixed work-group size.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ggxcl/sampler.hpp"
+
+namespace ggxcl::detail {
+
+constexpr std::size_t preferred_group_size = 256;
+
+// -D options selecting the method, the written fields and per-sample inputs.
+std::string build_options(Method method, unsigned write_mask, const DeviceInputs& inputs);
+
+// Arguments first_arg.. of every kernel: the uniform parameters (8 floats),
+// then the per-sample input buffers (view, alpha, normal).
+void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in);
+
+void check_launch_count(std::uint64_t count, std::uint32_t stride);
+
+std::size_t group_size(const cl::Device& device);
+
+// One work-item per sample, rounded up to whole work-groups.
+cl::Event launch(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& kernel, std::uint32_t count,
+                 const std::vector<cl::Event>* wait);
+
+} // namespace ggxcl::detail

@@ -1,0 +1,50 @@
+// device_fixture.hpp - what the device tests share: one Sampler on the
+// default device (PoCL on the CPU unless GGXCL_DEVICE says otherwise), the
+// conversion of reference parameters to library parameters, device samples
+// as reference vectors, and the configuration grids the tests sweep.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ggxcl/ggxcl.hpp>
+
+#include "ggx_quadrature.hpp"
+#include "ggx_reference.hpp"
+#include "ggx_stats.hpp"
+
+namespace ggxtest {
+
+ggxcl::Sampler& sampler();
+
+ggxcl::Method to_library(ggxref::Method method);
+ggxcl::SampleParams to_library(ggxref::Method method, const ggxref::Params& params);
+
+// The reference parameters of a view at (theta, phi) degrees, normal +z.
+ggxref::Params make_params(double ax, double ay, double theta_degrees, double phi_degrees = 35.0);
+
+// Unit-length double copy of a float direction (as the library normalizes it).
+ggxref::Vec3 unit(const ggxcl::Vec3& v);
+
+struct Config {
+    ggxref::Params params;
+    std::string label;
+};
+
+// Per-sample grid: alpha 0.01..2, anisotropy up to 1:10, theta 0..85 degrees.
+// For caps-iso only the isotropic pairs, with normals away from +z as well.
+std::vector<Config> per_sample_grid(ggxref::Method method);
+
+// 20 configurations per method for the chi-square tests.
+std::vector<Config> distribution_grid(ggxref::Method method);
+
+// Device samples of one configuration: o (or m) as a directions set.
+ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& params, std::uint64_t seed,
+                                std::uint64_t count, ggxcl::FieldSet fields);
+
+// Histogram of the o (planar) of a sample set in the reference binning.
+std::vector<std::uint64_t> histogram_of(const std::vector<float>& planar, std::uint64_t count, int nz, int nphi);
+
+std::string describe(const ggxref::Params& params);
+
+} // namespace ggxtest

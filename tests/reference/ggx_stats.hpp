@@ -1,0 +1,33 @@
+// ggx_stats.hpp - histograms of sampled directions and the chi-square tests that compare them
+// with reference bin probabilities (goodness of fit) or with each other (homogeneity).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace ggxref {
+
+// Same binning as bin_probabilities: z in [-1, 1] into nz, phi = atan2(y, x) wrapped to [0, 2 pi)
+// into nphi; index = iz_bin * nphi + iphi_bin. z is clamped to [-1, 1]; directions with a
+// non-finite component are not counted (the histogram then sums to less than count).
+std::vector<uint64_t> histogram_directions(const float* x, const float* y, const float* z, size_t count,
+                                           int nz, int nphi);
+
+struct ChiSquare {
+  double statistic;
+  int dof;         // bins used - 1
+  double p_value;  // P(chi2_dof >= statistic); 0 for an empty histogram
+  int bins_used;
+};
+
+// Observed counts against N p (p normalized to sum 1). Bins expecting fewer than 5 are pooled, a
+// pool still under 5 is merged into the smallest kept bin; counts in bins of probability 0 form
+// their own bin with expectation 1e-9, which makes the test reject.
+ChiSquare chi_square_gof(const std::vector<uint64_t>& observed, const std::vector<double>& probabilities);
+// Two histograms from the same distribution? Bins with a combined count under 10 are pooled the same way.
+ChiSquare chi_square_homogeneity(const std::vector<uint64_t>& a, const std::vector<uint64_t>& b);
+// Per-test level for `tests` independent tests at family level alpha: 1 - (1 - alpha)^(1/tests).
+double sidak_level(double alpha, int tests);
+
+}  // namespace ggxref

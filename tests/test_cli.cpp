@@ -1,0 +1,132 @@
+// test_cli.cpp - the `ggx` tool end to end: `sample` writes a .npy of the
+// requested columns and a JSON sidecar that read back correctly, `demo`
+// writes every method, and bad input exits 2 with a one-line message naming
+// the flag and leaves no file behind.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include "npy_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+    int status;
+    std::string err;
+};
+
+fs::path scratch()
+{
+    static fs::path dir = [] {
+        fs::path d = fs::temp_directory_path() / ("ggx-cli-test-" + std::to_string(::getpid()));
+        fs::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+Run ggx(const std::string& args)
+{
+    fs::path err = scratch() / "stderr.txt";
+    std::string command = std::string(GGX_BINARY) + " " + args + " >/dev/null 2>" + err.string();
+    int raw = std::system(command.c_str());
+    std::ifstream in(err);
+    std::stringstream text;
+    text << in.rdbuf();
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+}
+
+bool only_file_is(const fs::path& dir, std::size_t expected)
+{
+    std::size_t n = 0;
+    for (const auto& entry : fs::directory_iterator(dir))
+        n += entry.path().filename() != "stderr.txt";
+    return n == expected;
+}
+
+} // namespace
+
+TEST_CASE("ggx sample writes the requested columns and a sidecar")
+{
+    fs::path out = scratch() / "s.npy";
+    Run run = ggx("sample --method bounded --alpha 0.2,0.4 --theta 70 --phi 15 -n 2^12 --seed 11 --first 5 "
+                  "--fields o,pdf_o,m --out " + out.string());
+    REQUIRE(run.status == 0);
+    ggxapp::NpyArray a = ggxapp::read_npy(out.string());
+    CHECK(a.rows == 4096);
+    CHECK(a.columns == 7);
+    std::size_t bad = 0;
+    for (std::size_t j = 0; j < a.rows; ++j) {
+        const float* row = &a.data[j * 7];
+        bad += std::fabs(std::hypot(row[0], row[1], row[2]) - 1.0) > 1e-5;  // o unit
+        bad += !(row[3] > 0.0f);                                            // pdf_o positive
+        bad += std::fabs(std::hypot(row[4], row[5], row[6]) - 1.0) > 1e-5;  // m unit
+        bad += !(row[6] > 0.0f);                                            // m above the surface
+    }
+    CHECK(bad == 0);
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream((scratch() / "s.json").string()));
+    CHECK(doc["method"] == "bounded");
+    CHECK(doc["seed"] == 11);
+    CHECK(doc["first"] == 5);
+    CHECK(doc["count"] == 4096);
+    CHECK(doc["columns"] == nlohmann::json({"o_x", "o_y", "o_z", "pdf_o", "m_x", "m_y", "m_z"}));
+    CHECK(doc["alpha"][1].get<double>() == doctest::Approx(0.4));
+    CHECK(!doc["device"].get<std::string>().empty());
+    CHECK(!doc["ggxcl_version"].get<std::string>().empty());
+    fs::remove(out);
+    fs::remove(scratch() / "s.json");
+}
+
+TEST_CASE("ggx demo writes samples of every method")
+{
+    fs::path dir = scratch() / "demo";
+    REQUIRE(ggx("demo -n 1000 --out " + dir.string()).status == 0);
+    for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
+        CAPTURE(method);
+        ggxapp::NpyArray a = ggxapp::read_npy((dir / (std::string(method) + ".npy")).string());
+        CHECK(a.rows == 1000);
+        CHECK(fs::exists(dir / (std::string(method) + ".json")));
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
+{
+    const std::string out = " --out " + (scratch() / "bad.npy").string();
+    struct Case {
+        std::string args, flag;
+    } cases[] = {
+        {"sample --method walter -n 10" + out, "--method"},
+        {"sample --method caps --alpha 0 -n 10" + out, "--alpha"},
+        {"sample --method caps --alpha nan -n 10" + out, "--alpha"},
+        {"sample --method caps --alpha 0.1,-2 -n 10" + out, "--alpha"},
+        {"sample --method caps-iso --alpha 0.1,0.2 -n 10" + out, "--alpha"},
+        {"sample --method caps --theta 181 -n 10" + out, "--theta"},
+        {"sample --method caps --theta -1 -n 10" + out, "--theta"},
+        {"sample --method caps -n 0" + out, "-n"},
+        {"sample --method caps -n -5" + out, "-n"},
+        {"sample --method caps -n ten" + out, "-n"},
+        {"sample --method caps -n 10 --fields m,x" + out, "--fields"},
+        {"sample --method caps --normal 0,0,1 -n 10" + out, "--normal"},
+        {"sample --method caps-iso --normal 0,0,0 -n 10" + out, "--normal"},
+        {"sample --method caps -n 10 --out /no/such/folder/x.npy", "--out"},
+        {"sample --method caps -n 10 --out " + (scratch() / "x.txt").string(), "--out"},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.args);
+        Run run = ggx(c.args);
+        CAPTURE(run.err);
+        CHECK(run.status == 2);
+        CHECK(run.err.find(c.flag) != std::string::npos);
+        CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+        CHECK(only_file_is(scratch(), 0));
+    }
+}

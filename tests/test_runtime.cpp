@@ -1,0 +1,236 @@
+// test_runtime.cpp - the C++ runtime: results independent of chunking and
+// range splits, caller buffers on the caller's queue, per-sample
+// parameters, field selection, program caching, device selection and the
+// errors for bad arguments and failed builds.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <cstring>
+
+#include "device_fixture.hpp"
+
+namespace {
+
+using ggxcl::Field;
+
+ggxcl::SampleParams test_params(ggxcl::Method method = ggxcl::Method::heitz)
+{
+    ggxcl::SampleParams p;
+    p.method = method;
+    p.alpha_x = 0.25f;
+    p.alpha_y = method == ggxcl::Method::caps_iso ? 0.25f : 0.6f;
+    p.view = ggxcl::view_from_angles(50, 20);
+    return p;
+}
+
+bool same_bits(const std::vector<float>& a, const std::vector<float>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+}
+
+bool same_bits(const ggxcl::SampleSet& a, const ggxcl::SampleSet& b)
+{
+    return a.count == b.count && same_bits(a.m, b.m) && same_bits(a.o, b.o) && same_bits(a.pdf_m, b.pdf_m) &&
+           same_bits(a.pdf_o, b.pdf_o) && same_bits(a.weight, b.weight);
+}
+
+template <typename Exception, typename Body>
+std::string message_of(Body&& body)
+{
+    try {
+        body();
+    } catch (const Exception& e) {
+        return e.what();
+    }
+    return "(nothing thrown)";
+}
+
+} // namespace
+
+TEST_CASE("results are bit-identical whatever the chunk size")
+{
+    ggxcl::Sampler& s = ggxtest::sampler();
+    const std::uint64_t saved = s.chunk_size();
+    for (ggxcl::Method method : ggxcl::all_methods) {
+        ggxcl::SampleParams p = test_params(method);
+        s.set_chunk_size(1 << 20);
+        ggxcl::SampleSet whole = s.generate(p, {5, 123, 10007}, ggxcl::FieldSet::all());
+        for (std::uint64_t chunk : {1000ull, 4099ull, 256ull}) {
+            s.set_chunk_size(chunk);
+            CAPTURE(chunk);
+            CHECK(same_bits(whole, s.generate(p, {5, 123, 10007}, ggxcl::FieldSet::all())));
+        }
+    }
+    s.set_chunk_size(saved);
+}
+
+TEST_CASE("consecutive ranges concatenate to the whole range")
+{
+    ggxcl::SampleParams p = test_params();
+    ggxcl::SampleSet whole = ggxtest::sampler().generate(p, {9, 0, 5000}, {Field::m});
+    ggxcl::SampleSet head = ggxtest::sampler().generate(p, {9, 0, 1234}, {Field::m});
+    ggxcl::SampleSet tail = ggxtest::sampler().generate(p, {9, 1234, 5000 - 1234}, {Field::m});
+    for (int c = 0; c < 3; ++c) {
+        CHECK(std::memcmp(whole.m.data() + c * 5000, head.m.data() + c * 1234, 1234 * 4) == 0);
+        CHECK(std::memcmp(whole.m.data() + c * 5000 + 1234, tail.m.data() + c * 3766, 3766 * 4) == 0);
+    }
+}
+
+TEST_CASE("only the requested fields are returned, with the same values")
+{
+    ggxcl::SampleParams p = test_params(ggxcl::Method::caps);
+    ggxcl::SampleSet all = ggxtest::sampler().generate(p, {3, 0, 3000}, ggxcl::FieldSet::all());
+    ggxcl::SampleSet some = ggxtest::sampler().generate(p, {3, 0, 3000}, {Field::pdf_o, Field::m});
+    CHECK(same_bits(all.m, some.m));
+    CHECK(same_bits(all.pdf_o, some.pdf_o));
+    CHECK(some.o.empty());
+    CHECK(some.pdf_m.empty());
+    CHECK(some.weight.empty());
+}
+
+TEST_CASE("program variants are built once per request shape and cached")
+{
+    ggxcl::Sampler local;
+    ggxcl::SampleParams p = test_params(ggxcl::Method::bounded);
+    local.generate(p, {1, 0, 100}, {Field::m});
+    local.generate(p, {2, 50, 300}, {Field::m});
+    CHECK(local.programs_built() == 1);
+    local.generate(p, {1, 0, 100}, {Field::m, Field::pdf_o});
+    CHECK(local.programs_built() == 2);
+}
+
+TEST_CASE("enqueue writes into the caller's buffers on the caller's queue")
+{
+    ggxcl::Sampler& s = ggxtest::sampler();
+    ggxcl::SampleParams p = test_params(ggxcl::Method::caps);
+    const std::uint32_t count = 3000, stride = 3100;
+    cl::CommandQueue my_queue(s.context(), s.device());
+    ggxcl::DeviceOutputs out;
+    out.m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * stride * sizeof(float));
+    out.weight = cl::Buffer(s.context(), CL_MEM_READ_WRITE, stride * sizeof(float));
+    cl::Event done = s.enqueue(my_queue, p, {4, 77, count}, out, stride);
+    done.wait();
+    CHECK(done.getInfo<CL_EVENT_COMMAND_EXECUTION_STATUS>() == CL_COMPLETE);
+    std::vector<float> m(3 * stride), w(stride);
+    my_queue.enqueueReadBuffer(out.m, CL_TRUE, 0, m.size() * 4, m.data());
+    my_queue.enqueueReadBuffer(out.weight, CL_TRUE, 0, w.size() * 4, w.data());
+    ggxcl::SampleSet host = s.generate(p, {4, 77, count}, {Field::m, Field::weight});
+    for (int c = 0; c < 3; ++c)
+        CHECK(std::memcmp(m.data() + c * stride, host.m.data() + c * count, count * 4) == 0);
+    CHECK(std::memcmp(w.data(), host.weight.data(), count * 4) == 0);
+}
+
+TEST_CASE("per-sample parameters give what uniform batches give")
+{
+    ggxcl::Sampler& s = ggxtest::sampler();
+    ggxcl::SampleParams a = test_params(ggxcl::Method::caps_iso), b = a;
+    b.alpha_x = b.alpha_y = 0.9f;
+    b.view = ggxcl::view_from_angles(10, 200);
+    b.normal = {0.3f, -0.2f, 0.9f};
+    const std::uint64_t count = 2000;
+    ggxcl::PerSampleInputs per;
+    for (std::uint64_t j = 0; j < count; ++j) {
+        const ggxcl::SampleParams& q = (j % 3 == 0) ? b : a;
+        per.views.push_back(q.view);
+        per.alphas.push_back({q.alpha_x, q.alpha_y});
+        per.normals.push_back(q.normal);
+    }
+    ggxcl::SampleSet mixed = s.generate(a, {8, 0, count}, {Field::m, Field::pdf_o}, per);
+    ggxcl::SampleSet only_a = s.generate(a, {8, 0, count}, {Field::m, Field::pdf_o});
+    ggxcl::SampleSet only_b = s.generate(b, {8, 0, count}, {Field::m, Field::pdf_o});
+    std::size_t mismatches = 0;
+    for (std::uint64_t j = 0; j < count; ++j) {
+        const ggxcl::SampleSet& expected = (j % 3 == 0) ? only_b : only_a;
+        mismatches += mixed.pdf_o[j] != expected.pdf_o[j];
+        for (int c = 0; c < 3; ++c)
+            mismatches += mixed.m[c * count + j] != expected.m[c * count + j];
+    }
+    CHECK(mismatches == 0);
+}
+
+TEST_CASE("bad arguments throw InvalidArgument naming the parameter, value and range")
+{
+    ggxcl::Sampler& s = ggxtest::sampler();
+    ggxcl::SampleParams p = test_params();
+    auto generate = [&](ggxcl::SampleParams q, std::uint64_t count = 10, ggxcl::FieldSet f = {Field::m}) {
+        s.generate(q, {0, 0, count}, f);
+    };
+    ggxcl::SampleParams bad = p;
+    bad.alpha_x = 0.0f;
+    CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(bad); }) ==
+          "invalid alpha_x '0': allowed is a finite number > 0");
+    bad = p;
+    bad.alpha_y = std::nanf("");
+    CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(bad); }).find("alpha_y 'nan'") != std::string::npos);
+    bad = p;
+    bad.view = {0, 0, 0};
+    CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(bad); }).find("view '0,0,0'") != std::string::npos);
+    bad = p;
+    bad.method = ggxcl::Method::caps_iso;
+    CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(bad); }).find("caps-iso") != std::string::npos);
+    CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(p, 0); }) ==
+          "invalid count '0': allowed is at least 1 sample");
+    CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(p, 10, {}); }).find("fields") != std::string::npos);
+    CHECK(message_of<ggxcl::InvalidArgument>([] { ggxcl::parse_method("walter"); }) ==
+          "invalid method 'walter': allowed is one of ndf, heitz, heitz2017, caps, caps-iso, bounded");
+    CHECK(message_of<ggxcl::InvalidArgument>([&] { s.set_chunk_size(0); }).find("chunk size '0'") != std::string::npos);
+}
+
+TEST_CASE("devices are selected by index, by name part, or by GGXCL_DEVICE")
+{
+    std::vector<ggxcl::DeviceInfo> devices = ggxcl::list_devices();
+    REQUIRE(!devices.empty());
+    CHECK(ggxcl::select_device("0").label() == devices[0].label());
+    std::string part = devices.back().name.substr(0, 6);
+    CHECK(ggxcl::select_device(part).label().find(part) != std::string::npos);
+    std::string error = message_of<ggxcl::DeviceError>([] { ggxcl::select_device("no-such-device-xyz"); });
+    CHECK(error.find("no-such-device-xyz") != std::string::npos);
+    CHECK(error.find(devices[0].label()) != std::string::npos);  // lists what exists
+    CHECK(message_of<ggxcl::DeviceError>([&] { ggxcl::select_device(std::to_string(devices.size())); })
+              .find("no OpenCL device matches") != std::string::npos);
+    ::setenv("GGXCL_DEVICE", "no-such-device-xyz", 1);
+    CHECK(message_of<ggxcl::DeviceError>([] { ggxcl::select_device(); }).find("GGXCL_DEVICE") != std::string::npos);
+    ::setenv("GGXCL_DEVICE", std::to_string(devices.size() - 1).c_str(), 1);
+    CHECK(ggxcl::select_device().label() == devices.back().label());
+    ::unsetenv("GGXCL_DEVICE");
+}
+
+TEST_CASE("a failed build throws BuildError with the CL error name, options and build log")
+{
+    ggxcl::ProgramCache cache(ggxtest::sampler().context());
+    std::string message = message_of<ggxcl::BuildError>(
+        [&] { cache.get(ggxtest::sampler().device(), "ggx_bulk.cl", "-DGGX_WRITE_M=1"); });
+    CHECK(message.find("CL_BUILD_PROGRAM_FAILURE") != std::string::npos);
+    CHECK(message.find("-DGGX_WRITE_M=1") != std::string::npos);
+    CHECK(message.find("ggx_bulk.cl") != std::string::npos);  // #line markers name the file
+    CHECK(message.find("GGX_METHOD") != std::string::npos);   // the #error text of the log
+}
+
+TEST_CASE("embedded kernel sources are self-contained with #line markers")
+{
+    const std::string& source = ggxcl::kernel_source("ggx_samplers.h");
+    CHECK(source.find("#include \"") == std::string::npos);
+    CHECK(source.find("#line 1 \"ggx_sample_caps.h\"") != std::string::npos);
+    CHECK(message_of<ggxcl::InvalidArgument>([] { ggxcl::kernel_source("nope.cl"); }).find("ggx_bulk.cl") !=
+          std::string::npos);
+}
+
+TEST_CASE("device histogram counts what the host counts from the same samples")
+{
+    for (ggxcl::Field direction : {Field::o, Field::m}) {
+        ggxcl::SampleParams p = test_params(ggxcl::Method::ndf);
+        const std::uint64_t count = 200000;
+        const int nz = 16, nphi = 32;
+        ggxcl::Histogram device = ggxtest::sampler().histogram(p, {21, 40, count}, nz, nphi, direction);
+        ggxcl::SampleSet s = ggxtest::sampler().generate(p, {21, 40, count}, {direction});
+        const std::vector<float>& d = s.column_source(direction);
+        std::vector<std::uint64_t> host = ggxtest::histogram_of(d, count, nz, nphi);
+        CHECK(device.total() == count);
+        CHECK(device.non_finite == 0);
+        std::uint64_t moved = 0;  // samples on a bin edge may round to the neighbour in float
+        for (std::size_t b = 0; b < host.size(); ++b)
+            moved += device.counts[b] > host[b] ? device.counts[b] - host[b] : host[b] - device.counts[b];
+        CHECK(moved <= count / 10000);
+    }
+    CHECK_THROWS_AS(ggxtest::sampler().histogram(test_params(), {0, 0, 10}, 0, 4), ggxcl::InvalidArgument);
+}

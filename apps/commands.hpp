@@ -13,5 +13,6 @@ using Action = std::function<void()>;
 Action add_devices_command(CLI::App& app);
 Action add_sample_command(CLI::App& app);
 Action add_demo_command(CLI::App& app);
+Action add_merge_command(CLI::App& app);
 
 } // namespace ggxapp

@@ -4,7 +4,9 @@
 // the flag and leaves no file behind.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -119,6 +121,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"sample --method caps-iso --normal 0,0,0 -n 10" + out, "--normal"},
         {"sample --method caps -n 10 --out /no/such/folder/x.npy", "--out"},
         {"sample --method caps -n 10 --out " + (scratch() / "x.txt").string(), "--out"},
+        {"sample --method caps -n 10 --fields m,o --out " + (scratch() / "x.ply").string(), "--fields"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.args);
@@ -128,5 +131,75 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         CHECK(run.err.find(c.flag) != std::string::npos);
         CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
         CHECK(only_file_is(scratch(), 0));
+    }
+}
+
+namespace {
+std::string read_all(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+} // namespace
+
+TEST_CASE("ggx sample writes .csv with a header and .ply point clouds")
+{
+    fs::path csv = scratch() / "c.csv", ply = scratch() / "c.ply";
+    REQUIRE(ggx("sample --method caps -n 300 --fields o,pdf_o --out " + csv.string()).status == 0);
+    std::istringstream lines(read_all(csv));
+    std::string line;
+    std::getline(lines, line);
+    CHECK(line == "o_x,o_y,o_z,pdf_o");
+    std::size_t rows = 0, bad = 0;
+    while (std::getline(lines, line)) {
+        double x, y, z, pdf;
+        char c1, c2, c3;
+        std::istringstream row(line);
+        row >> x >> c1 >> y >> c2 >> z >> c3 >> pdf;
+        bad += !row || std::fabs(std::sqrt(x * x + y * y + z * z) - 1.0) > 1e-5 || !(pdf > 0);
+        ++rows;
+    }
+    CHECK(rows == 300);
+    CHECK(bad == 0);
+
+    REQUIRE(ggx("sample --method heitz -n 500 --fields m --out " + ply.string()).status == 0);
+    std::string bytes = read_all(ply);
+    std::size_t end = bytes.find("end_header\n");
+    REQUIRE(end != std::string::npos);
+    CHECK(bytes.find("element vertex 500") != std::string::npos);
+    CHECK(bytes.size() == end + 11 + 500 * 15);  // 3 floats and 3 color bytes per vertex
+    std::size_t off_sphere = 0;
+    for (std::size_t j = 0; j < 500; ++j) {
+        float v[3];
+        std::memcpy(v, bytes.data() + end + 11 + 15 * j, 12);
+        off_sphere += std::fabs(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) - 1.0f) > 1e-5f || v[2] <= 0.0f;
+    }
+    CHECK(off_sphere == 0);
+    for (const fs::path& p : {csv, ply, scratch() / "c.json"})
+        fs::remove(p);
+}
+
+TEST_CASE("shards with consecutive --first ranges merge to exactly the one-run file")
+{
+    for (const std::string ext : {".npy", ".csv"}) {
+        fs::path a = scratch() / ("a" + ext), b = scratch() / ("b" + ext), whole = scratch() / ("w" + ext),
+                 merged = scratch() / ("m" + ext);
+        const std::string common = "sample --method bounded --alpha 0.3,0.1 --theta 75 --seed 42 ";
+        REQUIRE(ggx(common + "--first 0 -n 1234 --out " + a.string()).status == 0);
+        REQUIRE(ggx(common + "--first 1234 -n 2000 --out " + b.string()).status == 0);
+        REQUIRE(ggx(common + "--first 0 -n 3234 --out " + whole.string()).status == 0);
+        REQUIRE(ggx("merge --out " + merged.string() + " " + a.string() + " " + b.string()).status == 0);
+        CAPTURE(ext);
+        CHECK(read_all(merged) == read_all(whole));
+        CHECK(read_all(scratch() / "m.json") == read_all(scratch() / "w.json"));
+        Run wrong_order = ggx("merge --out " + (scratch() / ("x" + ext)).string() + " " + b.string() + " " + a.string());
+        CHECK(wrong_order.status == 2);
+        CHECK(wrong_order.err.find("--first") != std::string::npos);
+        for (const char* name : {"a", "b", "w", "m"}) {
+            fs::remove(scratch() / (std::string(name) + ext));
+            fs::remove(scratch() / (std::string(name) + ".json"));
+        }
     }
 }

@@ -1,0 +1,110 @@
+// cmd_merge.cpp - `ggx merge`: joins shards written with consecutive
+// --first ranges into the file one run over the whole range writes, byte
+// for byte (.npy or .csv), after checking that their sidecars agree on
+// everything but the range.
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_values.hpp"
+#include "commands.hpp"
+#include "npy_file.hpp"
+#include "sample_job.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+nlohmann::json read_sidecar(const std::string& shard)
+{
+    std::ifstream in(sidecar_path(shard));
+    if (!in)
+        throw UsageError("SHARD", shard, "a shard with its .json sidecar beside it");
+    return nlohmann::json::parse(in);
+}
+
+// What must agree between shards: everything but the range and the device.
+nlohmann::json without_range(nlohmann::json doc)
+{
+    for (const char* key : {"first", "count", "shape", "device"})
+        doc.erase(key);
+    return doc;
+}
+
+// The merged sidecar: the first shard's, with the whole range.
+nlohmann::json merged_sidecar(const std::vector<std::string>& shards)
+{
+    nlohmann::json merged = read_sidecar(shards.front());
+    std::uint64_t next = merged["first"].get<std::uint64_t>() + merged["count"].get<std::uint64_t>();
+    for (std::size_t k = 1; k < shards.size(); ++k) {
+        nlohmann::json doc = read_sidecar(shards[k]);
+        if (doc["first"].get<std::uint64_t>() != next)
+            throw UsageError("SHARD", shards[k], "the shard starting at --first " + std::to_string(next));
+        next += doc["count"].get<std::uint64_t>();
+        if (without_range(doc) != without_range(merged))
+            throw UsageError("SHARD", shards[k], "a shard of the same method, parameters, seed and columns");
+    }
+    std::uint64_t count = next - merged["first"].get<std::uint64_t>();
+    merged["count"] = count;
+    merged["shape"][0] = count;
+    return merged;
+}
+
+void merge_npy(const std::vector<std::string>& shards, const std::string& out, std::uint64_t rows, std::size_t columns)
+{
+    NpyWriter writer(out, rows, columns);
+    for (const std::string& shard : shards)
+        writer.append(read_npy(shard).data);
+    writer.commit();
+}
+
+void merge_csv(const std::vector<std::string>& shards, const std::string& out)
+{
+    AtomicFile file(out);
+    for (std::size_t k = 0; k < shards.size(); ++k) {
+        std::ifstream in(shards[k]);
+        std::string line;
+        bool header = true;
+        while (std::getline(in, line)) {
+            if (!header || k == 0) {
+                line += "\n";
+                file.write(line.data(), line.size());
+            }
+            header = false;
+        }
+    }
+    file.commit();
+}
+
+} // namespace
+
+Action add_merge_command(CLI::App& app)
+{
+    auto shards = std::make_shared<std::vector<std::string>>();
+    auto out = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand("merge", "Join shards of consecutive --first ranges into one file (.npy or .csv)");
+    cmd->add_option("--out", *out, "merged output, same extension as the shards")->required();
+    cmd->add_option("shards", *shards, "shard files in order of --first")->required();
+    return [cmd, shards, out] {
+        if (!*cmd)
+            return;
+        Format format = format_of("--out", *out);
+        for (const std::string& shard : *shards)
+            if (format_of("SHARD", shard) != format || format == Format::ply)
+                throw UsageError("SHARD", shard, "shards of the output's format, .npy or .csv");
+        check_writable_folder("--out", *out);
+        nlohmann::json sidecar = merged_sidecar(*shards);
+        AtomicFile json_file(sidecar_path(*out));
+        if (format == Format::npy)
+            merge_npy(*shards, *out, sidecar["count"].get<std::uint64_t>(), sidecar["columns"].size());
+        else
+            merge_csv(*shards, *out);
+        std::string text = sidecar.dump(2) + "\n";
+        json_file.write(text.data(), text.size());
+        json_file.commit();
+        std::cout << *out << ": " << sidecar["count"] << " samples from " << shards->size() << " shards\n";
+    };
+}
+
+} // namespace ggxapp

@@ -6,25 +6,26 @@
 
 namespace ggxref {
 
-std::array<uint32_t, 4> philox4x32_10(const std::array<uint32_t, 4>& counter,
-                                      const std::array<uint32_t, 2>& key) {
-  r123::Philox4x32_R<10> rng;
-  const r123::Philox4x32_R<10>::ctr_type c = {{counter[0], counter[1], counter[2], counter[3]}};
-  const r123::Philox4x32_R<10>::key_type k = {{key[0], key[1]}};
-  const auto r = rng(c, k);
-  return {r[0], r[1], r[2], r[3]};
+std::array<uint32_t, 4> philox4x32_10(const std::array<uint32_t, 4>& counter, const std::array<uint32_t, 2>& key)
+{
+    r123::Philox4x32_R<10> rng;
+    const r123::Philox4x32_R<10>::ctr_type c = {{counter[0], counter[1], counter[2], counter[3]}};
+    const r123::Philox4x32_R<10>::key_type k = {{key[0], key[1]}};
+    const auto r = rng(c, k);
+    return {r[0], r[1], r[2], r[3]};
 }
 
-std::array<uint32_t, 4> philox_words(uint64_t seed, uint64_t index) {
-  return philox4x32_10({uint32_t(index), uint32_t(index >> 32), 0u, 0u},
-                       {uint32_t(seed), uint32_t(seed >> 32)});
+std::array<uint32_t, 4> philox_words(uint64_t seed, uint64_t index)
+{
+    return philox4x32_10({uint32_t(index), uint32_t(index >> 32), 0u, 0u}, {uint32_t(seed), uint32_t(seed >> 32)});
 }
 
 // u = (w >> 8) 2^-24: exact in float, in [0, 1 - 2^-24].
-std::array<double, 2> uniforms(uint64_t seed, uint64_t index) {
-  constexpr double scale = 1.0 / 16777216.0;
-  const auto w = philox_words(seed, index);
-  return {double(w[0] >> 8) * scale, double(w[1] >> 8) * scale};
+std::array<double, 2> uniforms(uint64_t seed, uint64_t index)
+{
+    constexpr double scale = 1.0 / 16777216.0;
+    const auto w = philox_words(seed, index);
+    return {double(w[0] >> 8) * scale, double(w[1] >> 8) * scale};
 }
 
 }  // namespace ggxref

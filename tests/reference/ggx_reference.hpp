@@ -16,32 +16,32 @@ constexpr std::array<Method, 6> all_methods = {Method::ndf,  Method::heitz,    M
 const char* method_name(Method);  // "ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"
 
 struct Params {
-  double ax, ay;    // GGX alpha (caps_iso uses ax only, must equal ay)
-  Vec3 i;           // unit view direction (tangent space; world space for caps_iso)
-  Vec3 n{0, 0, 1};  // surface normal, world space, only caps_iso reads it
+    double ax, ay;    // GGX alpha (caps_iso uses ax only, must equal ay)
+    Vec3 i;           // unit view direction (tangent space; world space for caps_iso)
+    Vec3 n{0, 0, 1};  // surface normal, world space, only caps_iso reads it
 };
 
 struct Sample {
-  Vec3 m, o;            // microfacet normal and reflected direction
-  double pdf_m, pdf_o;  // densities per steradian, computed from m as the sampler knows it
-  double weight;        // D(m) G2(i,o) / (4 iz) / pdf_o, 0 when iz <= 0 or oz <= 0 (white furnace)
+    Vec3 m, o;            // microfacet normal and reflected direction
+    double pdf_m, pdf_o;  // densities per steradian, computed from m as the sampler knows it
+    double weight;        // D(m) G2(i,o) / (4 iz) / pdf_o, 0 when iz <= 0 or oz <= 0 (white furnace)
 };
 
-Sample sample(Method, const Params&, double u1, double u2);  // one sample from two uniforms
+Sample sample(Method, const Params&, double u1, double u2);       // one sample from two uniforms
 Vec3 sample_normal(Method, const Params&, double u1, double u2);  // its microfacet normal m only
-double pdf_o(Method, const Params&, const Vec3& o);  // pdf of o recomputed from (i, o) alone
-double pdf_m(Method, const Params&, const Vec3& m);  // pdf of m recomputed from (i, m) alone
+double pdf_o(Method, const Params&, const Vec3& o);               // pdf of o recomputed from (i, o) alone
+double pdf_m(Method, const Params&, const Vec3& m);               // pdf of m recomputed from (i, m) alone
 
 // GGX math, tangent space, anisotropic (SPEC "Shared math").
-double t_of(const Vec3& w, double ax, double ay);  // sqrt(ax^2 wx^2 + ay^2 wy^2 + wz^2)
-double D(const Vec3& m, double ax, double ay);     // 0 for mz <= 0
+double t_of(const Vec3& w, double ax, double ay);    // sqrt(ax^2 wx^2 + ay^2 wy^2 + wz^2)
+double D(const Vec3& m, double ax, double ay);       // 0 for mz <= 0
 double lambda(const Vec3& w, double ax, double ay);  // Smith Lambda, Lambda(-w) = 1 + Lambda(w)
 double G1(const Vec3& w, double ax, double ay);      // 0 for wz <= 0
 double G2_height_correlated(const Vec3& i, const Vec3& o, double ax, double ay);  // 0 unless iz, oz > 0
 double G2_separable(const Vec3& i, const Vec3& o, double ax, double ay);          // G1(i) G1(o)
-double projected_area(const Vec3& i, double ax, double ay);  // (iz + t)/2, cancellation-free for iz < 0
+double projected_area(const Vec3& i, double ax, double ay);           // (iz + t)/2, cancellation-free for iz < 0
 double vndf_pdf(const Vec3& m, const Vec3& i, double ax, double ay);  // Dv(m; i)
-double bounded_k(const Vec3& i, double ax, double ay);               // Eto-Tokuyoshi k
+double bounded_k(const Vec3& i, double ax, double ay);                // Eto-Tokuyoshi k
 double brdf_cos(const Vec3& i, const Vec3& o, double ax, double ay);  // D(h) G2hc / (4 iz), 0 unless iz, oz > 0
 
 // The same for an isotropic surface with world-space normal n (caps_iso): z components are dot
@@ -52,8 +52,7 @@ double G2_height_correlated_iso(const Vec3& i, const Vec3& o, const Vec3& n, dou
 
 // Uniforms: Random123 Philox4x32-10, key = {seed lo, seed hi}, counter = {index lo, index hi, 0, 0};
 // u1 = (w0 >> 8) 2^-24, u2 = (w1 >> 8) 2^-24.
-std::array<uint32_t, 4> philox4x32_10(const std::array<uint32_t, 4>& counter,
-                                      const std::array<uint32_t, 2>& key);
+std::array<uint32_t, 4> philox4x32_10(const std::array<uint32_t, 4>& counter, const std::array<uint32_t, 2>& key);
 std::array<uint32_t, 4> philox_words(uint64_t seed, uint64_t index);
 std::array<double, 2> uniforms(uint64_t seed, uint64_t index);
 

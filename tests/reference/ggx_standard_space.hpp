@@ -15,11 +15,11 @@ namespace ggxref::detail {
 
 // The problem in tangent space; a tangent vector v is v.x e1 + v.y e2 + v.z n in the caller's frame.
 struct Local {
-  double ax, ay;
-  Vec3 i;          // view, tangent space
-  Vec3 ih;         // stretched view normalize(ax ix, ay iy, iz)
-  Vec3 e1, e2, n;  // tangent frame in the caller's coordinates
-  Vec3 outer(const Vec3& v) const { return v.x * e1 + v.y * e2 + v.z * n; }
+    double ax, ay;
+    Vec3 i;          // view, tangent space
+    Vec3 ih;         // stretched view normalize(ax ix, ay iy, iz)
+    Vec3 e1, e2, n;  // tangent frame in the caller's coordinates
+    Vec3 outer(const Vec3& v) const { return v.x * e1 + v.y * e2 + v.z * n; }
 };
 Local tangent_problem(const Params&);    // identity frame
 Local isotropic_problem(const Params&);  // frame about p.n, alpha = p.ax, as caps_iso sees it
@@ -28,37 +28,38 @@ Local isotropic_problem(const Params&);  // frame about p.n, alpha = p.ax, as ca
 std::vector<double> harmonic_roots(double P, double Q, double C, double lo, double hi);
 
 // Polar angles th in (0, pi/2) on the meridian phi of ms = (sin th cos phi, sin th sin phi, cos th) where
-std::vector<double> cuts_visible(const Local&, double phi);               // ih.ms = 0 (i.m = 0)
+std::vector<double> cuts_visible(const Local&, double phi);                // ih.ms = 0 (i.m = 0)
 std::vector<double> cuts_bounded_cap(const Local&, double phi, double k);  // ohat.z = -k ih.z
-std::vector<double> cuts_horizon(const Local&, double phi);               // oz = 0, o = reflect(i, m)
+std::vector<double> cuts_horizon(const Local&, double phi);                // oz = 0, o = reflect(i, m)
 
 // int over the hemisphere of ms of density(ms, m) dw_m; cuts(phi) lists the kinks of a meridian.
-template <class Density, class Cuts>
-double integrate_standard(const Local& L, const Density& density, const Cuts& cuts) {
-  constexpr double pi = 3.14159265358979323846;
-  const Tolerance inner{1e-14, 1e-12}, outer{1e-13, 1e-11};
-  auto meridian = [&](double phi) {
-    const double c = std::cos(phi), s = std::sin(phi);
-    auto f = [&](double th) {
-      const double st = std::sin(th);
-      const Vec3 ms{st * c, st * s, std::cos(th)};
-      const Vec3 w{L.ax * ms.x, L.ay * ms.y, ms.z};
-      const double len = length(w);
-      return density(ms, (1.0 / len) * w) * L.ax * L.ay / (len * len * len) * st;
+template <class Density, class Cuts> double integrate_standard(const Local& L, const Density& density, const Cuts& cuts)
+{
+    constexpr double pi = 3.14159265358979323846;
+    const Tolerance inner{1e-14, 1e-12}, outer{1e-13, 1e-11};
+    auto meridian = [&](double phi) {
+        const double c = std::cos(phi), s = std::sin(phi);
+        auto f = [&](double th) {
+            const double st = std::sin(th);
+            const Vec3 ms{st * c, st * s, std::cos(th)};
+            const Vec3 w{L.ax * ms.x, L.ay * ms.y, ms.z};
+            const double len = length(w);
+            return density(ms, (1.0 / len) * w) * L.ax * L.ay / (len * len * len) * st;
+        };
+        std::vector<double> b = cuts(phi);
+        b.push_back(0.0);
+        b.push_back(0.5 * pi);
+        std::sort(b.begin(), b.end());
+        double sum = 0.0;
+        for (size_t k = 0; k + 1 < b.size(); ++k)
+            if (b[k + 1] > b[k])
+                sum += adaptive_gauss(f, b[k], b[k + 1], inner);
+        return sum;
     };
-    std::vector<double> b = cuts(phi);
-    b.push_back(0.0);
-    b.push_back(0.5 * pi);
-    std::sort(b.begin(), b.end());
-    double sum = 0.0;
-    for (size_t k = 0; k + 1 < b.size(); ++k)
-      if (b[k + 1] > b[k]) sum += adaptive_gauss(f, b[k], b[k + 1], inner);
-    return sum;
-  };
-  // The visibility cut reaches the horizon where ih_xy is perpendicular to the meridian.
-  const double phi0 = std::atan2(L.ih.y, L.ih.x) + 0.5 * pi;
-  return adaptive_gauss(meridian, phi0, phi0 + pi, outer) +
-         adaptive_gauss(meridian, phi0 + pi, phi0 + 2.0 * pi, outer);
+    // The visibility cut reaches the horizon where ih_xy is perpendicular to the meridian.
+    const double phi0 = std::atan2(L.ih.y, L.ih.x) + 0.5 * pi;
+    return adaptive_gauss(meridian, phi0, phi0 + pi, outer) +
+           adaptive_gauss(meridian, phi0 + pi, phi0 + 2.0 * pi, outer);
 }
 
 }  // namespace ggxref::detail

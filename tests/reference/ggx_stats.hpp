@@ -11,14 +11,14 @@ namespace ggxref {
 // Same binning as bin_probabilities: z in [-1, 1] into nz, phi = atan2(y, x) wrapped to [0, 2 pi)
 // into nphi; index = iz_bin * nphi + iphi_bin. z is clamped to [-1, 1]; directions with a
 // non-finite component are not counted (the histogram then sums to less than count).
-std::vector<uint64_t> histogram_directions(const float* x, const float* y, const float* z, size_t count,
-                                           int nz, int nphi);
+std::vector<uint64_t> histogram_directions(const float* x, const float* y, const float* z, size_t count, int nz,
+                                           int nphi);
 
 struct ChiSquare {
-  double statistic;
-  int dof;         // bins used - 1
-  double p_value;  // P(chi2_dof >= statistic); 0 for an empty histogram
-  int bins_used;
+    double statistic;
+    int dof;         // bins used - 1
+    double p_value;  // P(chi2_dof >= statistic); 0 for an empty histogram
+    int bins_used;
 };
 
 // Observed counts against N p (p normalized to sum 1). Bins expecting fewer than 5 are pooled, a

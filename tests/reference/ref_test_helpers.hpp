@@ -1,0 +1,66 @@
+// ref_test_helpers.hpp - parameter grids and small helpers shared by the reference's own tests.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "ggx_reference.hpp"
+
+namespace reftest {
+
+using namespace ggxref;
+constexpr double pi = 3.14159265358979323846;
+
+inline Vec3 direction(double theta_deg, double phi)
+{
+    const double t = theta_deg * pi / 180.0;
+    return {std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)};
+}
+
+// GGX alphas 0.01 .. 2 with anisotropy up to 1:10.
+inline std::vector<std::pair<double, double>> alpha_grid()
+{
+    return {{0.01, 0.01}, {0.01, 0.1}, {0.1, 0.01}, {0.3, 0.3}, {1.0, 1.0},
+            {2.0, 0.2},   {0.2, 2.0},  {2.0, 2.0},  {0.7, 1.3}};
+}
+
+inline std::vector<double> view_grid() { return {0.0, 30.0, 60.0, 85.0}; }
+// Views below the horizon, for the samplers that handle them.
+inline bool handles_below_horizon(Method m)
+{
+    return m == Method::caps || m == Method::caps_iso || m == Method::bounded;
+}
+
+// Tangent-space parameters; caps_iso is isotropic (alpha = ax) with n = (0, 0, 1).
+inline Params params(Method m, double ax, double ay, double theta_deg, double phi = 0.6)
+{
+    return {ax, m == Method::caps_iso ? ax : ay, direction(theta_deg, phi)};
+}
+
+inline bool close_rel(double a, double b, double rel)
+{
+    return std::fabs(a - b) <= rel * std::max(std::fabs(a), std::fabs(b));
+}
+
+// Rotation taking +z to n (Rodrigues about z x n); columns are the images of x, y, z.
+struct Rotation {
+    Vec3 cx, cy, cz;
+    Vec3 apply(const Vec3& v) const { return v.x * cx + v.y * cy + v.z * cz; }
+    Vec3 inverse(const Vec3& v) const { return {dot(v, cx), dot(v, cy), dot(v, cz)}; }
+};
+
+inline Rotation rotation_to(const Vec3& n)
+{
+    const Vec3 z{0.0, 0.0, 1.0};
+    const Vec3 axis = cross(z, n);
+    const double s = length(axis), c = n.z;
+    if (s == 0.0)
+        return {{1, 0, 0}, {0, c, 0}, {0, 0, c}};  // identity or rotation by pi about x
+    const Vec3 k = (1.0 / s) * axis;
+    auto rot = [&](const Vec3& v) { return c * v + s * cross(k, v) + (1.0 - c) * dot(k, v) * k; };
+    return {rot({1, 0, 0}), rot({0, 1, 0}), rot({0, 0, 1})};
+}
+
+}  // namespace reftest

@@ -117,3 +117,15 @@ double parse_angle(const std::string& flag, const std::string& text, double low,
 }
 
 } // namespace ggxapp
+
+namespace ggxapp {
+
+double parse_level(const std::string& flag, const std::string& text)
+{
+    double value;
+    if (!to_double(text, value) || !(value > 0.0 && value < 1.0))
+        throw UsageError(flag, text, "a significance level between 0 and 1, e.g. 0.01");
+    return value;
+}
+
+} // namespace ggxapp

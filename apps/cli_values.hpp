@@ -19,6 +19,12 @@ public:
     explicit UsageError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// A test the user asked for (--check) failed: exit status 1.
+class CheckFailed : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 std::array<float, 2> parse_alpha(const std::string& flag, const std::string& text);
 std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text);
 std::uint64_t parse_count(const std::string& flag, const std::string& text);
@@ -27,5 +33,8 @@ std::uint64_t parse_uint64(const std::string& flag, const std::string& text);
 void check_writable_folder(const std::string& flag, const std::string& path);
 
 double parse_angle(const std::string& flag, const std::string& text, double low, double high);
+
+// A significance level strictly between 0 and 1.
+double parse_level(const std::string& flag, const std::string& text);
 
 } // namespace ggxapp

@@ -13,7 +13,8 @@ int main(int argc, char** argv)
                  std::string(ggxcl::version()) + ")"};
     app.require_subcommand(1);
     std::vector<ggxapp::Action> actions = {ggxapp::add_devices_command(app), ggxapp::add_sample_command(app),
-                                           ggxapp::add_demo_command(app), ggxapp::add_merge_command(app)};
+                                           ggxapp::add_histogram_command(app), ggxapp::add_demo_command(app),
+                                           ggxapp::add_merge_command(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -27,6 +28,9 @@ int main(int argc, char** argv)
     try {
         for (const ggxapp::Action& action : actions)
             action();
+    } catch (const ggxapp::CheckFailed& e) {
+        std::cerr << "ggx: check failed: " << e.what() << "\n";
+        return 1;
     } catch (const ggxapp::UsageError& e) {
         std::cerr << "ggx: " << e.what() << "\n";
         return 2;

@@ -8,9 +8,9 @@
 
 namespace ggxapp {
 
-std::string npy_header(std::uint64_t rows, std::uint64_t columns)
+std::string npy_header(std::uint64_t rows, std::uint64_t columns, const char* descr)
 {
-    std::string dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + std::to_string(rows) + ", " +
+    std::string dict = std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': (" + std::to_string(rows) + ", " +
                        std::to_string(columns) + "), }";
     std::size_t unpadded = 10 + dict.size() + 1;  // magic, version, length, dict, newline
     dict.append((64 - unpadded % 64) % 64, ' ');
@@ -42,6 +42,17 @@ void NpyWriter::commit()
         throw std::logic_error("NpyWriter: " + std::to_string(written_) + " of " + std::to_string(rows_) +
                                " rows written");
     file_.commit();
+}
+
+void write_npy_f64(const std::string& path, std::uint64_t rows, std::uint64_t columns, const std::vector<double>& data)
+{
+    if (data.size() != rows * columns)
+        throw std::logic_error("write_npy_f64: data does not fit the shape");
+    AtomicFile file(path);
+    std::string header = npy_header(rows, columns, "<f8");
+    file.write(header.data(), header.size());
+    file.write(data.data(), data.size() * sizeof(double));
+    file.commit();
 }
 
 NpyArray read_npy(const std::string& path)

@@ -12,7 +12,7 @@
 namespace ggxapp {
 
 // The 10-byte preamble plus the dictionary, padded to a multiple of 64 bytes.
-std::string npy_header(std::uint64_t rows, std::uint64_t columns);
+std::string npy_header(std::uint64_t rows, std::uint64_t columns, const char* descr = "<f4");
 
 class NpyWriter {
 public:
@@ -31,6 +31,9 @@ struct NpyArray {
     std::uint64_t rows = 0, columns = 0;
     std::vector<float> data;  // row-major
 };
+
+// Writes a whole float64 (rows, columns) array, e.g. counts beyond 2^24.
+void write_npy_f64(const std::string& path, std::uint64_t rows, std::uint64_t columns, const std::vector<double>& data);
 
 // Reads a float32 C-order 2-D .npy; throws std::runtime_error on anything else.
 NpyArray read_npy(const std::string& path);

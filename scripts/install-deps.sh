@@ -12,6 +12,8 @@ packages=(
   libboost-math-dev                   # chi-square distribution, Gauss-Legendre nodes
   doctest-dev                         # tests
   libcli11-dev nlohmann-json3-dev     # CLI parsing, JSON sidecars
+  python3-matplotlib python3-numpy    # histogram figures (ggx histogram, ggx demo)
+  libstb-dev                          # PNG decoding in the tests
 )
 
 missing=()

@@ -46,6 +46,14 @@ Run ggx(const std::string& args)
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
 }
 
+std::string read_all(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 bool only_file_is(const fs::path& dir, std::size_t expected)
 {
     std::size_t n = 0;
@@ -87,15 +95,20 @@ TEST_CASE("ggx sample writes the requested columns and a sidecar")
     fs::remove(scratch() / "s.json");
 }
 
-TEST_CASE("ggx demo writes samples of every method")
+TEST_CASE("ggx demo writes clouds, histograms and a summary page for every method")
 {
     fs::path dir = scratch() / "demo";
-    REQUIRE(ggx("demo -n 1000 --out " + dir.string()).status == 0);
+    REQUIRE(ggx("demo -n 1000 --histogram-n 1e5 --no-png --out " + dir.string()).status == 0);
+    std::string page = read_all(dir / "index.md");
     for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
         CAPTURE(method);
         ggxapp::NpyArray a = ggxapp::read_npy((dir / (std::string(method) + ".npy")).string());
         CHECK(a.rows == 1000);
         CHECK(fs::exists(dir / (std::string(method) + ".json")));
+        CHECK(fs::exists(dir / (std::string(method) + ".ply")));
+        nlohmann::json h = nlohmann::json::parse(read_all(dir / (std::string(method) + ".hist.json")));
+        CHECK(h["p_value"].get<double>() > 1e-4);
+        CHECK(page.find("| " + std::string(method) + " |") != std::string::npos);
     }
     fs::remove_all(dir);
 }
@@ -122,6 +135,19 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"sample --method caps -n 10 --out /no/such/folder/x.npy", "--out"},
         {"sample --method caps -n 10 --out " + (scratch() / "x.txt").string(), "--out"},
         {"sample --method caps -n 10 --fields m,o --out " + (scratch() / "x.ply").string(), "--fields"},
+        {"histogram --method walter" + out, "--method"},
+        {"histogram --method caps --alpha 0" + out, "--alpha"},
+        {"histogram --method caps --theta 200" + out, "--theta"},
+        {"histogram --method caps -n 0" + out, "-n"},
+        {"histogram --method caps --check 1.5" + out, "--check"},
+        {"histogram --method caps --bins-z 0" + out, "--bins-z"},
+        {"histogram --method caps --bins-phi x" + out, "--bins-phi"},
+        {"histogram --method caps --against nope" + out, "--against"},
+        {"histogram --method caps --out /no/such/folder/h", "--out"},
+        {"demo -n 0 --out " + (scratch() / "d").string(), "-n"},
+        {"demo --alpha -1 --out " + (scratch() / "d").string(), "--alpha"},
+        {"merge --out " + (scratch() / "m.txt").string() + " a.npy", "--out"},
+        {"merge --out " + (scratch() / "m.npy").string() + " missing.npy", "SHARD"},
     };
     for (const Case& c : cases) {
         CAPTURE(c.args);
@@ -134,15 +160,6 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
     }
 }
 
-namespace {
-std::string read_all(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-} // namespace
 
 TEST_CASE("ggx sample writes .csv with a header and .ply point clouds")
 {

@@ -3,7 +3,7 @@
 
 #include <map>
 
-#include "embedded_kernels.hpp"
+#include "embedded_sources.hpp"
 #include "ggxcl/error.hpp"
 
 namespace ggxcl {

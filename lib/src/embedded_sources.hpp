@@ -1,4 +1,4 @@
-// embedded_kernels.hpp - the table that tools/embed_kernels.cpp generates.
+// embedded_sources.hpp - the table that tools/embed_kernels.cpp generates.
 #pragma once
 
 #include <cstddef>

@@ -1,0 +1,89 @@
+// cmd_histogram.cpp - `ggx histogram`: bin a method's reflected directions
+// on the device and test them against its pdf (chi-square); `--check ALPHA`
+// makes the exit status 1 when p < ALPHA.
+#include <iostream>
+
+#include "cli_values.hpp"
+#include "commands.hpp"
+#include "histogram_job.hpp"
+#include "sample_options.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+struct HistogramCommand {
+    SampleOptions options;
+    std::string count = "1e6", first = "0", bins_z = "32", bins_phi = "64", check, against, out;
+    bool no_png = false;
+
+    HistogramJob job() const
+    {
+        HistogramJob job;
+        job.params = options.params_for(options.parsed_method());
+        job.against = job.params.method;
+        if (!against.empty()) {
+            try {
+                job.against = ggxcl::parse_method(against);
+            } catch (const ggxcl::InvalidArgument&) {
+                throw UsageError("--against", against, "one of " + ggxcl::method_list());
+            }
+        }
+        job.theta_degrees = options.parsed_theta();
+        job.phi_degrees = options.parsed_phi();
+        job.range = {options.parsed_seed(), parse_uint64("--first", first), parse_count("-n", count)};
+        job.bins_z = int(parse_whole("--bins-z", bins_z, 1, 512));
+        job.bins_phi = int(parse_whole("--bins-phi", bins_phi, 1, 1024));
+        if (out.empty())
+            throw UsageError("--out", out, "a path prefix such as results/caps");
+        check_writable_folder("--out", out);
+        job.prefix = out;
+        job.png = !no_png;
+        return job;
+    }
+
+    static std::uint64_t parse_whole(const std::string& flag, const std::string& text, std::uint64_t low,
+                                     std::uint64_t high)
+    {
+        std::uint64_t value = 0;
+        try {
+            value = parse_uint64(flag, text);
+        } catch (const UsageError&) {
+        }
+        if (value < low || value > high)
+            throw UsageError(flag, text, "a whole number from " + std::to_string(low) + " to " + std::to_string(high));
+        return value;
+    }
+};
+
+} // namespace
+
+Action add_histogram_command(CLI::App& app)
+{
+    auto state = std::make_shared<HistogramCommand>();
+    CLI::App* cmd = app.add_subcommand("histogram", "Bin o on the device and chi-square test it against the pdf");
+    state->options.add_method_options(*cmd);
+    state->options.add_view_options(*cmd);
+    cmd->add_option("-n,--count", state->count, "number of samples: 1000, 1e9 or 2^30")->capture_default_str();
+    cmd->add_option("--first", state->first, "index of the first sample")->capture_default_str();
+    cmd->add_option("--bins-z", state->bins_z, "bins over cos theta in [-1, 1]")->capture_default_str();
+    cmd->add_option("--bins-phi", state->bins_phi, "bins over phi in [0, 360)")->capture_default_str();
+    cmd->add_option("--against", state->against, "test against this method's pdf instead (a negative control)");
+    cmd->add_option("--check", state->check, "exit with status 1 when p < ALPHA (0 < ALPHA < 1)");
+    cmd->add_flag("--no-png", state->no_png, "skip the figure (no Python needed)");
+    cmd->add_option("--out", state->out, "path prefix of PREFIX.observed.npy, .expected.npy, .json, .png")->required();
+    return [cmd, state] {
+        if (!*cmd)
+            return;
+        double level = state->check.empty() ? 0.0 : parse_level("--check", state->check);
+        HistogramJob job = state->job();
+        ggxcl::Sampler sampler(state->options.device);
+        HistogramResult result = run_histogram_job(sampler, job);
+        std::cout << job.prefix << ": chi-square " << result.chi_square << " on " << result.dof << " dof, p = "
+                  << result.p_value << (result.png.empty() ? "" : ", figure " + result.png) << "\n";
+        if (level > 0.0 && result.p_value < level)
+            throw CheckFailed("p = " + std::to_string(result.p_value) + " is below --check " + state->check);
+    };
+}
+
+} // namespace ggxapp

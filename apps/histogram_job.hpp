@@ -1,0 +1,32 @@
+// histogram_job.hpp - one `ggx histogram` job: device-binned counts of o
+// over (phi, cos theta) in bins of equal solid angle, expected counts from
+// the pdf integrated over each bin in double precision (the reference), a
+// chi-square test, and the files: PREFIX.observed.npy, PREFIX.expected.npy
+// (float64, bins_z x bins_phi), PREFIX.json and PREFIX.png.
+#pragma once
+
+#include <string>
+
+#include <ggxcl/ggxcl.hpp>
+
+namespace ggxapp {
+
+struct HistogramJob {
+    ggxcl::SampleParams params;
+    ggxcl::Method against = ggxcl::Method::caps;  // whose pdf gives the expectation (normally params.method)
+    double theta_degrees = 0.0, phi_degrees = 0.0;
+    ggxcl::SampleRange range;
+    int bins_z = 32, bins_phi = 64;
+    std::string prefix;
+    bool png = true;
+};
+
+struct HistogramResult {
+    double chi_square = 0, p_value = 0, samples_per_second = 0;
+    int dof = 0;
+    std::string png;  // path of the figure, empty when none was drawn
+};
+
+HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job);
+
+} // namespace ggxapp

@@ -1,0 +1,82 @@
+// test_histogram_cli.cpp - `ggx histogram` end to end: the chi-square test
+// passes for every method at the default configuration, fails for a wrong
+// pdf (negative control, exit 1 under --check), and the figure decodes as a
+// PNG of the expected size.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+#include <stb/stb_image.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch()
+{
+    static fs::path dir = [] {
+        fs::path d = fs::temp_directory_path() / ("ggx-hist-test-" + std::to_string(::getpid()));
+        fs::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+int ggx(const std::string& args)
+{
+    std::string command = std::string(GGX_BINARY) + " " + args + " >/dev/null 2>&1";
+    int raw = std::system(command.c_str());
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+nlohmann::json summary(const fs::path& prefix)
+{
+    std::ifstream in(prefix.string() + ".json");
+    return nlohmann::json::parse(in);
+}
+
+} // namespace
+
+TEST_CASE("histogram: every method passes its own chi-square test at the default configuration")
+{
+    for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
+        CAPTURE(method);
+        fs::path prefix = scratch() / method;
+        CHECK(ggx(std::string("histogram --method ") + method + " -n 1e6 --check 0.001 --no-png --out " +
+                  prefix.string()) == 0);
+        nlohmann::json s = summary(prefix);
+        CHECK(s["count"] == 1000000);
+        CHECK(s["dof"].get<int>() > 100);
+        std::ifstream npy(prefix.string() + ".observed.npy", std::ios::binary);
+        std::string head(128, '\0');
+        npy.read(head.data(), 128);
+        CHECK(head.find("'descr': '<f8'") != std::string::npos);
+        CHECK(head.find("'shape': (32, 64)") != std::string::npos);
+    }
+}
+
+TEST_CASE("histogram: a wrong pdf is rejected and --check turns it into exit status 1")
+{
+    fs::path prefix = scratch() / "wrong";
+    CHECK(ggx("histogram --method ndf --against caps -n 1e6 --check 0.01 --no-png --out " + prefix.string()) == 1);
+    CHECK(summary(prefix)["p_value"].get<double>() < 1e-6);
+}
+
+TEST_CASE("histogram: the figure decodes as a 1280 x 400 PNG")
+{
+    fs::path prefix = scratch() / "figure";
+    REQUIRE(ggx("histogram --method bounded --alpha 0.2,0.5 --theta 70 -n 2e5 --out " + prefix.string()) == 0);
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load((prefix.string() + ".png").c_str(), &width, &height, &channels, 0);
+    REQUIRE(pixels != nullptr);
+    CHECK(width == 1280);
+    CHECK(height == 400);
+    CHECK(channels >= 3);
+    stbi_image_free(pixels);
+    fs::remove_all(scratch());
+}

@@ -1,6 +1,8 @@
 // cmd_sample.cpp - `ggx sample`: samples of one method into a .npy with a
 // JSON sidecar.
 #include <iostream>
+#include <memory>
+#include <sstream>
 
 #include "cli_values.hpp"
 #include "commands.hpp"
@@ -13,8 +15,26 @@ namespace {
 
 struct SampleCommand {
     SampleOptions options;
-    std::string count, first = "0", fields = "m,o,pdf_m,pdf_o,weight", out;
-    bool fields_given = false;
+    std::string count, first = "0", fields = "m,o,pdf_m,pdf_o,weight", out, devices;
+    bool fields_given = false, all_devices = false;
+
+    // One sampler per device of --devices / --all-devices, else the one of --device.
+    std::vector<std::unique_ptr<ggxcl::Sampler>> samplers() const
+    {
+        std::vector<std::unique_ptr<ggxcl::Sampler>> list;
+        if (all_devices) {
+            for (const ggxcl::DeviceInfo& d : ggxcl::list_devices())
+                list.push_back(std::make_unique<ggxcl::Sampler>(d));
+        } else if (!devices.empty()) {
+            std::stringstream items(devices);
+            std::string item;
+            while (std::getline(items, item, ','))
+                list.push_back(std::make_unique<ggxcl::Sampler>(ggxcl::select_device(item)));
+        } else {
+            list.push_back(std::make_unique<ggxcl::Sampler>(options.device));
+        }
+        return list;
+    }
 
     SampleJob job() const
     {
@@ -56,13 +76,18 @@ Action add_sample_command(CLI::App& app)
                                           "columns, in order: m,o,pdf_m,pdf_o,weight (.ply: o or m)")
                               ->capture_default_str();
     cmd->add_option("--out", state->out, "output .npy, .csv or .ply (a .json sidecar goes beside it)")->required();
+    cmd->add_option("--devices", state->devices, "split the job across these devices: selectors separated by commas");
+    cmd->add_flag("--all-devices", state->all_devices, "split the job across every device of the machine");
     return [cmd, state, fields] {
         if (!*cmd)
             return;
         state->fields_given = fields->count() > 0;
         SampleJob job = state->job();
-        ggxcl::Sampler sampler(state->options.device);
-        run_sample_job(sampler, job);
+        std::vector<std::unique_ptr<ggxcl::Sampler>> owned = state->samplers();
+        std::vector<ggxcl::Sampler*> samplers;
+        for (auto& s : owned)
+            samplers.push_back(s.get());
+        run_sample_job(samplers, job);
         std::cout << job.out << ": " << job.range.count << " samples of " << state->options.method << "\n";
     };
 }

@@ -34,6 +34,9 @@ int main(int argc, char** argv)
     } catch (const ggxapp::UsageError& e) {
         std::cerr << "ggx: " << e.what() << "\n";
         return 2;
+    } catch (const ggxcl::NoMatchingDevice& e) {
+        std::cerr << "ggx: --device: " << e.what() << "\n";
+        return 2;
     } catch (const ggxcl::InvalidArgument& e) {
         std::cerr << "ggx: " << e.what() << "\n";
         return 2;

@@ -27,7 +27,15 @@ std::vector<float> interleave(const ggxcl::SampleSet& chunk, const std::vector<g
     return rows;
 }
 
-nlohmann::json sidecar(const ggxcl::Sampler& sampler, const SampleJob& job)
+std::string device_names(const std::vector<ggxcl::Sampler*>& samplers)
+{
+    std::string names;
+    for (const ggxcl::Sampler* s : samplers)
+        names += (names.empty() ? "" : " + ") + s->device_name();
+    return names;
+}
+
+nlohmann::json sidecar(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
 {
     const ggxcl::SampleParams& p = job.params;
     nlohmann::json doc;
@@ -47,7 +55,7 @@ nlohmann::json sidecar(const ggxcl::Sampler& sampler, const SampleJob& job)
     if (job.format == Format::ply)
         doc["ply"] = "vertices are the first three columns, colored by log10 of the fourth over [-2, 3]";
     doc["shape"] = {job.range.count, column_names(job.fields).size()};
-    doc["device"] = sampler.device_name();
+    doc["device"] = device_names(samplers);
     doc["generator"] = "Philox4x32-10, key (seed lo, seed hi), counter (index lo, index hi, 0, 0)";
     doc["ggxcl_version"] = ggxcl::version();
     return doc;
@@ -89,16 +97,24 @@ std::string sidecar_path(const std::string& npy_path)
 
 void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job)
 {
+    run_sample_job(std::vector<ggxcl::Sampler*>{&sampler}, job);
+}
+
+void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
+{
     const std::size_t columns = column_names(job.fields).size();
     std::unique_ptr<SampleWriter> writer = make_writer(job.format, job.out, job.range.count, column_names(job.fields));
     AtomicFile json_file(sidecar_path(job.out));  // opened now: fail before sampling if unwritable
     Progress progress(job.out, job.range.count);
-    sampler.generate_chunks(job.params, job.range, ggxcl::FieldSet(job.fields),
-                            [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
-                                writer->append(interleave(chunk, job.fields, columns));
-                                progress.advance(offset + chunk.count);
-                            });
-    std::string text = sidecar(sampler, job).dump(2) + "\n";
+    auto write_chunk = [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
+        writer->append(interleave(chunk, job.fields, columns));
+        progress.advance(offset + chunk.count);
+    };
+    if (samplers.size() == 1)
+        samplers.front()->generate_chunks(job.params, job.range, ggxcl::FieldSet(job.fields), write_chunk);
+    else
+        ggxcl::generate_split(samplers, job.params, job.range, ggxcl::FieldSet(job.fields), write_chunk);
+    std::string text = sidecar(samplers, job).dump(2) + "\n";
     json_file.write(text.data(), text.size());
     writer->commit();
     json_file.commit();

@@ -33,4 +33,8 @@ std::string sidecar_path(const std::string& npy_path);
 // Writes the samples and their sidecar (each through a temporary file).
 void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job);
 
+// The same with the range split across several samplers (one per device),
+// giving the same bits as one device of the same type.
+void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job);
+
 } // namespace ggxapp

@@ -135,6 +135,8 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"sample --method caps -n 10 --out /no/such/folder/x.npy", "--out"},
         {"sample --method caps -n 10 --out " + (scratch() / "x.txt").string(), "--out"},
         {"sample --method caps -n 10 --fields m,o --out " + (scratch() / "x.ply").string(), "--fields"},
+        {"sample --method caps -n 10 --device no-such-device" + out, "--device"},
+        {"sample --method caps -n 10 --devices 0,no-such-device" + out, "--device"},
         {"histogram --method walter" + out, "--method"},
         {"histogram --method caps --alpha 0" + out, "--alpha"},
         {"histogram --method caps --theta 200" + out, "--theta"},
@@ -196,6 +198,17 @@ TEST_CASE("ggx sample writes .csv with a header and .ply point clouds")
     CHECK(off_sphere == 0);
     for (const fs::path& p : {csv, ply, scratch() / "c.json"})
         fs::remove(p);
+}
+
+TEST_CASE("a job split across devices writes the same bytes as one device")
+{
+    fs::path one = scratch() / "one.npy", split = scratch() / "split.npy";
+    const std::string common = "sample --method caps-iso --alpha 0.4 --normal 0.2,0.1,1 --theta 40 -n 2500000 --seed 9 ";
+    REQUIRE(ggx(common + "--out " + one.string()).status == 0);
+    REQUIRE(ggx(common + "--devices 0,0,0 --out " + split.string()).status == 0);  // three contexts on one device
+    CHECK(read_all(one) == read_all(split));
+    for (const char* name : {"one.npy", "one.json", "split.npy", "split.json"})
+        fs::remove(scratch() / name);
 }
 
 TEST_CASE("shards with consecutive --first ranges merge to exactly the one-run file")

@@ -234,3 +234,30 @@ TEST_CASE("device histogram counts what the host counts from the same samples")
     }
     CHECK_THROWS_AS(ggxtest::sampler().histogram(test_params(), {0, 0, 10}, 0, 4), ggxcl::InvalidArgument);
 }
+
+TEST_CASE("a range split across several samplers arrives in order with the one-sampler bits")
+{
+    ggxcl::Sampler a, b, c;
+    std::vector<ggxcl::Sampler*> samplers = {&a, &b, &c};
+    ggxcl::SampleParams p = test_params(ggxcl::Method::bounded);
+    ggxcl::SampleSet whole = ggxtest::sampler().generate(p, {12, 1000, 10000}, {Field::o, Field::weight});
+    std::vector<float> o(3 * 10000), w(10000);
+    std::uint64_t expected_offset = 0;
+    ggxcl::generate_split(samplers, p, {12, 1000, 10000}, {Field::o, Field::weight},
+                          [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
+                              CHECK(offset == expected_offset);
+                              expected_offset += chunk.count;
+                              for (int comp = 0; comp < 3; ++comp)
+                                  std::copy_n(chunk.o.data() + comp * chunk.count, chunk.count,
+                                              o.data() + comp * 10000 + offset);
+                              std::copy_n(chunk.weight.data(), chunk.count, w.data() + offset);
+                          },
+                          777);  // uneven chunks: 13 of 777 and a last of 676
+    CHECK(expected_offset == 10000);
+    CHECK(same_bits(o, whole.o));
+    CHECK(same_bits(w, whole.weight));
+    CHECK_THROWS_AS(ggxcl::generate_split(samplers, p, {12, 0, 100}, {Field::o},
+                                          [](const ggxcl::SampleSet&, std::uint64_t) { throw std::runtime_error("sink"); },
+                                          10),
+                    std::runtime_error);
+}

@@ -50,7 +50,7 @@ std::string describe_all(const std::vector<DeviceInfo>& devices)
 {
     std::string text;
     for (const DeviceInfo& d : devices)
-        text += "\n  " + std::to_string(d.index) + ": " + d.label() + " (" + d.type + ")";
+        text += (text.empty() ? " " : "; ") + std::to_string(d.index) + ": " + d.label() + " (" + d.type + ")";
     return text;
 }
 
@@ -103,7 +103,7 @@ DeviceInfo select_device(const std::string& selector)
             if (lowercase(d.label()).find(lowercase(wanted)) != std::string::npos)
                 return d;
     }
-    throw DeviceError("no OpenCL device matches " + source + " '" + wanted +
+    throw NoMatchingDevice("no OpenCL device matches " + source + " '" + wanted +
                       "'; give an index or part of a name from:" + describe_all(devices));
 }
 

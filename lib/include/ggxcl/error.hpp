@@ -24,10 +24,16 @@ private:
     std::string parameter_;
 };
 
-// No OpenCL platform or no device matching a selector.
+// No OpenCL platform, or no device at all.
 class DeviceError : public Error {
 public:
     using Error::Error;
+};
+
+// Devices exist but none matches the selector; the message lists them.
+class NoMatchingDevice : public DeviceError {
+public:
+    using DeviceError::DeviceError;
 };
 
 // An OpenCL call failed; `what()` holds the call and the CL error name.

@@ -6,6 +6,7 @@
 #include "ggxcl/fields.hpp"
 #include "ggxcl/kernel_sources.hpp"
 #include "ggxcl/method.hpp"
+#include "ggxcl/multi_device.hpp"
 #include "ggxcl/params.hpp"
 #include "ggxcl/program_cache.hpp"
 #include "ggxcl/sampler.hpp"

@@ -77,7 +77,7 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<double> probabilities = ggxref::bin_probabilities(
         reference_method(job.against), reference_params(job.params), job.bins_z, job.bins_phi);
-    ggxref::ChiSquare fit = ggxref::chi_square_gof(counts.counts, probabilities);
+    ggxref::ChiSquare fit = ggxref::chi_square_gof_float(counts.counts, probabilities);
 
     std::vector<double> observed(counts.counts.begin(), counts.counts.end()), expected(probabilities.size());
     for (std::size_t b = 0; b < expected.size(); ++b)

@@ -96,7 +96,8 @@ GGX_INLINE ggx_vec3 ggx_half_vector(ggx_vec3 i, ggx_vec3 o)
 {
     ggx_vec3 h = ggx_add(i, o);
     float len2 = ggx_dot(h, h);
-    return len2 > 0.0f ? ggx_scale(h, rsqrt(len2)) : ggx_vec3_make(0.0f, 0.0f, 0.0f);
+    float scale = len2 > 0.0f ? rsqrt(len2) : 0.0f;  // a scalar select: struct selects do not vectorize
+    return ggx_scale(h, scale);
 }
 
 #endif

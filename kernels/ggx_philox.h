@@ -30,9 +30,12 @@ GGX_INLINE void ggx_philox_round(uint* c0, uint* c1, uint* c2, uint* c3, uint k0
     *c3 = lo0;
 }
 
-// Philox4x32 with 10 rounds; the key is bumped by the Weyl constants between rounds.
+// Philox4x32 with 10 rounds; the key is bumped by the Weyl constants between
+// rounds.  Fully unrolled: a loop here, inside PoCL's loop over work-items,
+// keeps the kernel from vectorizing.
 GGX_INLINE void ggx_philox4x32_10(uint* c0, uint* c1, uint* c2, uint* c3, uint k0, uint k1)
 {
+#pragma unroll
     for (int round = 0; round < 10; ++round) {
         ggx_philox_round(c0, c1, c2, c3, k0, k1);
         k0 += GGX_PHILOX_W0;

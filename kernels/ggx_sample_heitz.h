@@ -23,7 +23,8 @@ GGX_INLINE ggx_vec3 ggx_tangent_or_x(float sx, float sy)
 {
     float len2 = sx * sx + sy * sy;
     float inv = rsqrt(len2);
-    return len2 > 0.0f ? ggx_vec3_make(sx * inv, sy * inv, 0.0f) : ggx_vec3_make(1.0f, 0.0f, 0.0f);
+    int pole = !(len2 > 0.0f);  // per-component selects: a select of structs does not vectorize
+    return ggx_vec3_make(pole ? 1.0f : sx * inv, pole ? 0.0f : sy * inv, 0.0f);
 }
 
 GGX_INLINE ggx_sample ggx_sample_heitz(ggx_vec3 i, float ax, float ay, float u1, float u2)

@@ -35,7 +35,7 @@ GGX_INLINE ggx_sample ggx_sample_ndf(ggx_vec3 i, float ax, float ay, float u1, f
 GGX_INLINE float ggx_pdf_ndf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
     ggx_vec3 h = ggx_half_vector(i, o);
-    ggx_vec3 m = h.z < 0.0f ? ggx_scale(h, -1.0f) : h;
+    ggx_vec3 m = ggx_scale(h, h.z < 0.0f ? -1.0f : 1.0f);
     float i_dot_m = fabs(ggx_dot(i, m));
     return i_dot_m > 0.0f ? ggx_D(m, ax, ay) * m.z / (4.0f * i_dot_m) : 0.0f;
 }

@@ -107,6 +107,21 @@ ChiSquare chi_square_gof(const std::vector<uint64_t>& observed, const std::vecto
     return finish(cells, 1);
 }
 
+ChiSquare chi_square_gof_float(const std::vector<uint64_t>& observed, const std::vector<double>& probabilities)
+{
+    double n = 0.0, impossible = 0.0;
+    for (size_t k = 0; k < observed.size(); ++k) {
+        n += double(observed[k]);
+        impossible += probabilities[k] > 0.0 ? 0.0 : double(observed[k]);
+    }
+    if (impossible > 2.0 + 1e-6 * n)
+        return chi_square_gof(observed, probabilities);
+    std::vector<uint64_t> kept = observed;
+    for (size_t k = 0; k < kept.size(); ++k)
+        kept[k] = probabilities[k] > 0.0 ? kept[k] : 0;
+    return chi_square_gof(kept, probabilities);
+}
+
 // 2 x K contingency table: expected count of sample s in bin k = (a_k + b_k) N_s / (N_a + N_b).
 ChiSquare chi_square_homogeneity(const std::vector<uint64_t>& a, const std::vector<uint64_t>& b)
 {

@@ -17,9 +17,10 @@ ggxcl::Method to_library(ggxref::Method method)
     return ggxcl::parse_method(ggxref::method_name(method));
 }
 
-ggxcl::SampleParams to_library(ggxref::Method method, const ggxref::Params& p)
+ggxcl::SampleParams to_library(ggxref::Method method, const ggxref::Params& p, ggxcl::Precision precision)
 {
     ggxcl::SampleParams out;
+    out.precision = precision;
     out.method = to_library(method);
     out.alpha_x = float(p.ax);
     out.alpha_y = float(p.ay);
@@ -132,9 +133,9 @@ std::vector<Config> distribution_grid(ggxref::Method method)
 }
 
 ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& params, std::uint64_t seed,
-                                std::uint64_t count, ggxcl::FieldSet fields)
+                                std::uint64_t count, ggxcl::FieldSet fields, ggxcl::Precision precision)
 {
-    return sampler().generate(to_library(method, params), {seed, 0, count}, fields);
+    return sampler().generate(to_library(method, params, precision), {seed, 0, count}, fields);
 }
 
 std::vector<std::uint64_t> histogram_of(const std::vector<float>& planar, std::uint64_t count, int nz, int nphi)

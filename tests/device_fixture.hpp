@@ -18,7 +18,11 @@ namespace ggxtest {
 ggxcl::Sampler& sampler();
 
 ggxcl::Method to_library(ggxref::Method method);
-ggxcl::SampleParams to_library(ggxref::Method method, const ggxref::Params& params);
+ggxcl::SampleParams to_library(ggxref::Method method, const ggxref::Params& params,
+                               ggxcl::Precision precision = ggxcl::Precision::precise);
+
+inline constexpr ggxcl::Precision all_precisions[] = {ggxcl::Precision::precise, ggxcl::Precision::fast,
+                                                      ggxcl::Precision::relaxed};
 
 // The reference parameters of a view at (theta, phi) degrees, normal +z.
 ggxref::Params make_params(double ax, double ay, double theta_degrees, double phi_degrees = 35.0);
@@ -40,7 +44,8 @@ std::vector<Config> distribution_grid(ggxref::Method method);
 
 // Device samples of one configuration: o (or m) as a directions set.
 ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& params, std::uint64_t seed,
-                                std::uint64_t count, ggxcl::FieldSet fields);
+                                std::uint64_t count, ggxcl::FieldSet fields,
+                                ggxcl::Precision precision = ggxcl::Precision::precise);
 
 // Histogram of the o (planar) of a sample set in the reference binning.
 std::vector<std::uint64_t> histogram_of(const std::vector<float>& planar, std::uint64_t count, int nz, int nphi);

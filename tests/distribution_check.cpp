@@ -4,15 +4,15 @@
 namespace ggxtest {
 
 std::vector<std::uint64_t> device_histogram(ggxref::Method sampled, const ggxref::Params& params, std::uint64_t seed,
-                                            std::uint64_t count)
+                                            std::uint64_t count, ggxcl::Precision precision)
 {
-    ggxcl::SampleSet s = device_samples(sampled, params, seed, count, {ggxcl::Field::o});
+    ggxcl::SampleSet s = device_samples(sampled, params, seed, count, {ggxcl::Field::o}, precision);
     return histogram_of(s.o, s.count, bins_z, bins_phi);
 }
 
 ggxref::ChiSquare fit(const std::vector<std::uint64_t>& histogram, ggxref::Method tested, const ggxref::Params& params)
 {
-    return ggxref::chi_square_gof(histogram, ggxref::bin_probabilities(tested, params, bins_z, bins_phi));
+    return ggxref::chi_square_gof_float(histogram, ggxref::bin_probabilities(tested, params, bins_z, bins_phi));
 }
 
 double per_config_level()

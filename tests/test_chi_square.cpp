@@ -1,11 +1,13 @@
 // test_chi_square.cpp - goodness of fit of device samples to each method's
 // pdf: 1e6 samples of o per configuration, 20 configurations per method,
-// bins of equal solid angle in (phi, cos theta) with sparse bins pooled,
-// Sidak-corrected to a family level of 0.01 per method.  Negative controls
+// each in the three precision modes, bins of equal solid angle in
+// (phi, cos theta) with sparse bins pooled, Sidak-corrected over the 60
+// tests to a family level of 0.01 per method.  Negative controls
 // show the same test rejects wrong distributions.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <iterator>
 
 #include "distribution_check.hpp"
 
@@ -17,22 +19,30 @@ void check_fits(Method method)
 {
     std::vector<ggxtest::Config> grid = ggxtest::distribution_grid(method);
     REQUIRE(grid.size() == ggxtest::configs_per_method);
-    double level = ggxtest::per_config_level();
+    const int modes = int(std::size(ggxtest::all_precisions));
+    double level = ggxref::sidak_level(ggxtest::family_level, ggxtest::configs_per_method * modes);
     std::uint64_t seed = 1000;
     double lowest = 1.0, highest = 0.0;
     for (const ggxtest::Config& config : grid) {
-        ggxref::ChiSquare result = ggxtest::fit(ggxtest::device_histogram(method, config.params, ++seed), method,
-                                                config.params);
-        CAPTURE(config.label);
-        CAPTURE(result.statistic);
-        CAPTURE(result.dof);
-        CHECK(result.bins_used > 10);
-        CHECK(result.p_value > level);
-        lowest = std::min(lowest, result.p_value);
-        highest = std::max(highest, result.p_value);
+        std::vector<double> expected =
+            ggxref::bin_probabilities(method, config.params, ggxtest::bins_z, ggxtest::bins_phi);
+        for (ggxcl::Precision precision : ggxtest::all_precisions) {
+            ggxref::ChiSquare result = ggxref::chi_square_gof_float(
+                ggxtest::device_histogram(method, config.params, ++seed, ggxtest::chi_square_samples, precision),
+                expected);
+            CAPTURE(config.label);
+            CAPTURE(ggxcl::precision_name(precision));
+            CAPTURE(result.statistic);
+            CAPTURE(result.dof);
+            CHECK(result.bins_used > 10);
+            CHECK(result.p_value > level);
+            lowest = std::min(lowest, result.p_value);
+            highest = std::max(highest, result.p_value);
+        }
     }
-    MESSAGE(std::string(ggxref::method_name(method)) << ": p-values of " << grid.size() << " configurations in ["
-                                                     << lowest << ", " << highest << "], level " << level);
+    MESSAGE(std::string(ggxref::method_name(method)) << ": p-values of " << grid.size() << " configurations x "
+                                                     << modes << " precision modes in [" << lowest << ", " << highest
+                                                     << "], level " << level);
 }
 
 } // namespace

@@ -51,9 +51,10 @@ struct Errors {
     std::string worst_where;
 };
 
-void compare_config(ggxref::Method method, const ggxtest::Config& config, Errors& errors)
+void compare_config(ggxref::Method method, const ggxtest::Config& config, ggxcl::Precision precision, Errors& errors)
 {
-    ggxcl::SampleSet d = ggxtest::device_samples(method, config.params, seed, samples_per_config, ggxcl::FieldSet::all());
+    ggxcl::SampleSet d =
+        ggxtest::device_samples(method, config.params, seed, samples_per_config, ggxcl::FieldSet::all(), precision);
     for (std::size_t j = 0; j < d.count; ++j) {
         std::array<double, 2> u = ggxref::uniforms(seed, j);
         ggxref::Sample r = ggxref::sample(method, config.params, u[0], u[1]);
@@ -79,12 +80,12 @@ void compare_config(ggxref::Method method, const ggxtest::Config& config, Errors
     }
 }
 
-void check_method(ggxref::Method method)
+void check_method(ggxref::Method method, ggxcl::Precision precision)
 {
     Errors errors;
     for (const ggxtest::Config& config : ggxtest::per_sample_grid(method))
-        compare_config(method, config, errors);
-    std::string name = ggxref::method_name(method);
+        compare_config(method, config, precision, errors);
+    std::string name = std::string(ggxref::method_name(method)) + " " + std::string(ggxcl::precision_name(precision));
     CAPTURE(errors.worst_where);
     CHECK(errors.non_finite == 0);
     ggxtest::check_errors(name, angle_bound, errors.angle);
@@ -94,9 +95,39 @@ void check_method(ggxref::Method method)
 
 } // namespace
 
-TEST_CASE("ndf matches the reference sample by sample") { check_method(ggxref::Method::ndf); }
-TEST_CASE("heitz matches the reference sample by sample") { check_method(ggxref::Method::heitz); }
-TEST_CASE("heitz2017 matches the reference sample by sample") { check_method(ggxref::Method::heitz2017); }
-TEST_CASE("caps matches the reference sample by sample") { check_method(ggxref::Method::caps); }
-TEST_CASE("caps-iso matches the reference sample by sample") { check_method(ggxref::Method::caps_iso); }
-TEST_CASE("bounded matches the reference sample by sample") { check_method(ggxref::Method::bounded); }
+TEST_CASE("ndf matches the reference sample by sample in every precision mode")
+{
+    for (ggxcl::Precision precision : ggxtest::all_precisions)
+        check_method(ggxref::Method::ndf, precision);
+}
+
+TEST_CASE("heitz matches the reference sample by sample in every precision mode")
+{
+    for (ggxcl::Precision precision : ggxtest::all_precisions)
+        check_method(ggxref::Method::heitz, precision);
+}
+
+TEST_CASE("heitz2017 matches the reference sample by sample in every precision mode")
+{
+    for (ggxcl::Precision precision : ggxtest::all_precisions)
+        check_method(ggxref::Method::heitz2017, precision);
+}
+
+TEST_CASE("caps matches the reference sample by sample in every precision mode")
+{
+    for (ggxcl::Precision precision : ggxtest::all_precisions)
+        check_method(ggxref::Method::caps, precision);
+}
+
+TEST_CASE("caps-iso matches the reference sample by sample in every precision mode")
+{
+    for (ggxcl::Precision precision : ggxtest::all_precisions)
+        check_method(ggxref::Method::caps_iso, precision);
+}
+
+TEST_CASE("bounded matches the reference sample by sample in every precision mode")
+{
+    for (ggxcl::Precision precision : ggxtest::all_precisions)
+        check_method(ggxref::Method::bounded, precision);
+}
+

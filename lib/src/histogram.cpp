@@ -16,9 +16,9 @@ namespace {
 constexpr std::uint32_t samples_per_item = 64;
 constexpr std::uint64_t samples_per_launch = 1u << 30;  // keeps every 32-bit bin count below 2^32
 
-std::string histogram_options(Method method, int bins_z, int bins_phi, Field direction)
+std::string histogram_options(const SampleParams& params, int bins_z, int bins_phi, Field direction)
 {
-    return detail::build_options(method, 0, {}) + " -DGGX_BINS_Z=" + std::to_string(bins_z) +
+    return detail::build_options(params, 0, {}) + " -DGGX_BINS_Z=" + std::to_string(bins_z) +
            " -DGGX_BINS_PHI=" + std::to_string(bins_phi) + " -DGGX_BIN_M=" + (direction == Field::m ? "1" : "0");
 }
 
@@ -50,7 +50,7 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
         check_bins(bins_z, bins_phi, direction, device_.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>());
         const std::size_t bins = std::size_t(bins_z) * bins_phi;
         Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0};
-        cl::Kernel k = kernel("ggx_histogram.cl", "ggx_histogram", histogram_options(unit.method, bins_z, bins_phi, direction));
+        cl::Kernel k = kernel("ggx_histogram.cl", "ggx_histogram", histogram_options(unit, bins_z, bins_phi, direction));
         cl::Buffer counts(context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
         std::vector<cl_uint> launch_counts(bins + 1);
         const std::size_t group = detail::group_size(device_);

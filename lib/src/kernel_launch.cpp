@@ -11,10 +11,13 @@ namespace ggxcl {
 
 namespace detail {
 
-std::string build_options(Method method, unsigned write_mask, const DeviceInputs& inputs)
+std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs)
 {
     auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
-    std::string options = "-DGGX_METHOD=" + std::to_string(static_cast<int>(method));
+    std::string options = "-DGGX_METHOD=" + std::to_string(static_cast<int>(params.method));
+    options += flag("GGX_FAST_SINCOS", params.precision != Precision::precise);
+    if (params.precision == Precision::relaxed)
+        options += " -cl-fast-relaxed-math";
     options += flag("GGX_WRITE_M", write_mask & 1u) + flag("GGX_WRITE_O", write_mask & 2u) +
                flag("GGX_WRITE_PDF_M", write_mask & 4u) + flag("GGX_WRITE_PDF_O", write_mask & 8u) +
                flag("GGX_WRITE_WEIGHT", write_mask & 16u);

@@ -13,8 +13,8 @@ namespace ggxcl::detail {
 
 constexpr std::size_t preferred_group_size = 256;
 
-// -D options selecting the method, the written fields and per-sample inputs.
-std::string build_options(Method method, unsigned write_mask, const DeviceInputs& inputs);
+// -D options selecting the method, the precision mode, the written fields and per-sample inputs.
+std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs);
 
 // Arguments first_arg.. of every kernel: the uniform parameters (8 floats),
 // then the per-sample input buffers (view, alpha, normal).

@@ -47,6 +47,24 @@ void check_isotropic(Method method, float alpha_x, float alpha_y)
 
 } // namespace
 
+std::string_view precision_name(Precision precision)
+{
+    switch (precision) {
+    case Precision::precise: return "precise";
+    case Precision::fast: return "fast";
+    case Precision::relaxed: return "relaxed";
+    }
+    return "unknown";
+}
+
+Precision parse_precision(std::string_view name)
+{
+    for (Precision p : {Precision::precise, Precision::fast, Precision::relaxed})
+        if (precision_name(p) == name)
+            return p;
+    throw InvalidArgument("precision", std::string(name), "one of precise, fast, relaxed");
+}
+
 Vec3 unit_vector(const Vec3& v)
 {
     double len = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);

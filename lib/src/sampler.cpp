@@ -83,7 +83,7 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
         throw InvalidArgument("outputs", "none", "at least one output buffer (m, o, pdf_m, pdf_o or weight)");
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
-        cl::Kernel k = kernel(bulk_file, "ggx_sample_bulk", build_options(unit.method, mask, inputs));
+        cl::Kernel k = kernel(bulk_file, "ggx_sample_bulk", build_options(unit, mask, inputs));
         k.setArg(0, cl_ulong(range.seed));
         k.setArg(1, cl_ulong(range.first));
         k.setArg(2, cl_uint(range.count));
@@ -104,7 +104,7 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
     check_launch_count(count, stride);
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
-        cl::Kernel k = kernel(bulk_file, "ggx_pdf_bulk", build_options(unit.method, 0, inputs));
+        cl::Kernel k = kernel(bulk_file, "ggx_pdf_bulk", build_options(unit, 0, inputs));
         k.setArg(0, cl_uint(count));
         k.setArg(1, cl_uint(stride ? stride : count));
         set_param_args(k, 2, unit, inputs);

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "ggxcl/method.hpp"
@@ -15,6 +16,15 @@ struct Vec3 {
     float x = 0.0f, y = 0.0f, z = 1.0f;
 };
 
+// How the kernels compute (a build option of the program):
+//   precise - built-in sin, cos and sqrt;
+//   fast    - a short polynomial sincos of the sampling angle (max error 6.4e-7), which vectorizes;
+//   relaxed - fast plus -cl-fast-relaxed-math.
+enum class Precision { precise = 0, fast = 1, relaxed = 2 };
+
+std::string_view precision_name(Precision precision);   // "precise", "fast", "relaxed"
+Precision parse_precision(std::string_view name);       // throws InvalidArgument naming the modes
+
 // Parameters shared by every sample of a batch.
 struct SampleParams {
     Method method = Method::caps;
@@ -22,6 +32,7 @@ struct SampleParams {
     Vec3 view{0.0f, 0.0f, 1.0f};           // unit, pointing away from the surface; tangent space
                                            // (world space for caps-iso); z < 0 is below the horizon
     Vec3 normal{0.0f, 0.0f, 1.0f};         // caps-iso only: the world-space surface normal
+    Precision precision = Precision::precise;
 };
 
 // Samples first .. first+count-1 of the stream `seed`.  Sample k depends on

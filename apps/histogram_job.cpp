@@ -43,6 +43,7 @@ nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, c
     doc["method"] = std::string(ggxcl::method_name(p.method));
     doc["expected_from_pdf_of"] = std::string(ggxcl::method_name(job.against));
     doc["alpha"] = {p.alpha_x, p.alpha_y};
+    doc["precision"] = std::string(ggxcl::precision_name(p.precision));
     doc["theta_degrees"] = job.theta_degrees;
     doc["phi_degrees"] = job.phi_degrees;
     doc["view"] = {p.view.x, p.view.y, p.view.z};

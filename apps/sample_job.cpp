@@ -41,6 +41,7 @@ nlohmann::json sidecar(const std::vector<ggxcl::Sampler*>& samplers, const Sampl
     nlohmann::json doc;
     doc["method"] = std::string(ggxcl::method_name(p.method));
     doc["alpha"] = {p.alpha_x, p.alpha_y};
+    doc["precision"] = std::string(ggxcl::precision_name(p.precision));
     doc["theta_degrees"] = job.theta_degrees;
     doc["phi_degrees"] = job.phi_degrees;
     doc["view"] = {p.view.x, p.view.y, p.view.z};

@@ -12,6 +12,9 @@ void SampleOptions::add_view_options(CLI::App& cmd)
         ->capture_default_str();
     cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360")->capture_default_str();
     cmd.add_option("--seed", seed, "seed of the Philox stream, 0..2^64-1")->capture_default_str();
+    cmd.add_option("--precision", precision, "precise (built-in sin/cos), fast (polynomial sincos) or relaxed "
+                                             "(fast and -cl-fast-relaxed-math)")
+        ->capture_default_str();
     cmd.add_option("--device", device, "device index or name part (see `ggx devices`); default GGXCL_DEVICE, else the first");
 }
 
@@ -44,6 +47,11 @@ ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m) const
     p.alpha_x = a[0];
     p.alpha_y = a[1];
     p.view = ggxcl::view_from_angles(parsed_theta(), parsed_phi());
+    try {
+        p.precision = ggxcl::parse_precision(precision);
+    } catch (const ggxcl::InvalidArgument&) {
+        throw UsageError("--precision", precision, "one of precise, fast, relaxed");
+    }
     if (!normal.empty()) {
         if (m != ggxcl::Method::caps_iso)
             throw UsageError("--normal", normal, "only with --method caps-iso (the others work in tangent space)");

@@ -18,8 +18,9 @@ struct SampleOptions {
     std::string normal;  // caps-iso only
     std::string seed = "0";
     std::string device;  // selector, else GGXCL_DEVICE, else the first device
+    std::string precision = "precise";
 
-    void add_view_options(CLI::App& cmd);  // --alpha, --theta, --phi, --seed, --device
+    void add_view_options(CLI::App& cmd);  // --alpha, --theta, --phi, --seed, --device, --precision
     void add_method_options(CLI::App& cmd); // --method, --normal
 
     // The parameters for `method`; throws UsageError naming the bad flag.

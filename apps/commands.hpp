@@ -15,5 +15,6 @@ Action add_sample_command(CLI::App& app);
 Action add_demo_command(CLI::App& app);
 Action add_merge_command(CLI::App& app);
 Action add_histogram_command(CLI::App& app);
+Action add_bench_command(CLI::App& app);
 
 } // namespace ggxapp

@@ -1,5 +1,6 @@
 // ggx_quadrature.hpp - deterministic integrals of the reference pdfs: normalization, accepted mass,
-// the bounded-cap mass, directional albedo, and per-bin probabilities for chi-square tests.
+// the bounded-cap mass, directional albedo, and per-bin probabilities of o and of m for chi-square
+// tests.
 #pragma once
 
 #include <vector>
@@ -20,5 +21,11 @@ double albedo(const Params&);
 // coordinates for caps_iso. rel_tol is the per-panel acceptance of the adaptive quadrature.
 std::vector<double> bin_probabilities(Method, const Params&, int nz, int nphi);
 std::vector<double> bin_probabilities(Method, const Params&, int nz, int nphi, double rel_tol);
+// Probability of the sampled microfacet normal m per bin (same binning as bin_probabilities; world
+// coordinates for caps_iso), from pdf_m: D(m) mz for ndf, the VNDF Dv(m; i) for heitz, heitz2017, caps
+// and caps_iso, and the bounded VNDF 2 D(m) max(0, i.m) / (k iz + t) restricted to the bounded cap for
+// bounded. Each sums to 1; m.n > 0, so for n = z only the upper half of the z bins is non-zero.
+std::vector<double> bin_probabilities_m(Method, const Params&, int nz, int nphi);
+std::vector<double> bin_probabilities_m(Method, const Params&, int nz, int nphi, double rel_tol);
 
 }  // namespace ggxref

@@ -32,6 +32,18 @@ std::vector<double> cuts_visible(const Local&, double phi);                // ih
 std::vector<double> cuts_bounded_cap(const Local&, double phi, double k);  // ohat.z = -k ih.z
 std::vector<double> cuts_horizon(const Local&, double phi);                // oz = 0, o = reflect(i, m)
 
+// density(ms, m) dw_m / (dth dphi) at ms = (sin th cos phi, sin th sin phi, cos th), c = cos phi,
+// s = sin phi: dw_m = ax ay / |(ax msx, ay msy, msz)|^3 sin th dth dphi.
+template <class Density>
+double standard_integrand(const Local& L, const Density& density, double th, double c, double s)
+{
+    const double st = std::sin(th);
+    const Vec3 ms{st * c, st * s, std::cos(th)};
+    const Vec3 w{L.ax * ms.x, L.ay * ms.y, ms.z};
+    const double len = length(w);
+    return density(ms, (1.0 / len) * w) * L.ax * L.ay / (len * len * len) * st;
+}
+
 // int over the hemisphere of ms of density(ms, m) dw_m; cuts(phi) lists the kinks of a meridian.
 template <class Density, class Cuts> double integrate_standard(const Local& L, const Density& density, const Cuts& cuts)
 {
@@ -39,13 +51,7 @@ template <class Density, class Cuts> double integrate_standard(const Local& L, c
     const Tolerance inner{1e-14, 1e-12}, outer{1e-13, 1e-11};
     auto meridian = [&](double phi) {
         const double c = std::cos(phi), s = std::sin(phi);
-        auto f = [&](double th) {
-            const double st = std::sin(th);
-            const Vec3 ms{st * c, st * s, std::cos(th)};
-            const Vec3 w{L.ax * ms.x, L.ay * ms.y, ms.z};
-            const double len = length(w);
-            return density(ms, (1.0 / len) * w) * L.ax * L.ay / (len * len * len) * st;
-        };
+        auto f = [&](double th) { return standard_integrand(L, density, th, c, s); };
         std::vector<double> b = cuts(phi);
         b.push_back(0.0);
         b.push_back(0.5 * pi);

@@ -14,7 +14,7 @@ namespace {
 
 struct HistogramCommand {
     SampleOptions options;
-    std::string count = "1e6", first = "0", bins_z = "32", bins_phi = "64", check, against, out;
+    std::string count = "1e6", first = "0", bins_z = "32", bins_phi = "64", check, against, out, of = "o";
     bool no_png = false;
 
     HistogramJob job() const
@@ -39,6 +39,9 @@ struct HistogramCommand {
         check_writable_folder("--out", out);
         job.prefix = out;
         job.png = !no_png;
+        if (of != "o" && of != "m")
+            throw UsageError("--of", of, "o (the reflected direction) or m (the microfacet normal)");
+        job.direction = of == "m" ? ggxcl::Field::m : ggxcl::Field::o;
         return job;
     }
 
@@ -61,13 +64,15 @@ struct HistogramCommand {
 Action add_histogram_command(CLI::App& app)
 {
     auto state = std::make_shared<HistogramCommand>();
-    CLI::App* cmd = app.add_subcommand("histogram", "Bin o on the device and chi-square test it against the pdf");
+    CLI::App* cmd = app.add_subcommand("histogram", "Bin o (or m) on the device and chi-square test it against the pdf");
     state->options.add_method_options(*cmd);
     state->options.add_view_options(*cmd);
     cmd->add_option("-n,--count", state->count, "number of samples: 1000, 1e9 or 2^30")->capture_default_str();
     cmd->add_option("--first", state->first, "index of the first sample")->capture_default_str();
     cmd->add_option("--bins-z", state->bins_z, "bins over cos theta in [-1, 1]")->capture_default_str();
     cmd->add_option("--bins-phi", state->bins_phi, "bins over phi in [0, 360)")->capture_default_str();
+    cmd->add_option("--of", state->of, "what to bin: o (reflected direction) or m (microfacet normal)")
+        ->capture_default_str();
     cmd->add_option("--against", state->against, "test against this method's pdf instead (a negative control)");
     cmd->add_option("--check", state->check, "exit with status 1 when p < ALPHA (0 < ALPHA < 1)");
     cmd->add_flag("--no-png", state->no_png, "skip the figure (no Python needed)");

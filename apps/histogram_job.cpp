@@ -48,7 +48,7 @@ nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, c
     doc["phi_degrees"] = job.phi_degrees;
     doc["view"] = {p.view.x, p.view.y, p.view.z};
     doc["normal"] = {p.normal.x, p.normal.y, p.normal.z};
-    doc["direction"] = "o";
+    doc["direction"] = std::string(ggxcl::field_name(job.direction));
     doc["seed"] = job.range.seed;
     doc["first"] = job.range.first;
     doc["count"] = job.range.count;
@@ -72,12 +72,15 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
 {
     // A small warm-up run builds and JIT-compiles the kernel, so the timing
     // below measures sampling and binning alone.
-    sampler.histogram(job.params, {job.range.seed, job.range.first, 1}, job.bins_z, job.bins_phi);
+    sampler.histogram(job.params, {job.range.seed, job.range.first, 1}, job.bins_z, job.bins_phi, job.direction);
     auto start = std::chrono::steady_clock::now();
-    ggxcl::Histogram counts = sampler.histogram(job.params, job.range, job.bins_z, job.bins_phi);
+    ggxcl::Histogram counts = sampler.histogram(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::vector<double> probabilities = ggxref::bin_probabilities(
-        reference_method(job.against), reference_params(job.params), job.bins_z, job.bins_phi);
+    const ggxref::Method method = reference_method(job.against);
+    const ggxref::Params params = reference_params(job.params);
+    std::vector<double> probabilities = job.direction == ggxcl::Field::m
+                                            ? ggxref::bin_probabilities_m(method, params, job.bins_z, job.bins_phi)
+                                            : ggxref::bin_probabilities(method, params, job.bins_z, job.bins_phi);
     ggxref::ChiSquare fit = ggxref::chi_square_gof_float(counts.counts, probabilities);
 
     std::vector<double> observed(counts.counts.begin(), counts.counts.end()), expected(probabilities.size());

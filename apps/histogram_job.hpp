@@ -1,5 +1,5 @@
 // histogram_job.hpp - one `ggx histogram` job: device-binned counts of o
-// over (phi, cos theta) in bins of equal solid angle, expected counts from
+// (or m) over (phi, cos theta) in bins of equal solid angle, expected counts from
 // the pdf integrated over each bin in double precision (the reference), a
 // chi-square test, and the files: PREFIX.observed.npy, PREFIX.expected.npy
 // (float64, bins_z x bins_phi), PREFIX.json and PREFIX.png.
@@ -17,6 +17,7 @@ struct HistogramJob {
     double theta_degrees = 0.0, phi_degrees = 0.0;
     ggxcl::SampleRange range;
     int bins_z = 32, bins_phi = 64;
+    ggxcl::Field direction = ggxcl::Field::o;  // o or m
     std::string prefix;
     bool png = true;
 };

@@ -60,6 +60,19 @@ TEST_CASE("histogram: every method passes its own chi-square test at the default
     }
 }
 
+TEST_CASE("histogram of m: every method passes against its pdf of m, and NDF normals fail the VNDF's")
+{
+    for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
+        CAPTURE(method);
+        fs::path prefix = scratch() / (std::string("m-") + method);
+        CHECK(ggx(std::string("histogram --of m --method ") + method + " --theta 50 -n 1e6 --check 0.001 --no-png --out " +
+                  prefix.string()) == 0);
+        CHECK(summary(prefix)["direction"] == "m");
+    }
+    CHECK(ggx("histogram --of m --method ndf --against caps -n 1e6 --check 0.01 --no-png --out " +
+              (scratch() / "m-wrong").string()) == 1);
+}
+
 TEST_CASE("histogram: a wrong pdf is rejected and --check turns it into exit status 1")
 {
     fs::path prefix = scratch() / "wrong";

@@ -148,6 +148,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"histogram --method caps --of x" + out, "--of"},
         {"histogram --method caps --precision turbo" + out, "--precision"},
         {"bench --repeats 2", "--repeats"},
+        {"devices --verbose", "--verbose"},
         {"histogram --method caps --out /no/such/folder/h", "--out"},
         {"demo -n 0 --out " + (scratch() / "d").string(), "-n"},
         {"demo --alpha -1 --out " + (scratch() / "d").string(), "--alpha"},

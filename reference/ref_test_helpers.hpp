@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ggx_reference.hpp"
+#include "ggx_stats.hpp"
 
 namespace reftest {
 
@@ -61,6 +62,51 @@ inline Rotation rotation_to(const Vec3& n)
     const Vec3 k = (1.0 / s) * axis;
     auto rot = [&](const Vec3& v) { return c * v + s * cross(k, v) + (1.0 - c) * dot(k, v) * k; };
     return {rot({1, 0, 0}), rot({0, 1, 0}), rot({0, 0, 1})};
+}
+
+// A configuration of the per-bin tests (bins of o and of m).
+struct BinCase {
+    Method method;
+    Params p;
+};
+
+// Isotropic alpha with the world normal n and a view at theta (degrees) in n's frame.
+inline Params rotated(double alpha, double theta, const Vec3& n)
+{
+    const Rotation R = rotation_to(n);
+    return {alpha, alpha, R.apply(direction(theta, 0.4)), n};
+}
+
+// The hard cases of the bin tests: small alpha, anisotropy, grazing and normal views (o = -i on a
+// bin edge at phi = 0), views below the horizon, rotated normals, and a bounded cap whose edge just
+// dips into a neighbouring latitude band (alpha (1.5, 0.7), 30 deg).
+inline std::vector<BinCase> hard_bin_cases()
+{
+    return {{Method::ndf, params(Method::ndf, 0.05, 0.05, 60.0, 0.0)},
+            {Method::ndf, params(Method::ndf, 0.5, 0.05, 30.0)},
+            {Method::heitz, params(Method::heitz, 0.05, 0.5, 85.0)},
+            {Method::heitz2017, params(Method::heitz2017, 0.3, 0.3, 0.0)},
+            {Method::caps, params(Method::caps, 0.05, 0.05, 45.0)},
+            {Method::caps, params(Method::caps, 0.8, 0.2, 150.0, 0.0)},
+            {Method::caps_iso, rotated(0.05, 70.0, normalize({0.3, -0.5, 0.8}))},
+            {Method::caps_iso, rotated(0.6, 120.0, normalize({-0.7, 0.1, -0.2}))},
+            {Method::bounded, params(Method::bounded, 0.05, 0.5, 30.0)},
+            {Method::bounded, params(Method::bounded, 1.0, 1.0, 0.0)},
+            {Method::bounded, params(Method::bounded, 1.5, 0.7, 30.0)},
+            {Method::bounded, params(Method::bounded, 0.9, 0.4, 80.0, 0.0)}};
+}
+
+// Histogram of `count` reference samples (their o, or their m when `normals`) of stream `seed`.
+inline std::vector<uint64_t> sample_histogram(Method method, const Params& p, size_t count, int nz, int nphi,
+                                              uint64_t seed, bool normals)
+{
+    std::vector<float> x(count), y(count), z(count);
+    for (size_t k = 0; k < count; ++k) {
+        const auto u = uniforms(seed, k);
+        const Vec3 d = normals ? sample_normal(method, p, u[0], u[1]) : sample(method, p, u[0], u[1]).o;
+        x[k] = float(d.x), y[k] = float(d.y), z[k] = float(d.z);
+    }
+    return histogram_directions(x.data(), y.data(), z.data(), count, nz, nphi);
 }
 
 }  // namespace reftest

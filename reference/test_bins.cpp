@@ -12,52 +12,10 @@
 
 using namespace reftest;
 
-namespace {
-
-struct BinCase {
-    Method method;
-    Params p;
-};
-
-Params rotated(double alpha, double theta, const Vec3& n)
-{
-    const Rotation R = rotation_to(n);
-    return {alpha, alpha, R.apply(direction(theta, 0.4)), n};
-}
-
-// The hard cases: small alpha, anisotropy, o = -i on a bin edge (phi = 0), views below the horizon.
-std::vector<BinCase> cases()
-{
-    return {{Method::ndf, params(Method::ndf, 0.05, 0.05, 60.0, 0.0)},
-            {Method::ndf, params(Method::ndf, 0.5, 0.05, 30.0)},
-            {Method::heitz, params(Method::heitz, 0.05, 0.5, 85.0)},
-            {Method::heitz2017, params(Method::heitz2017, 0.3, 0.3, 0.0)},
-            {Method::caps, params(Method::caps, 0.05, 0.05, 45.0)},
-            {Method::caps, params(Method::caps, 0.8, 0.2, 150.0, 0.0)},
-            {Method::caps_iso, rotated(0.05, 70.0, normalize({0.3, -0.5, 0.8}))},
-            {Method::caps_iso, rotated(0.6, 120.0, normalize({-0.7, 0.1, -0.2}))},
-            {Method::bounded, params(Method::bounded, 0.05, 0.5, 30.0)},
-            {Method::bounded, params(Method::bounded, 1.0, 1.0, 0.0)},
-            {Method::bounded, params(Method::bounded, 0.9, 0.4, 80.0, 0.0)}};
-}
-
-std::vector<uint64_t> reference_histogram(Method method, const Params& p, size_t count, int nz, int nphi)
-{
-    std::vector<float> x(count), y(count), z(count);
-    for (size_t k = 0; k < count; ++k) {
-        const auto u = uniforms(2024, k);
-        const Vec3 o = sample(method, p, u[0], u[1]).o;
-        x[k] = float(o.x), y[k] = float(o.y), z[k] = float(o.z);
-    }
-    return histogram_directions(x.data(), y.data(), z.data(), count, nz, nphi);
-}
-
-}  // namespace
-
 TEST_CASE("bins sum to integrate_pdf_o and take under 0.5 s at 32 x 64")
 {
     double worst = 0.0, slowest = 0.0;
-    for (const BinCase& c : cases()) {
+    for (const BinCase& c : hard_bin_cases()) {
         const auto start = std::chrono::steady_clock::now();
         const std::vector<double> bins = bin_probabilities(c.method, c.p, 32, 64);
         slowest = std::max(slowest, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -76,7 +34,7 @@ TEST_CASE("bins sum to integrate_pdf_o and take under 0.5 s at 32 x 64")
 TEST_CASE("bins are converged: default tolerance against a 1000 times tighter one")
 {
     double worst_rel = 0.0;
-    for (const BinCase& c : {cases()[0], cases()[6], cases()[8]}) {
+    for (const BinCase& c : {hard_bin_cases()[0], hard_bin_cases()[6], hard_bin_cases()[8]}) {
         const std::vector<double> coarse = bin_probabilities(c.method, c.p, 16, 32);
         const std::vector<double> fine = bin_probabilities(c.method, c.p, 16, 32, 1e-11);
         for (size_t k = 0; k < fine.size(); ++k) {
@@ -91,10 +49,10 @@ TEST_CASE("bins are converged: default tolerance against a 1000 times tighter on
 
 TEST_CASE("reference samples pass chi-square against their own bins")
 {
-    const std::vector<BinCase> all = cases();
+    const std::vector<BinCase> all = hard_bin_cases();
     const double level = sidak_level(1e-3, int(all.size()));
     for (const BinCase& c : all) {
-        const ChiSquare r = chi_square_gof(reference_histogram(c.method, c.p, 200000, 16, 32),
+        const ChiSquare r = chi_square_gof(sample_histogram(c.method, c.p, 200000, 16, 32, 2024, false),
                                            bin_probabilities(c.method, c.p, 16, 32));
         CAPTURE(std::string(method_name(c.method)));
         CAPTURE(r.statistic);
@@ -107,7 +65,7 @@ TEST_CASE("reference samples pass chi-square against their own bins")
 TEST_CASE("negative control: heitz2017 below the horizon fails against the VNDF bins")
 {
     const Params p = params(Method::caps, 0.5, 0.5, 120.0);
-    const ChiSquare r = chi_square_gof(reference_histogram(Method::heitz2017, p, 200000, 16, 32),
+    const ChiSquare r = chi_square_gof(sample_histogram(Method::heitz2017, p, 200000, 16, 32, 2024, false),
                                        bin_probabilities(Method::caps, p, 16, 32));
     CHECK(r.p_value < 1e-12);
 }
@@ -117,7 +75,7 @@ TEST_CASE("report: does heitz (2018 form) still give the VNDF below the horizon?
     for (double theta : {120.0, 150.0})
         for (auto [ax, ay] : std::vector<std::pair<double, double>>{{0.5, 0.5}, {0.3, 0.9}}) {
             const Params p = params(Method::caps, ax, ay, theta);
-            const ChiSquare r = chi_square_gof(reference_histogram(Method::heitz, p, 200000, 16, 32),
+            const ChiSquare r = chi_square_gof(sample_histogram(Method::heitz, p, 200000, 16, 32, 2024, false),
                                                bin_probabilities(Method::caps, p, 16, 32));
             MESSAGE("heitz vs caps pdf, alpha (" << ax << ", " << ay << "), theta " << theta << ": chi2 " << r.statistic
                                                  << ", dof " << r.dof << ", p " << r.p_value);

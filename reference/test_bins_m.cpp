@@ -18,46 +18,6 @@ using ggxref::detail::Local;
 
 namespace {
 
-struct BinCase {
-    Method method;
-    Params p;
-};
-
-Params rotated(double alpha, double theta, const Vec3& n)
-{
-    const Rotation R = rotation_to(n);
-    return {alpha, alpha, R.apply(direction(theta, 0.4)), n};
-}
-
-// Small alpha, anisotropy, grazing and normal views, views below the horizon, rotated normals, and
-// bounded caps whose edge just dips into a neighbouring latitude band (alpha (1.5, 0.7), 30 deg).
-std::vector<BinCase> cases()
-{
-    return {{Method::ndf, params(Method::ndf, 0.05, 0.05, 60.0, 0.0)},
-            {Method::ndf, params(Method::ndf, 0.5, 0.05, 30.0)},
-            {Method::heitz, params(Method::heitz, 0.05, 0.5, 85.0)},
-            {Method::heitz2017, params(Method::heitz2017, 0.3, 0.3, 0.0)},
-            {Method::caps, params(Method::caps, 0.05, 0.05, 45.0)},
-            {Method::caps, params(Method::caps, 0.8, 0.2, 150.0, 0.0)},
-            {Method::caps_iso, rotated(0.05, 70.0, normalize({0.3, -0.5, 0.8}))},
-            {Method::caps_iso, rotated(0.6, 120.0, normalize({-0.7, 0.1, -0.2}))},
-            {Method::bounded, params(Method::bounded, 0.05, 0.5, 30.0)},
-            {Method::bounded, params(Method::bounded, 1.0, 1.0, 0.0)},
-            {Method::bounded, params(Method::bounded, 1.5, 0.7, 30.0)},
-            {Method::bounded, params(Method::bounded, 0.9, 0.4, 80.0, 0.0)}};
-}
-
-std::vector<uint64_t> normal_histogram(Method method, const Params& p, size_t count, int nz, int nphi)
-{
-    std::vector<float> x(count), y(count), z(count);
-    for (size_t k = 0; k < count; ++k) {
-        const auto u = uniforms(2025, k);
-        const Vec3 m = sample_normal(method, p, u[0], u[1]);
-        x[k] = float(m.x), y[k] = float(m.y), z[k] = float(m.z);
-    }
-    return histogram_directions(x.data(), y.data(), z.data(), count, nz, nphi);
-}
-
 // The bin z in [z0, z1], phi in [phi0, phi1] of m, carried to the standard space (tangent space):
 // m = normalize(ax msx, ay msy, msz) keeps the quadrant of the azimuth with tan phi_s = (ax/ay)
 // tan phi, and on the meridian phi_s, tan theta = l tan theta_s, l = |(ax cos phi_s, ay sin phi_s)|.
@@ -106,7 +66,7 @@ double standard_bin(Method method, const Params& p, double z0, double z1, double
 TEST_CASE("m-bins sum to 1, vanish below the surface, and take under 0.5 s at 32 x 64")
 {
     double worst = 0.0, slowest = 0.0;
-    for (const BinCase& c : cases()) {
+    for (const BinCase& c : hard_bin_cases()) {
         const auto start = std::chrono::steady_clock::now();
         const std::vector<double> bins = bin_probabilities_m(c.method, c.p, 32, 64);
         slowest = std::max(slowest, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -129,7 +89,7 @@ TEST_CASE("m-bins agree with an integration over the standard space, per bin to 
     const int nz = 16, nphi = 32;
     double worst = 0.0;
     for (const int index : {0, 1, 2, 3, 5, 8, 9}) {
-        const BinCase c = cases()[index];
+        const BinCase c = hard_bin_cases()[index];
         const std::vector<double> bins = bin_probabilities_m(c.method, c.p, nz, nphi);
         CAPTURE(std::string(method_name(c.method)));
         for (int jz = nz / 2; jz < nz; ++jz)
@@ -148,7 +108,7 @@ TEST_CASE("m-bins are converged: default tolerance against a 10^4 times tighter 
 {
     double worst = 0.0;
     for (const int index : {6, 10}) {
-        const BinCase c = cases()[index];
+        const BinCase c = hard_bin_cases()[index];
         const std::vector<double> coarse = bin_probabilities_m(c.method, c.p, 16, 32);
         const std::vector<double> fine = bin_probabilities_m(c.method, c.p, 16, 32, 1e-12);
         for (size_t k = 0; k < fine.size(); ++k) {
@@ -161,11 +121,11 @@ TEST_CASE("m-bins are converged: default tolerance against a 10^4 times tighter 
 
 TEST_CASE("reference normals pass chi-square against their own m-bins")
 {
-    const std::vector<BinCase> all = cases();
+    const std::vector<BinCase> all = hard_bin_cases();
     const double level = sidak_level(1e-3, int(all.size()));
     for (const BinCase& c : all) {
         const ChiSquare r =
-            chi_square_gof(normal_histogram(c.method, c.p, 200000, 16, 32), bin_probabilities_m(c.method, c.p, 16, 32));
+            chi_square_gof(sample_histogram(c.method, c.p, 200000, 16, 32, 2025, true), bin_probabilities_m(c.method, c.p, 16, 32));
         CAPTURE(std::string(method_name(c.method)));
         CAPTURE(r.statistic);
         CAPTURE(r.dof);
@@ -178,10 +138,10 @@ TEST_CASE("negative controls: NDF-sampled normals fail against the VNDF m-bins, 
 {
     const Params p = params(Method::caps, 0.5, 0.5, 60.0);
     const ChiSquare ndf =
-        chi_square_gof(normal_histogram(Method::ndf, p, 200000, 16, 32), bin_probabilities_m(Method::caps, p, 16, 32));
+        chi_square_gof(sample_histogram(Method::ndf, p, 200000, 16, 32, 2025, true), bin_probabilities_m(Method::caps, p, 16, 32));
     CHECK(ndf.p_value < 1e-12);
     const Params q = params(Method::caps, 0.3, 0.3, 30.0);
-    const ChiSquare bounded = chi_square_gof(normal_histogram(Method::bounded, q, 200000, 16, 32),
+    const ChiSquare bounded = chi_square_gof(sample_histogram(Method::bounded, q, 200000, 16, 32, 2025, true),
                                              bin_probabilities_m(Method::caps, q, 16, 32));
     CHECK(bounded.p_value < 1e-12);
 }

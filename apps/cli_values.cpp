@@ -94,6 +94,25 @@ std::uint64_t parse_uint64(const std::string& flag, const std::string& text)
     }
 }
 
+std::uint64_t parse_whole(const std::string& flag, const std::string& text, std::uint64_t low, std::uint64_t high)
+{
+    const std::string allowed = "a whole number from " + std::to_string(low) + " to " + std::to_string(high);
+    if (text.empty() || text.size() > 19 || text.find_first_not_of("0123456789") != std::string::npos)
+        throw UsageError(flag, text, allowed);
+    std::uint64_t value = std::stoull(text);
+    if (value < low || value > high)
+        throw UsageError(flag, text, allowed);
+    return value;
+}
+
+double parse_level(const std::string& flag, const std::string& text)
+{
+    double value;
+    if (!to_double(text, value) || !(value > 0.0 && value < 1.0))
+        throw UsageError(flag, text, "a significance level between 0 and 1, e.g. 0.01");
+    return value;
+}
+
 void check_writable_folder(const std::string& flag, const std::string& path)
 {
     std::filesystem::path folder = std::filesystem::path(path).parent_path();
@@ -113,18 +132,6 @@ double parse_angle(const std::string& flag, const std::string& text, double low,
         allowed << "degrees from " << low << " to " << high;
         throw UsageError(flag, text, allowed.str());
     }
-    return value;
-}
-
-} // namespace ggxapp
-
-namespace ggxapp {
-
-double parse_level(const std::string& flag, const std::string& text)
-{
-    double value;
-    if (!to_double(text, value) || !(value > 0.0 && value < 1.0))
-        throw UsageError(flag, text, "a significance level between 0 and 1, e.g. 0.01");
     return value;
 }
 

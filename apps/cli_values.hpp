@@ -29,6 +29,7 @@ std::array<float, 2> parse_alpha(const std::string& flag, const std::string& tex
 std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text);
 std::uint64_t parse_count(const std::string& flag, const std::string& text);
 std::uint64_t parse_uint64(const std::string& flag, const std::string& text);
+std::uint64_t parse_whole(const std::string& flag, const std::string& text, std::uint64_t low, std::uint64_t high);
 // Throws UsageError unless a file can be created beside `path`.
 void check_writable_folder(const std::string& flag, const std::string& path);
 

@@ -47,9 +47,7 @@ void run_bench(const BenchCommand& bench)
     std::uint64_t count = parse_count("-n", bench.count);
     if (count > (1u << 30))
         throw UsageError("-n", bench.count, "at most 2^30 samples per timed run");
-    std::uint64_t repeats = parse_count("--repeats", bench.repeats);
-    if (repeats < 5 || repeats > 101)
-        throw UsageError("--repeats", bench.repeats, "5 to 101 timed runs");
+    std::uint64_t repeats = parse_whole("--repeats", bench.repeats, 5, 101);
     if (!bench.csv.empty())
         check_writable_folder("--csv", bench.csv);
     ggxcl::Sampler sampler(bench.options.device);
@@ -63,10 +61,8 @@ void run_bench(const BenchCommand& bench)
               << "|---|---|---|---|---|---|\n";
     for (const char* mode : {"precise", "fast", "relaxed"})
         for (ggxcl::Method method : ggxcl::all_methods) {
-            SampleOptions options = bench.options;
+            SampleOptions options = bench.options.for_method(method);
             options.precision = mode;
-            if (method == ggxcl::Method::caps_iso)
-                options.alpha = options.alpha.substr(0, options.alpha.find(','));
             Timing t = time_variant(sampler, options.params_for(method), std::uint32_t(count), int(repeats), out);
             std::cout << "| " << ggxcl::method_name(method) << " | " << mode << " | " << t.median << " | " << t.low
                       << " | " << t.high << " | " << 1.0 / t.median << " |\n";

@@ -29,14 +29,6 @@ struct MethodResult {
     HistogramResult histogram;
 };
 
-SampleOptions options_for(const SampleOptions& given, ggxcl::Method method)
-{
-    SampleOptions options = given;
-    if (method == ggxcl::Method::caps_iso)  // isotropic: the first alpha
-        options.alpha = options.alpha.substr(0, options.alpha.find(','));
-    return options;
-}
-
 SampleJob cloud_job(const SampleOptions& options, ggxcl::Method method, std::uint64_t count, const std::string& out)
 {
     SampleJob job;
@@ -78,14 +70,14 @@ void run_demo(const DemoCommand& demo)
 {
     std::uint64_t count = parse_count("-n", demo.count), histogram_count = parse_count("--histogram-n", demo.histogram_count);
     for (ggxcl::Method method : ggxcl::all_methods)  // every option is checked before anything is written
-        options_for(demo.options, method).params_for(method);
+        demo.options.for_method(method).params_for(method);
     std::filesystem::create_directories(demo.out);
     check_writable_folder("--out", demo.out + "/index.md");
     ggxcl::Sampler sampler(demo.options.device);
     std::cout << "device: " << sampler.device_name() << "\n";
     std::vector<MethodResult> results;
     for (ggxcl::Method method : ggxcl::all_methods) {
-        SampleOptions options = options_for(demo.options, method);
+        SampleOptions options = demo.options.for_method(method);
         std::string base = demo.out + "/" + std::string(ggxcl::method_name(method));
         run_sample_job(sampler, cloud_job(options, method, count, base + ".npy"));
         run_sample_job(sampler, cloud_job(options, method, count, base + ".ply"));

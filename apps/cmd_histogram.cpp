@@ -44,19 +44,6 @@ struct HistogramCommand {
         job.direction = of == "m" ? ggxcl::Field::m : ggxcl::Field::o;
         return job;
     }
-
-    static std::uint64_t parse_whole(const std::string& flag, const std::string& text, std::uint64_t low,
-                                     std::uint64_t high)
-    {
-        std::uint64_t value = 0;
-        try {
-            value = parse_uint64(flag, text);
-        } catch (const UsageError&) {
-        }
-        if (value < low || value > high)
-            throw UsageError(flag, text, "a whole number from " + std::to_string(low) + " to " + std::to_string(high));
-        return value;
-    }
 };
 
 } // namespace

@@ -10,6 +10,7 @@
 #include "ggx_stats.hpp"
 #include "npy_file.hpp"
 #include "plot.hpp"
+#include "sample_job.hpp"
 
 namespace ggxapp {
 
@@ -38,20 +39,9 @@ std::string file_name(const std::string& path)
 nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, const ggxref::ChiSquare& fit,
                        double seconds)
 {
-    const ggxcl::SampleParams& p = job.params;
-    nlohmann::json doc;
-    doc["method"] = std::string(ggxcl::method_name(p.method));
+    nlohmann::json doc = describe_sampling(job.params, job.theta_degrees, job.phi_degrees, job.range);
     doc["expected_from_pdf_of"] = std::string(ggxcl::method_name(job.against));
-    doc["alpha"] = {p.alpha_x, p.alpha_y};
-    doc["precision"] = std::string(ggxcl::precision_name(p.precision));
-    doc["theta_degrees"] = job.theta_degrees;
-    doc["phi_degrees"] = job.phi_degrees;
-    doc["view"] = {p.view.x, p.view.y, p.view.z};
-    doc["normal"] = {p.normal.x, p.normal.y, p.normal.z};
     doc["direction"] = std::string(ggxcl::field_name(job.direction));
-    doc["seed"] = job.range.seed;
-    doc["first"] = job.range.first;
-    doc["count"] = job.range.count;
     doc["bins"] = {{"cos_theta", job.bins_z}, {"phi", job.bins_phi}};
     doc["chi_square"] = fit.statistic;
     doc["dof"] = fit.dof;
@@ -62,7 +52,6 @@ nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, c
     doc["expected"] = file_name(job.prefix) + ".expected.npy";
     doc["device"] = sampler.device_name();
     doc["device_seconds"] = seconds;
-    doc["ggxcl_version"] = ggxcl::version();
     return doc;
 }
 

@@ -37,32 +37,38 @@ std::string device_names(const std::vector<ggxcl::Sampler*>& samplers)
 
 nlohmann::json sidecar(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
 {
-    const ggxcl::SampleParams& p = job.params;
-    nlohmann::json doc;
-    doc["method"] = std::string(ggxcl::method_name(p.method));
-    doc["alpha"] = {p.alpha_x, p.alpha_y};
-    doc["precision"] = std::string(ggxcl::precision_name(p.precision));
-    doc["theta_degrees"] = job.theta_degrees;
-    doc["phi_degrees"] = job.phi_degrees;
-    doc["view"] = {p.view.x, p.view.y, p.view.z};
-    doc["view_space"] = p.method == ggxcl::Method::caps_iso ? "world" : "tangent";
-    if (p.method == ggxcl::Method::caps_iso)
-        doc["normal"] = {p.normal.x, p.normal.y, p.normal.z};
-    doc["seed"] = job.range.seed;
-    doc["first"] = job.range.first;
-    doc["count"] = job.range.count;
+    nlohmann::json doc = describe_sampling(job.params, job.theta_degrees, job.phi_degrees, job.range);
     doc["columns"] = column_names(job.fields);
     doc["format"] = job.format == Format::npy ? "npy float32" : job.format == Format::csv ? "csv" : "ply binary";
     if (job.format == Format::ply)
         doc["ply"] = "vertices are the first three columns, colored by log10 of the fourth over [-2, 3]";
     doc["shape"] = {job.range.count, column_names(job.fields).size()};
     doc["device"] = device_names(samplers);
-    doc["generator"] = "Philox4x32-10, key (seed lo, seed hi), counter (index lo, index hi, 0, 0)";
-    doc["ggxcl_version"] = ggxcl::version();
     return doc;
 }
 
 } // namespace
+
+nlohmann::json describe_sampling(const ggxcl::SampleParams& p, double theta_degrees, double phi_degrees,
+                                 const ggxcl::SampleRange& range)
+{
+    nlohmann::json doc;
+    doc["method"] = std::string(ggxcl::method_name(p.method));
+    doc["alpha"] = {p.alpha_x, p.alpha_y};
+    doc["precision"] = std::string(ggxcl::precision_name(p.precision));
+    doc["theta_degrees"] = theta_degrees;
+    doc["phi_degrees"] = phi_degrees;
+    doc["view"] = {p.view.x, p.view.y, p.view.z};
+    doc["view_space"] = p.method == ggxcl::Method::caps_iso ? "world" : "tangent";
+    if (p.method == ggxcl::Method::caps_iso)
+        doc["normal"] = {p.normal.x, p.normal.y, p.normal.z};
+    doc["seed"] = range.seed;
+    doc["first"] = range.first;
+    doc["count"] = range.count;
+    doc["generator"] = "Philox4x32-10, key (seed lo, seed hi), counter (index lo, index hi, 0, 0)";
+    doc["ggxcl_version"] = ggxcl::version();
+    return doc;
+}
 
 std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields)
 {

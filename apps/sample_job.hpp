@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <ggxcl/ggxcl.hpp>
+#include <nlohmann/json.hpp>
 
 #include "sample_writer.hpp"
 
@@ -20,6 +21,12 @@ struct SampleJob {
     std::string out;                   // output path
     Format format = Format::npy;
 };
+
+// What every sidecar and summary records of how samples were drawn: method,
+// roughness, precision, view (angles and vector), normal for caps-iso,
+// seed and range, generator and library version.
+nlohmann::json describe_sampling(const ggxcl::SampleParams& params, double theta_degrees, double phi_degrees,
+                                 const ggxcl::SampleRange& range);
 
 // Column names in file order, e.g. m_x, m_y, m_z, pdf_o.
 std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields);

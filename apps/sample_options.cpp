@@ -37,6 +37,14 @@ std::uint64_t SampleOptions::parsed_seed() const { return parse_uint64("--seed",
 double SampleOptions::parsed_theta() const { return parse_angle("--theta", theta, 0.0, 180.0); }
 double SampleOptions::parsed_phi() const { return parse_angle("--phi", phi, -360.0, 360.0); }
 
+SampleOptions SampleOptions::for_method(ggxcl::Method method) const
+{
+    SampleOptions options = *this;
+    if (method == ggxcl::Method::caps_iso)
+        options.alpha = alpha.substr(0, alpha.find(','));
+    return options;
+}
+
 ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m) const
 {
     ggxcl::SampleParams p;

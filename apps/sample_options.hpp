@@ -23,6 +23,10 @@ struct SampleOptions {
     void add_view_options(CLI::App& cmd);  // --alpha, --theta, --phi, --seed, --device, --precision
     void add_method_options(CLI::App& cmd); // --method, --normal
 
+    // These options for a command that runs every method: caps-iso, which is
+    // isotropic, takes the first value of an AX,AY roughness.
+    SampleOptions for_method(ggxcl::Method method) const;
+
     // The parameters for `method`; throws UsageError naming the bad flag.
     ggxcl::SampleParams params_for(ggxcl::Method method) const;
     ggxcl::Method parsed_method() const;

@@ -14,44 +14,25 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_runner.hpp"
 #include "npy_file.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-    int status;
-    std::string err;
-};
+using ggxtest::read_all;
+using ggxtest::Run;
 
 fs::path scratch()
 {
-    static fs::path dir = [] {
-        fs::path d = fs::temp_directory_path() / ("ggx-cli-test-" + std::to_string(::getpid()));
-        fs::create_directories(d);
-        return d;
-    }();
+    static fs::path dir = ggxtest::scratch_dir("cli");
     return dir;
 }
 
 Run ggx(const std::string& args)
 {
-    fs::path err = scratch() / "stderr.txt";
-    std::string command = std::string(GGX_BINARY) + " " + args + " >/dev/null 2>" + err.string();
-    int raw = std::system(command.c_str());
-    std::ifstream in(err);
-    std::stringstream text;
-    text << in.rdbuf();
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
-}
-
-std::string read_all(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return ggxtest::run_ggx(args, scratch() / "stderr.txt");
 }
 
 bool only_file_is(const fs::path& dir, std::size_t expected)

@@ -13,25 +13,21 @@
 #include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
 
+#include "cli_runner.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 fs::path scratch()
 {
-    static fs::path dir = [] {
-        fs::path d = fs::temp_directory_path() / ("ggx-hist-test-" + std::to_string(::getpid()));
-        fs::create_directories(d);
-        return d;
-    }();
+    static fs::path dir = ggxtest::scratch_dir("hist");
     return dir;
 }
 
 int ggx(const std::string& args)
 {
-    std::string command = std::string(GGX_BINARY) + " " + args + " >/dev/null 2>&1";
-    int raw = std::system(command.c_str());
-    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return ggxtest::run_ggx(args, scratch() / "stderr.txt").status;
 }
 
 nlohmann::json summary(const fs::path& prefix)

@@ -1,0 +1,47 @@
+// cli_runner.hpp - what the tests of the `ggx` tool share: a scratch
+// folder per test process, running the tool (GGX_BINARY, set by CMake) with
+// its exit status and stderr, and reading a file back whole.
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace ggxtest {
+
+namespace fs = std::filesystem;
+
+// A folder under the system's temporary one, unique to this process and `tag`.
+inline fs::path scratch_dir(const std::string& tag)
+{
+    fs::path dir = fs::temp_directory_path() / ("ggx-" + tag + "-test-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+inline std::string read_all(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+struct Run {
+    int status;       // exit status, -1 if the tool did not exit normally
+    std::string err;  // what it printed on stderr
+};
+
+// Runs `ggx ARGS` with stdout discarded; stderr goes through `err_file`.
+inline Run run_ggx(const std::string& args, const fs::path& err_file)
+{
+    std::string command = std::string(GGX_BINARY) + " " + args + " >/dev/null 2>" + err_file.string();
+    int raw = std::system(command.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_all(err_file)};
+}
+
+} // namespace ggxtest

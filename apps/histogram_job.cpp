@@ -26,9 +26,13 @@ ggxref::Params reference_params(const ggxcl::SampleParams& p)
     return r;
 }
 
+// The reference's method of the same name (the two enums are independent).
 ggxref::Method reference_method(ggxcl::Method m)
 {
-    return static_cast<ggxref::Method>(static_cast<int>(m));  // same order in both enums
+    for (ggxref::Method r : ggxref::all_methods)
+        if (ggxcl::method_name(m) == ggxref::method_name(r))
+            return r;
+    throw std::logic_error("no reference method named " + std::string(ggxcl::method_name(m)));
 }
 
 std::string file_name(const std::string& path)

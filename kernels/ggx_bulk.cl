@@ -5,14 +5,14 @@
 //   GGX_METHOD=<id>                  which sampler (see ggx_samplers.h)
 //   GGX_WRITE_{M,O,PDF_M,PDF_O,WEIGHT}=0|1   fields to compute and store
 //   GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1   parameters read per sample from buffers
+//   GGX_ISOTROPIC=0|1, GGX_BELOW_HORIZON=0|1, GGX_WORLD_SPACE=0|1   what the request needs
 // Arrays are planar: component c of sample j is at [c * stride + j].
 // One sample per work-item; work-items past `count` recompute the last
 // sample (same value, same address), so no branch breaks vectorization.
-#include "ggx_bulk_params.h"
-
 #ifndef GGX_METHOD
 #error "build with -DGGX_METHOD=<method id>"
 #endif
+#include "ggx_bulk_params.h"
 #ifndef GGX_WRITE_M
 #define GGX_WRITE_M 0
 #endif
@@ -36,9 +36,7 @@ __kernel void ggx_sample_bulk(ulong seed, ulong first, uint count, uint stride, 
 {
     uint j = min((uint)get_global_id(0), count - 1u);
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
-    float u1, u2;
-    ggx_uniforms(seed, first + j, &u1, &u2);
-    ggx_sample s = ggx_sample_method(GGX_METHOD, p.normal, p.view, p.ax, p.ay, u1, u2);
+    ggx_sample s = ggx_bulk_sample(seed, first + j, p);
 #if GGX_WRITE_M
     ggx_store3(m_out, j, stride, s.m);
 #endif
@@ -63,5 +61,5 @@ __kernel void ggx_pdf_bulk(uint count, uint stride, GGX_PARAM_ARGS, __global con
     uint j = min((uint)get_global_id(0), count - 1u);
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
     ggx_vec3 o = ggx_load3(o_in, j, stride);
-    pdf_out[j] = ggx_pdf_method(GGX_METHOD, p.normal, p.view, o, p.ax, p.ay);
+    pdf_out[j] = ggx_bulk_pdf(p, o);
 }

@@ -1,10 +1,12 @@
 // ggx_bulk_params.h - what the bulk kernels share: planar loads and stores,
+// the sample of an index in tangent or world space (GGX_WORLD_SPACE=0|1),
 // and the view, roughness and normal of sample j, uniform or per sample
-// (build options GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1).
+// (build options GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1).  GGX_ISOTROPIC=1
+// promises alpha_x == alpha_y: one roughness is read and used for both.
 #ifndef GGX_BULK_PARAMS_H
 #define GGX_BULK_PARAMS_H
 
-#include "ggx_samplers.h"
+#include "ggx_world.h"
 
 #ifndef GGX_PER_SAMPLE_VIEW
 #define GGX_PER_SAMPLE_VIEW 0
@@ -14,6 +16,12 @@
 #endif
 #ifndef GGX_PER_SAMPLE_NORMAL
 #define GGX_PER_SAMPLE_NORMAL 0
+#endif
+#ifndef GGX_ISOTROPIC
+#define GGX_ISOTROPIC 0
+#endif
+#ifndef GGX_WORLD_SPACE
+#define GGX_WORLD_SPACE 0
 #endif
 
 GGX_INLINE ggx_vec3 ggx_load3(__global const float* p, uint j, uint stride)
@@ -52,10 +60,14 @@ GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
 #endif
 #if GGX_PER_SAMPLE_ALPHA
     p.ax = alpha_in[j];
+#if GGX_ISOTROPIC
+    p.ay = p.ax;
+#else
     p.ay = alpha_in[j + stride];
+#endif
 #else
     p.ax = alpha_x;
-    p.ay = alpha_y;
+    p.ay = GGX_ISOTROPIC ? alpha_x : alpha_y;
 #endif
 #if GGX_PER_SAMPLE_NORMAL
     p.normal = ggx_load3(normal_in, j, stride);
@@ -63,6 +75,29 @@ GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
     p.normal = ggx_vec3_make(normal_x, normal_y, normal_z);
 #endif
     return p;
+}
+
+// Sample `index` of stream `seed` for the method GGX_METHOD with parameters p:
+// world-space view, normal and results with GGX_WORLD_SPACE=1, else tangent space.
+GGX_INLINE ggx_sample ggx_bulk_sample(ulong seed, ulong index, ggx_params p)
+{
+    float u1, u2;
+    ggx_uniforms(seed, index, &u1, &u2);
+#if GGX_WORLD_SPACE
+    return ggx_sample_world(GGX_METHOD, p.normal, p.view, p.ax, u1, u2);
+#else
+    return ggx_sample_method(GGX_METHOD, p.normal, p.view, p.ax, p.ay, u1, u2);
+#endif
+}
+
+// The pdf of direction o for GGX_METHOD, in the space of ggx_bulk_sample.
+GGX_INLINE float ggx_bulk_pdf(ggx_params p, ggx_vec3 o)
+{
+#if GGX_WORLD_SPACE
+    return ggx_pdf_world(GGX_METHOD, p.normal, p.view, o, p.ax);
+#else
+    return ggx_pdf_method(GGX_METHOD, p.normal, p.view, o, p.ax, p.ay);
+#endif
 }
 
 #endif

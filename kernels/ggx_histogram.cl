@@ -43,9 +43,7 @@ __kernel void ggx_histogram(ulong seed, ulong first, uint count, uint per_item, 
         uint j = base + k * size + lid;
         if (j < count) {
             ggx_params p = ggx_load_params(j, count, GGX_PARAM_VALUES);
-            float u1, u2;
-            ggx_uniforms(seed, first + j, &u1, &u2);
-            ggx_sample s = ggx_sample_method(GGX_METHOD, p.normal, p.view, p.ax, p.ay, u1, u2);
+            ggx_sample s = ggx_bulk_sample(seed, first + j, p);
             atomic_inc(&local_counts[ggx_bin_of(GGX_BIN_M ? s.m : s.o)]);
         }
     }

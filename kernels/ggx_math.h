@@ -9,6 +9,12 @@
 
 #include "ggx_common.h"
 
+// Build option GGX_BELOW_HORIZON: 1 (default) supports views below the
+// horizon (iz < 0); 0 promises iz >= 0 and drops the forms that need it.
+#ifndef GGX_BELOW_HORIZON
+#define GGX_BELOW_HORIZON 1
+#endif
+
 GGX_INLINE float ggx_t(ggx_vec3 w, float ax, float ay)
 {
     ggx_vec3 s = ggx_stretch(w, ax, ay);
@@ -64,10 +70,15 @@ GGX_INLINE float ggx_G2_separable(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 
 // 1 / (iz + t(i)) without the cancellation of iz + t for iz < 0:
 // (t - iz) / (ax^2 ix^2 + ay^2 iy^2) (Eto & Tokuyoshi 2023 supplement, sec. 3).
+// Built with GGX_BELOW_HORIZON=0 (the caller promises iz >= 0) only the plain form is computed.
 GGX_INLINE float ggx_inv_iz_plus_t(float iz, float t, float ax, float ay, ggx_vec3 i)
 {
+#if GGX_BELOW_HORIZON
     float sx = ax * i.x, sy = ay * i.y;
     return iz >= 0.0f ? 1.0f / (iz + t) : (t - iz) / (sx * sx + sy * sy);
+#else
+    return 1.0f / (iz + t);
+#endif
 }
 
 // Projected area of the microsurface seen from i: sigma(i) = (iz + t(i))/2.

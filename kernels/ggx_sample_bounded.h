@@ -15,13 +15,21 @@ GGX_INLINE float ggx_bounded_k(ggx_vec3 i, float ax, float ay)
     float s = 1.0f + sqrt(i.x * i.x + i.y * i.y);
     float s2 = s * s;
     float k = (1.0f - a2) * s2 / (s2 + a2 * i.z * i.z);
+#if GGX_BELOW_HORIZON
     return i.z > 0.0f ? k : 1.0f;
+#else
+    return k;  // iz = 0 gives k iz = 0 either way
+#endif
 }
 
 // 1/(k iz + t(i)): plain for iz > 0 (k >= 0, t > 0), cancellation-free otherwise.
 GGX_INLINE float ggx_bounded_inv_sum(ggx_vec3 i, float k, float ti, float ax, float ay)
 {
+#if GGX_BELOW_HORIZON
     return i.z > 0.0f ? 1.0f / (k * i.z + ti) : ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
+#else
+    return 1.0f / (k * i.z + ti);
+#endif
 }
 
 GGX_INLINE ggx_sample ggx_sample_bounded(ggx_vec3 i, float ax, float ay, float u1, float u2)

@@ -33,7 +33,11 @@ GGX_INLINE float ggx_t_about(ggx_vec3 i, ggx_vec3 n, float alpha)
 // 1/(iz + t) about n, cancellation-free for iz < 0 (as ggx_inv_iz_plus_t).
 GGX_INLINE float ggx_inv_iz_plus_t_about(ggx_vec3 i, ggx_vec3 n, float alpha, float iz, float ti)
 {
+#if GGX_BELOW_HORIZON
     return iz >= 0.0f ? 1.0f / (iz + ti) : (ti - iz) / (alpha * alpha * ggx_tangential2(i, n, iz));
+#else
+    return 1.0f / (iz + ti);
+#endif
 }
 
 GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)

@@ -48,8 +48,11 @@ std::vector<float> planar_alphas(const std::vector<std::array<float, 2>>& values
 struct ChunkInputs {
     DeviceInputs buffers;
 
-    ChunkInputs(const cl::Context& context, const PerSampleInputs& in, std::uint64_t capacity)
+    ChunkInputs(const cl::Context& context, const PerSampleInputs& in, const SampleParams& params,
+                std::uint64_t capacity)
     {
+        buffers.views_above_horizon = all_views_above_horizon(in, params);
+        buffers.isotropic = all_isotropic(in, params);
         if (!in.views.empty()) buffers.view = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(3 * capacity));
         if (!in.alphas.empty()) buffers.alpha = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(2 * capacity));
         if (!in.normals.empty()) buffers.normal = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(3 * capacity));
@@ -95,7 +98,7 @@ void Sampler::generate_chunks(const SampleParams& params, const SampleRange& ran
         for (Field f : all_fields)
             if (fields.has(f))
                 *buffers[int(f)] = cl::Buffer(context_, CL_MEM_WRITE_ONLY, bytes(field_columns(f) * capacity));
-        ChunkInputs inputs(context_, per_sample, capacity);
+        ChunkInputs inputs(context_, per_sample, params, capacity);
         SampleSet chunk;
         std::vector<float>* hosts[] = {&chunk.m, &chunk.o, &chunk.pdf_m, &chunk.pdf_o, &chunk.weight};
         for (std::uint64_t start = 0; start < range.count; start += capacity) {
@@ -149,7 +152,7 @@ std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Ve
     translate_cl_errors([&] {
         cl::Buffer dirs(context_, CL_MEM_READ_ONLY, bytes(3 * capacity));
         cl::Buffer pdfs(context_, CL_MEM_WRITE_ONLY, bytes(capacity));
-        ChunkInputs inputs(context_, per_sample, capacity);
+        ChunkInputs inputs(context_, per_sample, params, capacity);
         for (std::uint64_t start = 0; start < count; start += capacity) {
             std::uint64_t n = std::min(capacity, count - start);
             inputs.upload(queue_, per_sample, start, n, capacity);

@@ -24,7 +24,25 @@ std::string build_options(const SampleParams& params, unsigned write_mask, const
     options += flag("GGX_PER_SAMPLE_VIEW", inputs.view() != nullptr) +
                flag("GGX_PER_SAMPLE_ALPHA", inputs.alpha() != nullptr) +
                flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr);
+    options += flag("GGX_ISOTROPIC", is_isotropic(params, inputs)) +
+               flag("GGX_BELOW_HORIZON", !is_above_horizon(params, inputs)) +
+               flag("GGX_WORLD_SPACE", params.world_space);
     return options;
+}
+
+bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs)
+{
+    if (params.method == Method::caps_iso || params.world_space)
+        return true;  // validated isotropic
+    return inputs.alpha() != nullptr ? inputs.isotropic : params.alpha_x == params.alpha_y;
+}
+
+bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs)
+{
+    bool against_normal = uses_normal(params);
+    if (inputs.view() != nullptr || (against_normal && inputs.normal() != nullptr))
+        return inputs.views_above_horizon;
+    return view_above_horizon(params.view, params.normal, against_normal);
 }
 
 void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in)

@@ -13,8 +13,11 @@ namespace ggxcl::detail {
 
 constexpr std::size_t preferred_group_size = 256;
 
-// -D options selecting the method, the precision mode, the written fields and per-sample inputs.
+// -D options selecting the method, the precision mode, the written fields, per-sample inputs
+// and what the request needs (isotropic, views below the horizon, world space).
 std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs);
+bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs);
+bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
 
 // Arguments first_arg.. of every kernel: the uniform parameters (8 floats),
 // then the per-sample input buffers (view, alpha, normal).

@@ -2,6 +2,7 @@
 // parameter, the bad value and what is allowed.
 #include "ggxcl/params.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -38,11 +39,16 @@ void check_direction(const char* name, const Vec3& v)
         throw InvalidArgument(name, text(v), "a finite vector of non-zero length");
 }
 
-void check_isotropic(Method method, float alpha_x, float alpha_y)
+void check_isotropic(const SampleParams& params, float alpha_x, float alpha_y)
 {
-    if (method == Method::caps_iso && alpha_x != alpha_y)
+    if (alpha_x == alpha_y)
+        return;
+    if (params.method == Method::caps_iso)
         throw InvalidArgument("alpha", text(alpha_x) + "," + text(alpha_y),
                               "one value (alpha_x == alpha_y) for caps-iso, which is isotropic");
+    if (params.world_space)
+        throw InvalidArgument("alpha", text(alpha_x) + "," + text(alpha_y),
+                              "one value (alpha_x == alpha_y) in world space, where the normal fixes no tangent");
 }
 
 } // namespace
@@ -78,11 +84,47 @@ Vec3 view_from_angles(double theta_degrees, double phi_degrees)
     return {float(std::sin(t) * std::cos(p)), float(std::sin(t) * std::sin(p)), float(std::cos(t))};
 }
 
+bool uses_normal(const SampleParams& params)
+{
+    return params.method == Method::caps_iso || params.world_space;
+}
+
+bool view_above_horizon(const Vec3& view, const Vec3& normal, bool against_normal)
+{
+    if (!against_normal)
+        return view.z >= 0.0f;  // normalizing keeps the sign of z
+    Vec3 i = unit_vector(view), n = unit_vector(normal);
+    return double(i.x) * n.x + double(i.y) * n.y + double(i.z) * n.z >= 1e-6;  // margin for float rounding
+}
+
+bool all_views_above_horizon(const PerSampleInputs& inputs, const SampleParams& params)
+{
+    bool against_normal = uses_normal(params);
+    std::size_t count = std::max(inputs.views.size(), against_normal ? inputs.normals.size() : 0);
+    for (std::size_t j = 0; j < std::max<std::size_t>(count, 1); ++j) {
+        Vec3 view = inputs.views.empty() ? params.view : inputs.views[j];
+        Vec3 normal = inputs.normals.empty() ? params.normal : inputs.normals[j];
+        if (!view_above_horizon(view, normal, against_normal))
+            return false;
+    }
+    return true;
+}
+
+bool all_isotropic(const PerSampleInputs& inputs, const SampleParams& params)
+{
+    if (inputs.alphas.empty())
+        return params.alpha_x == params.alpha_y;
+    for (const auto& a : inputs.alphas)
+        if (a[0] != a[1])
+            return false;
+    return true;
+}
+
 void validate(const SampleParams& params)
 {
     check_alpha("alpha_x", params.alpha_x);
     check_alpha("alpha_y", params.alpha_y);
-    check_isotropic(params.method, params.alpha_x, params.alpha_y);
+    check_isotropic(params, params.alpha_x, params.alpha_y);
     check_direction("view", params.view);
     check_direction("normal", params.normal);
 }
@@ -123,7 +165,7 @@ void validate(const PerSampleInputs& inputs, const SampleParams& params, std::ui
     for (const auto& a : inputs.alphas) {
         check_alpha("alpha_x", a[0]);
         check_alpha("alpha_y", a[1]);
-        check_isotropic(params.method, a[0], a[1]);
+        check_isotropic(params, a[0], a[1]);
     }
 }
 

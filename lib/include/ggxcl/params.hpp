@@ -31,9 +31,18 @@ struct SampleParams {
     float alpha_x = 0.3f, alpha_y = 0.3f;  // GGX alpha > 0; caps-iso needs alpha_x == alpha_y
     Vec3 view{0.0f, 0.0f, 1.0f};           // unit, pointing away from the surface; tangent space
                                            // (world space for caps-iso); z < 0 is below the horizon
-    Vec3 normal{0.0f, 0.0f, 1.0f};         // caps-iso only: the world-space surface normal
+    Vec3 normal{0.0f, 0.0f, 1.0f};         // caps-iso and world space: the world-space surface normal
     Precision precision = Precision::precise;
+    // World space for every method: view, normal and the returned m and o are
+    // world-space vectors.  The tangent-space methods build a basis around the
+    // normal (Duff et al. 2017) and transform in and out; caps-iso needs none.
+    // Isotropic only (alpha_x == alpha_y): the normal alone fixes no tangent.
+    bool world_space = false;
 };
+
+// Whether the view is measured against params.normal (caps-iso, world space)
+// rather than the tangent-space +z.
+bool uses_normal(const SampleParams& params);
 
 // Samples first .. first+count-1 of the stream `seed`.  Sample k depends on
 // (seed, k) alone, so any split into ranges gives the same values.
@@ -71,5 +80,12 @@ void validate(const SampleRange& range);
 
 // Each non-empty per-sample vector must hold `count` entries of valid values.
 void validate(const PerSampleInputs& inputs, const SampleParams& params, std::uint64_t count);
+
+// What a request needs, which selects the program variant (see build options):
+// whether some view may lie below the horizon (i.n < 1e-6 with the normal of
+// uses_normal, iz < 0 in tangent space), and whether every alpha is isotropic.
+bool view_above_horizon(const Vec3& view, const Vec3& normal, bool against_normal);
+bool all_views_above_horizon(const PerSampleInputs& inputs, const SampleParams& params);
+bool all_isotropic(const PerSampleInputs& inputs, const SampleParams& params);
 
 } // namespace ggxcl

@@ -36,8 +36,12 @@ struct SampleSet {
 // Per-sample parameters in the caller's buffers, planar with the stride of
 // the call: view and normal 3 planes (unit vectors), alpha 2 planes
 // (alpha_x, alpha_y).  A default-constructed buffer means "uniform".
+// The two flags are promises about the buffers' contents that select a
+// cheaper program; leave them false when unsure.
 struct DeviceInputs {
     cl::Buffer view, alpha, normal;
+    bool views_above_horizon = false;  // every view has i.n >= 0 (iz >= 0 in tangent space)
+    bool isotropic = false;            // every alpha pair has alpha_x == alpha_y
 };
 
 // Output buffers of the caller, planar with the stride of the call: m and o
@@ -55,6 +59,15 @@ struct Histogram {
     std::vector<std::uint64_t> counts;
     std::uint64_t non_finite = 0;  // samples whose direction was NaN or Inf
     std::uint64_t total() const;
+};
+
+// Sums of the white-furnace estimator weights (Fresnel 1) of a range of
+// samples: their mean estimates the directional albedo of the surface.
+struct FurnaceSums {
+    std::uint64_t count = 0;
+    double sum = 0.0, sum_of_squares = 0.0;
+    double mean() const;      // the albedo estimate
+    double variance() const;  // per-sample variance of the weight
 };
 
 class Sampler {
@@ -108,6 +121,18 @@ public:
     // only the counts come back, so the count of samples is unbounded.
     Histogram histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
                         Field direction = Field::o);
+
+    // The fused white-furnace estimator: draws the samples of `range` and
+    // sums their weights on the device; nothing per sample is stored.
+    FurnaceSums furnace(const SampleParams& params, const SampleRange& range);
+
+    // Enqueues it for one range (count < 2^32): `sums` receives
+    // 2 * furnace_items(count) floats, the partial weight sums of the
+    // work-items, then their partial sums of squared weights.
+    cl::Event enqueue_furnace(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
+                              const cl::Buffer& sums, const DeviceInputs& inputs = {},
+                              const std::vector<cl::Event>* wait = nullptr);
+    std::size_t furnace_items(std::uint64_t count) const;
 
     // Number of distinct program variants built so far.
     std::size_t programs_built() const { return programs_->size(); }

@@ -1,0 +1,38 @@
+// ggx_furnace.cl - the fused white-furnace estimator: nothing per sample is
+// stored.  Each work-item draws GGX_FURNACE_PER_ITEM samples (an unrolled
+// straight line, so PoCL still vectorizes across work-items) and writes the
+// sum of their estimator weights and the sum of their squares; the host adds
+// these partial sums in double and forms the albedo estimate (the mean
+// weight) and its variance.  No barriers: a barrier-based reduction in local
+// memory costs more than the sampling on PoCL.
+//
+// Build options: those of ggx_bulk.cl (method, precision, per-sample and
+// specialization flags; the GGX_WRITE_* flags are ignored).
+// Work-item w of a launch of `count` samples draws samples
+// w + k * items (k < GGX_FURNACE_PER_ITEM, items = global size) that are < count.
+// Output: sums[w] = sum of its weights, sums[items + w] = sum of their squares.
+#ifndef GGX_METHOD
+#error "build with -DGGX_METHOD=<method id>"
+#endif
+#include "ggx_bulk_params.h"
+
+#define GGX_FURNACE_PER_ITEM 8
+
+__kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS,
+                               __global float* restrict sums)
+{
+    uint item = (uint)get_global_id(0), items = (uint)get_global_size(0);
+    float w_total = 0.0f, w2_total = 0.0f;
+#pragma unroll
+    for (uint k = 0; k < GGX_FURNACE_PER_ITEM; ++k) {
+        uint index = item + k * items;
+        uint j = min(index, count - 1u);  // past `count`: recompute the last sample, then count it as 0
+        ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
+        ggx_sample s = ggx_bulk_sample(seed, first + j, p);
+        float w = index < count ? s.weight : 0.0f;
+        w_total += w;
+        w2_total += w * w;
+    }
+    sums[item] = w_total;
+    sums[items + item] = w2_total;
+}

@@ -1,0 +1,61 @@
+// ggx_world.h - sampling in world space: every method takes the world-space
+// normal n and view i and returns m and o in world space.  The tangent-space
+// methods build an orthonormal basis around n (Duff et al. 2017, "Building
+// an Orthonormal Basis, Revisited", JCGT 6(1), Listing 3: branchless, exact
+// for n = -z too) and transform i in and m, o out; caps-iso needs no basis.
+// World space is isotropic: a basis from n alone has no tangent direction.
+#ifndef GGX_WORLD_H
+#define GGX_WORLD_H
+
+#include "ggx_samplers.h"
+
+typedef struct {
+    ggx_vec3 t, b, n;
+} ggx_basis;
+
+// Duff et al. 2017, Listing 3: sign = copysign(1, nz), a = -1/(sign + nz), b = nx ny a,
+// t = (1 + sign nx^2 a, sign b, -sign nx), b = (b, sign + ny^2 a, -ny).
+GGX_INLINE ggx_basis ggx_basis_from_normal(ggx_vec3 n)
+{
+    float sign = copysign(1.0f, n.z);
+    float a = -1.0f / (sign + n.z);
+    float b = n.x * n.y * a;
+    ggx_basis basis;
+    basis.t = ggx_vec3_make(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    basis.b = ggx_vec3_make(b, sign + n.y * n.y * a, -n.y);
+    basis.n = n;
+    return basis;
+}
+
+GGX_INLINE ggx_vec3 ggx_to_local(ggx_basis basis, ggx_vec3 v)
+{
+    return ggx_vec3_make(ggx_dot(v, basis.t), ggx_dot(v, basis.b), ggx_dot(v, basis.n));
+}
+
+GGX_INLINE ggx_vec3 ggx_from_local(ggx_basis basis, ggx_vec3 v)
+{
+    return ggx_add(ggx_add(ggx_scale(basis.t, v.x), ggx_scale(basis.b, v.y)), ggx_scale(basis.n, v.z));
+}
+
+// A sample of `method` for world-space n and i with roughness alpha; m and o in world space.
+GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
+{
+    if (method == GGX_METHOD_CAPS_ISO)
+        return ggx_sample_caps_iso(n, i, alpha, u1, u2);
+    ggx_basis basis = ggx_basis_from_normal(n);
+    ggx_sample s = ggx_sample_method(method, n, ggx_to_local(basis, i), alpha, alpha, u1, u2);
+    s.m = ggx_from_local(basis, s.m);
+    s.o = ggx_from_local(basis, s.o);
+    return s;
+}
+
+// The pdf of the world-space direction o for `method` (0 where it never samples o).
+GGX_INLINE float ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
+{
+    if (method == GGX_METHOD_CAPS_ISO)
+        return ggx_pdf_caps_iso(n, i, o, alpha);
+    ggx_basis basis = ggx_basis_from_normal(n);
+    return ggx_pdf_method(method, n, ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha);
+}
+
+#endif

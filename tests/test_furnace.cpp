@@ -1,0 +1,80 @@
+// test_furnace.cpp - the fused white-furnace estimator (Sampler::furnace):
+// its sums are those of the weights the bulk kernel stores for the same
+// samples (any count, also not a multiple of the work-group size), and its
+// mean is the reference albedo within 4 standard errors for every method in
+// every precision mode.  Negative control: a range shifted by one sample
+// does not give the same sums.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "device_fixture.hpp"
+
+namespace {
+
+using ggxref::Method;
+
+struct StoredSums {
+    double sum = 0, sum_of_squares = 0;
+};
+
+StoredSums stored_weight_sums(const ggxcl::SampleParams& p, const ggxcl::SampleRange& range)
+{
+    ggxcl::SampleSet s = ggxtest::sampler().generate(p, range, {ggxcl::Field::weight});
+    StoredSums sums;
+    for (float w : s.weight) {
+        sums.sum += w;
+        sums.sum_of_squares += double(w) * w;
+    }
+    return sums;
+}
+
+// Float partial sums of 256 weights each, added in double: 1e-6 relative is ample.
+bool same_sums(const ggxcl::FurnaceSums& fused, const StoredSums& stored)
+{
+    return std::fabs(fused.sum - stored.sum) <= 1e-6 * std::fabs(stored.sum) + 1e-6 &&
+           std::fabs(fused.sum_of_squares - stored.sum_of_squares) <= 1e-6 * stored.sum_of_squares + 1e-6;
+}
+
+} // namespace
+
+TEST_CASE("fused sums equal the sums of the stored weights, for any count")
+{
+    for (Method method : ggxref::all_methods)
+        for (std::uint64_t count : {1ull, 255ull, 1000ull, 65536ull + 7}) {
+            CAPTURE(ggxref::method_name(method));
+            CAPTURE(count);
+            ggxcl::SampleParams p =
+                ggxtest::to_library(method, ggxtest::make_params(0.4, 0.4, 70.0), ggxcl::Precision::fast);
+            ggxcl::FurnaceSums fused = ggxtest::sampler().furnace(p, {5, 123, count});
+            CHECK(fused.count == count);
+            CHECK(same_sums(fused, stored_weight_sums(p, {5, 123, count})));
+        }
+}
+
+TEST_CASE("fused mean is the reference albedo in every precision mode")
+{
+    const std::uint64_t count = 1u << 21;
+    for (Method method : ggxref::all_methods)
+        for (ggxcl::Precision precision : ggxtest::all_precisions)
+            for (double theta : {0.0, 75.0}) {
+                ggxref::Params params = ggxtest::make_params(0.6, 0.6, theta);
+                ggxcl::FurnaceSums fused =
+                    ggxtest::sampler().furnace(ggxtest::to_library(method, params, precision), {11, 0, count});
+                double albedo = ggxref::albedo(params);
+                double standard_error = std::sqrt(fused.variance() / double(count));
+                CAPTURE(ggxref::method_name(method));
+                CAPTURE(theta);
+                CAPTURE(fused.mean());
+                CAPTURE(albedo);
+                CHECK(std::fabs(fused.mean() - albedo) <= 4.0 * standard_error);
+                CHECK(fused.variance() > 0.0);
+            }
+}
+
+TEST_CASE("negative control: a range shifted by one sample gives other sums")
+{
+    ggxcl::SampleParams p = ggxtest::to_library(Method::caps, ggxtest::make_params(0.4, 0.4, 70.0));
+    ggxcl::FurnaceSums fused = ggxtest::sampler().furnace(p, {5, 124, 1000});
+    CHECK_FALSE(same_sums(fused, stored_weight_sums(p, {5, 123, 1000})));
+}

@@ -1,0 +1,179 @@
+// native_vectorized.cpp - the hand-vectorized "ceiling" of the native baseline: the white-furnace
+// weight sum of isotropic caps sampling (Dupuy & Benyoub 2023) with 16-lane GCC vector extensions
+// (AVX-512 when the target has it), Philox4x32-10 on vectors, the minimax sincos of
+// kernels/ggx_sincos.h, nothing written.  Same uniforms and weights as the scalar
+// run(caps, furnace_sum), up to float rounding.
+#include <cmath>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+#include "native_baseline.hpp"
+
+namespace ggxnative {
+namespace {
+
+constexpr int lanes = 16;
+typedef float vfloat __attribute__((vector_size(64)));
+typedef std::uint32_t vuint __attribute__((vector_size(64)));
+typedef std::int32_t vint __attribute__((vector_size(64)));  // what comparisons return
+typedef std::uint64_t vulong __attribute__((vector_size(64)));
+
+constexpr std::uint64_t block = 4096;  // weights are summed per aligned block, blocks in order
+constexpr vuint iota = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+
+vfloat splat(float x) { return vfloat{} + x; }
+
+// Per-lane square root; with -fno-math-errno GCC emits one vector sqrt for the loop.
+vfloat vsqrt(vfloat x)
+{
+    vfloat r;
+    for (int l = 0; l < lanes; ++l)
+        r[l] = std::sqrt(x[l]);
+    return r;
+}
+
+vfloat vmax(vfloat a, vfloat b) { return a > b ? a : b; }
+vfloat vmin(vfloat a, vfloat b) { return a < b ? a : b; }
+
+// 32x32 -> 64-bit products of every lane of a with m, as low and high words.  Seen as eight
+// 64-bit lanes, a holds the even lanes in the low halves and the odd lanes in the high halves:
+// both products are 32x32 -> 64 multiplies of 64-bit lanes (vpmuludq).
+void mulhilo(vuint a, std::uint32_t m, vuint& lo, vuint& hi)
+{
+    const vulong wide = (vulong)a;
+    const vulong even = (wide & 0xffffffffull) * std::uint64_t(m);
+    const vulong odd = (wide >> 32) * std::uint64_t(m);
+    lo = (vuint)((even & 0xffffffffull) | (odd << 32));
+    hi = (vuint)((even >> 32) | (odd & 0xffffffff00000000ull));
+}
+
+// Philox4x32-10 (Salmon et al. 2011) on 16 counters {c0, c1, 0, 0} with one key; returns the
+// first two output words.
+void philox_words(vuint c0, vuint c1, std::uint32_t k0, std::uint32_t k1, vuint& w0, vuint& w1)
+{
+    vuint c2 = vuint{}, c3 = vuint{};
+    for (int round = 0; round < 10; ++round) {
+        vuint lo0, hi0, lo1, hi1;
+        mulhilo(c0, 0xD2511F53u, lo0, hi0);
+        mulhilo(c2, 0xCD9E8D57u, lo1, hi1);
+        c0 = hi1 ^ c1 ^ k0;
+        c2 = hi0 ^ c3 ^ k1;
+        c1 = lo1;
+        c3 = lo0;
+        k0 += 0x9E3779B9u;
+        k1 += 0xBB67AE85u;
+    }
+    w0 = c0;
+    w1 = c1;
+}
+
+// The top 24 bits of each word times 2^-24.
+vfloat word_to_unit(vuint w) { return __builtin_convertvector((vint)(w >> 8), vfloat) * 5.9604644775390625e-8f; }
+
+// sin(2 pi u), cos(2 pi u) for u in [0, 1): x = 2 pi (u - 1/2), sin = -x S(x^2), cos = -C(x^2)
+// (the fast form of kernels/ggx_sincos.h, same coefficients).
+void sincos_2pi(vfloat u, vfloat& s, vfloat& c)
+{
+    const vfloat x = 6.28318530717958647692f * (u - 0.5f);
+    const vfloat t = x * x;
+    vfloat ps = 2.708831159e-06f + t * -2.069813466e-08f;
+    ps = -1.981763099e-04f + t * ps;
+    ps = 8.332791503e-03f + t * ps;
+    ps = -1.666662111e-01f + t * ps;
+    ps = 9.999999378e-01f + t * ps;
+    vfloat pc = -2.707903082e-07f + t * 1.724509174e-09f;
+    pc = 2.476988356e-05f + t * pc;
+    pc = -1.388780360e-03f + t * pc;
+    pc = 4.166648922e-02f + t * pc;
+    pc = -4.999998910e-01f + t * pc;
+    pc = 9.999999891e-01f + t * pc;
+    s = -x * ps;
+    c = -pc;
+}
+
+// What every sample of one view shares: alpha, i, t(i), the stretched view v and the weight
+// factor (iz + t) / (2 iz), so that weight = G2 (iz + t) / (2 iz) = oz (iz + t) / (t oz + t(o) iz).
+struct View {
+    float alpha, ix, iy, iz, ti, vx, vy, vz, weight_scale;
+};
+
+View make_view(float alpha, const float view[3])
+{
+    View w{alpha, view[0], view[1], view[2], 0, 0, 0, 0, 0};
+    const float sx = alpha * w.ix, sy = alpha * w.iy;
+    w.ti = std::sqrt(sx * sx + sy * sy + w.iz * w.iz);
+    w.vx = sx / w.ti, w.vy = sy / w.ti, w.vz = w.iz / w.ti;
+    w.weight_scale = (w.iz + w.ti) / (2.0f * w.iz);
+    return w;
+}
+
+// Furnace weights of 16 samples from their uniforms (Dupuy & Benyoub 2023, sec. 3).
+vfloat caps_weights(const View& w, vfloat u1, vfloat u2)
+{
+    // Reflected direction c uniform on the cap z in (-vz, 1] (Listing 3).
+    const vfloat z = (1.0f - u2) * (1.0f + w.vz) - w.vz;
+    const vfloat sin_theta = vsqrt(vmin(vmax(1.0f - z * z, splat(0.0f)), splat(1.0f)));
+    vfloat sin_phi, cos_phi;
+    sincos_2pi(u1, sin_phi, cos_phi);
+    // Half vector h = c + v, unstretched and normalized: m = normalize(alpha hx, alpha hy, hz).
+    const vfloat mx0 = w.alpha * (sin_theta * cos_phi + w.vx);
+    const vfloat my0 = w.alpha * (sin_theta * sin_phi + w.vy);
+    const vfloat mz0 = z + w.vz;
+    const vfloat inv_len = 1.0f / vsqrt(mx0 * mx0 + my0 * my0 + mz0 * mz0);
+    const vfloat mx = mx0 * inv_len, my = my0 * inv_len, mz = mz0 * inv_len;
+    // o = 2 (i.m) m - i, t(o), and G2 (iz + t) / (2 iz) = oz (iz + t) / (t oz + t(o) iz) for oz > 0.
+    const vfloat twice_dot = 2.0f * (w.ix * mx + w.iy * my + w.iz * mz);
+    const vfloat ox = twice_dot * mx - w.ix, oy = twice_dot * my - w.iy, oz = twice_dot * mz - w.iz;
+    const vfloat to = vsqrt(w.alpha * w.alpha * (ox * ox + oy * oy) + oz * oz);
+    const vfloat weight = 2.0f * w.iz * oz / (w.ti * oz + to * w.iz) * w.weight_scale;
+    return oz > 0.0f ? weight : splat(0.0f);
+}
+
+// The weight sum of samples [begin, end) of one block, 16 lanes at a time.
+double block_sum(std::uint64_t seed, const View& w, std::uint64_t begin, std::uint64_t end)
+{
+    vfloat sum = splat(0.0f);
+    for (std::uint64_t base = begin; base < end; base += lanes) {
+        const vuint c0 = std::uint32_t(base) + iota;
+        const vuint c1 = std::uint32_t(base >> 32) - (vuint)(c0 < std::uint32_t(base));  // carry
+        vuint w0, w1;
+        philox_words(c0, c1, std::uint32_t(seed), std::uint32_t(seed >> 32), w0, w1);
+        const vfloat weights = caps_weights(w, word_to_unit(w0), word_to_unit(w1));
+        const vint inside = (vint)iota < vint{} + int(end - base < lanes ? end - base : lanes);
+        sum += inside ? weights : splat(0.0f);
+    }
+    double total = 0.0;
+    for (int l = 0; l < lanes; ++l)
+        total += sum[l];
+    return total;
+}
+
+}  // namespace
+
+double furnace_caps_vectorized(std::uint64_t seed, std::uint64_t count, float alpha, const float view[3],
+                               int threads)
+{
+    if (!(view[2] > 0.0f))
+        return 0.0;  // no reflection from below the horizon
+    const View w = make_view(alpha, view);
+    threads = threads < 1 ? 1 : threads;
+    const std::uint64_t blocks = (count + block - 1) / block;
+    std::vector<double> sums(blocks, 0.0);
+    auto work = [&](int t) {
+        for (std::uint64_t b = blocks * t / threads; b < blocks * (t + 1) / threads; ++b)
+            sums[b] = block_sum(seed, w, b * block, (b + 1) * block < count ? (b + 1) * block : count);
+    };
+    std::vector<std::thread> workers;
+    for (int t = 1; t < threads; ++t)
+        workers.emplace_back(work, t);
+    work(0);
+    for (std::thread& worker : workers)
+        worker.join();
+    double total = 0.0;
+    for (double s : sums)
+        total += s;
+    return total;
+}
+
+}  // namespace ggxnative

@@ -7,8 +7,11 @@
 //   GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1   parameters read per sample from buffers
 //   GGX_ISOTROPIC=0|1, GGX_BELOW_HORIZON=0|1, GGX_WORLD_SPACE=0|1   what the request needs
 // Arrays are planar: component c of sample j is at [c * stride + j].
-// One sample per work-item; work-items past `count` recompute the last
-// sample (same value, same address), so no branch breaks vectorization.
+// One sample per work-item.  Each kernel comes in two forms: the main one
+// for whole work-groups, whose loads and stores go to consecutive addresses
+// (PoCL vectorizes them as plain vector moves), and a `_tail` one for the
+// last partial work-group, which clamps the index to count - 1: clamped
+// addresses cost gathers and scatters, which is why the main form has none.
 #ifndef GGX_METHOD
 #error "build with -DGGX_METHOD=<method id>"
 #endif
@@ -29,12 +32,12 @@
 #define GGX_WRITE_WEIGHT 0
 #endif
 
-__kernel void ggx_sample_bulk(ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS,
-                              __global float* restrict m_out, __global float* restrict o_out,
-                              __global float* restrict pdf_m_out, __global float* restrict pdf_o_out,
-                              __global float* restrict weight_out)
+// Sample j (< count) into the requested fields.
+GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GGX_PARAM_ARGS,
+                                __global float* restrict m_out, __global float* restrict o_out,
+                                __global float* restrict pdf_m_out, __global float* restrict pdf_o_out,
+                                __global float* restrict weight_out)
 {
-    uint j = min((uint)get_global_id(0), count - 1u);
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
     ggx_sample s = ggx_bulk_sample(seed, first + j, p);
 #if GGX_WRITE_M
@@ -54,12 +57,42 @@ __kernel void ggx_sample_bulk(ulong seed, ulong first, uint count, uint stride, 
 #endif
 }
 
+#define GGX_SAMPLE_ARGS                                                                                 \
+    ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS, __global float *restrict m_out,    \
+        __global float *restrict o_out, __global float *restrict pdf_m_out, __global float *restrict pdf_o_out, \
+        __global float *restrict weight_out
+#define GGX_SAMPLE_OUTPUTS m_out, o_out, pdf_m_out, pdf_o_out, weight_out
+
+// Whole work-groups of samples: every work-item is sample get_global_id(0) < count.
+__kernel void ggx_sample_bulk(GGX_SAMPLE_ARGS)
+{
+    ggx_sample_into(seed, first, (uint)get_global_id(0), stride, GGX_PARAM_VALUES, GGX_SAMPLE_OUTPUTS);
+}
+
+// The last partial work-group (launched with a global offset): work-items
+// past `count` redo the last sample, writing the same value to the same place.
+__kernel void ggx_sample_bulk_tail(GGX_SAMPLE_ARGS)
+{
+    uint j = min((uint)get_global_id(0), count - 1u);
+    ggx_sample_into(seed, first, j, stride, GGX_PARAM_VALUES, GGX_SAMPLE_OUTPUTS);
+}
+
 // pdf of each given direction o (planar, `stride`) for the method's sampler.
+GGX_INLINE void ggx_pdf_into(uint j, uint stride, GGX_PARAM_ARGS, __global const float* restrict o_in,
+                             __global float* restrict pdf_out)
+{
+    ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
+    pdf_out[j] = ggx_bulk_pdf(p, ggx_load3(o_in, j, stride));
+}
+
 __kernel void ggx_pdf_bulk(uint count, uint stride, GGX_PARAM_ARGS, __global const float* restrict o_in,
                            __global float* restrict pdf_out)
 {
-    uint j = min((uint)get_global_id(0), count - 1u);
-    ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
-    ggx_vec3 o = ggx_load3(o_in, j, stride);
-    pdf_out[j] = ggx_bulk_pdf(p, o);
+    ggx_pdf_into((uint)get_global_id(0), stride, GGX_PARAM_VALUES, o_in, pdf_out);
+}
+
+__kernel void ggx_pdf_bulk_tail(uint count, uint stride, GGX_PARAM_ARGS, __global const float* restrict o_in,
+                                __global float* restrict pdf_out)
+{
+    ggx_pdf_into(min((uint)get_global_id(0), count - 1u), stride, GGX_PARAM_VALUES, o_in, pdf_out);
 }

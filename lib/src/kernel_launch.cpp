@@ -68,14 +68,26 @@ std::size_t group_size(const cl::Device& device)
     return std::min(preferred_group_size, device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>());
 }
 
-cl::Event launch(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& kernel, std::uint32_t count,
-                 const std::vector<cl::Event>* wait)
+cl::Event launch_split(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& whole, cl::Kernel& tail,
+                       std::uint32_t count, const std::vector<cl::Event>* wait)
 {
     std::size_t group = group_size(device);
-    std::size_t global = (count + group - 1) / group * group;
-    cl::Event event;
-    queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(group), wait, &event);
-    return event;
+    std::size_t full = count / group * group;
+    std::vector<cl::Event> launched;
+    if (full > 0) {
+        launched.emplace_back();
+        queue.enqueueNDRangeKernel(whole, cl::NullRange, cl::NDRange(full), cl::NDRange(group), wait, &launched.back());
+    }
+    if (full < count) {
+        launched.emplace_back();
+        queue.enqueueNDRangeKernel(tail, cl::NDRange(full), cl::NDRange(group), cl::NDRange(group), wait,
+                                   &launched.back());
+    }
+    if (launched.size() == 1)
+        return launched.front();
+    cl::Event both;  // one event for both launches, also on an out-of-order queue
+    queue.enqueueMarkerWithWaitList(&launched, &both);
+    return both;
 }
 
 } // namespace detail

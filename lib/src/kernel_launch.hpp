@@ -27,8 +27,10 @@ void check_launch_count(std::uint64_t count, std::uint32_t stride);
 
 std::size_t group_size(const cl::Device& device);
 
-// One work-item per sample, rounded up to whole work-groups.
-cl::Event launch(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& kernel, std::uint32_t count,
-                 const std::vector<cl::Event>* wait);
+// One work-item per sample: `whole` (kernel NAME) over the whole work-groups,
+// then `tail` (NAME_tail, same arguments) over the last partial one with a
+// global offset.  Returns the event of the launch, or a marker on both.
+cl::Event launch_split(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& whole, cl::Kernel& tail,
+                       std::uint32_t count, const std::vector<cl::Event>* wait);
 
 } // namespace ggxcl::detail

@@ -1,91 +1,250 @@
-// cmd_bench.cpp - `ggx bench`: device speed of every method in every
-// precision mode, writing m and pdf_m into device buffers (the issue-4
-// target configuration): event-profiled nanoseconds per sample, the median
-// of --repeats timed runs after a warm-up (which builds and JIT-compiles the
-// variant), with the minimum and maximum.  Prints a Markdown table; --csv
-// writes the same rows.
-#include <algorithm>
+// cmd_bench.cpp - `ggx bench`: speed against accuracy of every method in
+// every precision mode on a device, side by side with the native C++
+// baseline: ns per sample of three jobs (m + pdf_m written, the fused
+// white-furnace estimator, world-space sampling), numerical error against
+// the reference, the variance of the albedo estimator over a small table,
+// efficiency and RMSE at equal time, start-up time.  Prints the Markdown
+// report; --csv, --charts and --markdown write the CSV, the two PNG charts
+// and the report (docs/BENCHMARKS.md is made by it).
+#include <chrono>
+#include <ctime>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "bench_native.hpp"
+#include "bench_report.hpp"
+#include "bench_startup.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
-#include "sample_options.hpp"
+#include "plot.hpp"
 
 namespace ggxapp {
 
 namespace {
 
 struct BenchCommand {
-    SampleOptions options;
-    std::string count = "2^24", repeats = "7", csv;
+    std::string alpha = "0.3", theta = "60", device;
+    std::string methods = "all", precisions = "precise,fast,relaxed", jobs = "write,furnace,world";
+    std::string count = "2^24", native_count = "2^22", repeats = "7", threads = "2";
+    std::string scene = "16", cell_samples = "2^14", budget_ms = "1";
+    bool no_native = false, no_accuracy = false, no_startup = false;
+    std::string csv, charts, markdown;
 };
 
-struct Timing {
-    double median, low, high;
-};
-
-Timing time_variant(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params, std::uint32_t count, int repeats,
-                    const ggxcl::DeviceOutputs& out)
+// Comma-separated names, each one of `allowed` ("all": every one).
+std::vector<std::string> parse_list(const std::string& flag, const std::string& text,
+                                    const std::vector<std::string>& allowed)
 {
-    sampler.enqueue(sampler.queue(), params, {1, 0, count}, out).wait();  // warm-up: build and JIT
-    std::vector<double> ns;
-    for (int r = 0; r < repeats; ++r) {
-        cl::Event done = sampler.enqueue(sampler.queue(), params, {std::uint64_t(r) + 2, 0, count}, out);
-        done.wait();
-        double elapsed = double(done.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                                done.getProfilingInfo<CL_PROFILING_COMMAND_START>());
-        ns.push_back(elapsed / count);
-    }
-    std::sort(ns.begin(), ns.end());
-    return {ns[ns.size() / 2], ns.front(), ns.back()};
+    if (text == "all")
+        return allowed;
+    std::vector<std::string> names;
+    std::stringstream in(text);
+    std::string joined, name;
+    for (const std::string& a : allowed)
+        joined += (joined.empty() ? "" : ", ") + a;
+    while (std::getline(in, name, ','))
+        if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
+            throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
+        else
+            names.push_back(name);
+    if (names.empty())
+        throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
+    return names;
 }
 
-void run_bench(const BenchCommand& bench)
+std::vector<std::string> method_names()
 {
-    std::uint64_t count = parse_count("-n", bench.count);
-    if (count > (1u << 30))
-        throw UsageError("-n", bench.count, "at most 2^30 samples per timed run");
-    std::uint64_t repeats = parse_whole("--repeats", bench.repeats, 5, 101);
-    if (!bench.csv.empty())
-        check_writable_folder("--csv", bench.csv);
-    ggxcl::Sampler sampler(bench.options.device);
-    ggxcl::DeviceOutputs out;
-    out.m = cl::Buffer(sampler.context(), CL_MEM_WRITE_ONLY, 3 * count * sizeof(float));
-    out.pdf_m = cl::Buffer(sampler.context(), CL_MEM_WRITE_ONLY, count * sizeof(float));
-    std::ostringstream csv;
-    csv << "method,precision,ns_per_sample_median,ns_min,ns_max,samples_per_second\n";
-    std::cout << "device: " << sampler.device_name() << "; " << count << " samples per run, median of " << repeats
-              << " runs, m and pdf_m written\n\n| method | precision | ns/sample (median) | min | max | G samples/s |\n"
-              << "|---|---|---|---|---|---|\n";
-    for (const char* mode : {"precise", "fast", "relaxed"})
-        for (ggxcl::Method method : ggxcl::all_methods) {
-            SampleOptions options = bench.options.for_method(method);
-            options.precision = mode;
-            Timing t = time_variant(sampler, options.params_for(method), std::uint32_t(count), int(repeats), out);
-            std::cout << "| " << ggxcl::method_name(method) << " | " << mode << " | " << t.median << " | " << t.low
-                      << " | " << t.high << " | " << 1.0 / t.median << " |\n";
-            csv << ggxcl::method_name(method) << "," << mode << "," << t.median << "," << t.low << "," << t.high << ","
-                << 1e9 / t.median << "\n";
+    std::vector<std::string> names;
+    for (ggxcl::Method m : ggxcl::all_methods)
+        names.emplace_back(ggxcl::method_name(m));
+    return names;
+}
+
+std::string today()
+{
+    std::time_t now = std::time(nullptr);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    return text;
+}
+
+BenchJob job_named(const std::string& name)
+{
+    for (BenchJob job : all_bench_jobs)
+        if (job_name(job) == name)
+            return job;
+    throw UsageError("--jobs", name, "write, furnace or world");
+}
+
+BenchRow row_of(const std::string& method, const std::string& precision, const std::string& job, Timing timing)
+{
+    BenchRow row;
+    row.method = method;
+    row.precision = precision;
+    row.job = job;
+    row.timing = timing;
+    return row;
+}
+
+struct Plan {
+    std::vector<std::string> methods, precisions, jobs;
+    ggxcl::SampleParams base;
+};
+
+void measure_device(ggxcl::Sampler& sampler, const Plan& plan, const BenchCommand& cmd, BenchReport& report)
+{
+    std::vector<BenchTask> tasks;
+    for (const std::string& mode : plan.precisions)
+        for (const std::string& name : plan.methods)
+            for (const std::string& job_text : plan.jobs) {
+                ggxcl::SampleParams p = plan.base;
+                p.method = ggxcl::parse_method(name);
+                p.precision = ggxcl::parse_precision(mode);
+                tasks.push_back({job_named(job_text), p});
+            }
+    std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
+    DeviceTimer timer(sampler, report.count);
+    std::vector<Timing> timings = timer.time_interleaved(tasks, report.repeats);
+    for (std::size_t t = 0; t < tasks.size(); ++t) {
+        const ggxcl::SampleParams& p = tasks[t].params;
+        BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), std::string(ggxcl::precision_name(p.precision)),
+                              job_name(tasks[t].job), timings[t]);
+        if (!cmd.no_accuracy && tasks[t].job == BenchJob::write) {
+            row.has_error = true;
+            row.error = numerical_error(sampler, p.method, p.precision);
         }
-    if (!bench.csv.empty())
-        write_text_file(bench.csv, csv.str());
+        if (!cmd.no_accuracy && tasks[t].job == BenchJob::furnace)
+            row.variance = albedo_scene_variance(sampler, p.method, p.precision, report.scene_size,
+                                                 report.samples_per_cell).variance;
+        report.rows.push_back(row);
+    }
+}
+
+// The native rows; their albedo variance is the device's precise one for the
+// same method (the same samples, drawn from the same uniforms).
+void measure_native(const Plan& plan, BenchReport& report)
+{
+    NativeSetup setup{report.native_count, report.threads, report.repeats, plan.base.alpha_x, plan.base.view};
+    for (const std::string& name : plan.methods) {
+        ggxcl::Method method = ggxcl::parse_method(name);
+        for (const std::string& job_text : plan.jobs) {
+            BenchJob job = job_named(job_text);
+            BenchRow row = row_of(name, "native", job_text, native_timing(method, job, setup));
+            if (job == BenchJob::write) {
+                row.has_error = true;
+                row.error = native_numerical_error(method);
+            }
+            for (const BenchRow& device : report.rows)
+                if (job == BenchJob::furnace && device.method == name && device.precision == "precise" &&
+                    device.job == "furnace")
+                    row.variance = device.variance;
+            std::cerr << "  " << name << " native " << job_text << ": " << row.timing.median << " ns\n";
+            report.rows.push_back(row);
+        }
+    }
+    report.has_ceiling = true;
+    report.ceiling = native_ceiling_timing(setup);
+}
+
+std::string relative_to(const std::string& path, const std::string& markdown)
+{
+    if (markdown.empty())
+        return path;
+    std::filesystem::path folder = std::filesystem::absolute(markdown).parent_path();
+    return std::filesystem::relative(std::filesystem::absolute(path), folder).string();
+}
+
+void write_outputs(const BenchCommand& cmd, const BenchReport& report)
+{
+    std::string csv = bench_csv(report);
+    if (!cmd.csv.empty())
+        write_text_file(cmd.csv, csv);
+    std::string speed_error, speed_rmse;
+    if (!cmd.charts.empty()) {
+        speed_error = cmd.charts + "-speed-error.png";
+        speed_rmse = cmd.charts + "-speed-rmse.png";
+        std::string csv_path = cmd.charts + ".plot.csv";
+        write_text_file(csv_path, csv);
+        run_plot_script("plot_bench.py", {csv_path, speed_error, speed_rmse, report.device});
+        std::filesystem::remove(csv_path);
+    }
+    std::string md = bench_markdown(report, speed_error.empty() ? "" : relative_to(speed_error, cmd.markdown),
+                                    speed_rmse.empty() ? "" : relative_to(speed_rmse, cmd.markdown));
+    if (!cmd.markdown.empty())
+        write_text_file(cmd.markdown, md);
+    std::cout << md;
+}
+
+void run_bench(const BenchCommand& cmd)
+{
+    Plan plan{parse_list("--methods", cmd.methods, method_names()),
+              parse_list("--precisions", cmd.precisions, {"precise", "fast", "relaxed"}),
+              parse_list("--jobs", cmd.jobs, {"write", "furnace", "world"}), {}};
+    BenchReport report;
+    report.command = command_line();
+    report.date = today();
+    report.machine = machine_description();
+    report.count = std::uint32_t(parse_count("-n", cmd.count));
+    if (report.count > (1u << 30) || parse_count("-n", cmd.count) > (1u << 30))
+        throw UsageError("-n", cmd.count, "1 .. 2^30 samples per timed run");
+    report.native_count = std::uint32_t(parse_whole("--native-count", std::to_string(parse_count("--native-count", cmd.native_count)), 1, 1u << 28));
+    report.repeats = int(parse_whole("--repeats", cmd.repeats, 5, 101));
+    report.threads = int(parse_whole("--threads", cmd.threads, 1, 256));
+    report.scene_size = int(parse_whole("--scene", cmd.scene, 2, 64));
+    report.samples_per_cell = parse_whole("--cell-samples", std::to_string(parse_count("--cell-samples", cmd.cell_samples)), 2, 1ull << 26);
+    report.budget_ms = parse_angle("--budget-ms", cmd.budget_ms, 1e-3, 1e6);
+    std::array<float, 2> alpha = parse_alpha("--alpha", cmd.alpha);
+    if (alpha[0] != alpha[1])
+        throw UsageError("--alpha", cmd.alpha, "one value (the bench includes caps-iso and world space, which are isotropic)");
+    report.alpha = alpha[0];
+    report.theta = parse_angle("--theta", cmd.theta, 0.0, 89.0);
+    plan.base.alpha_x = plan.base.alpha_y = alpha[0];
+    plan.base.view = ggxcl::view_from_angles(report.theta, 0.0);
+    for (const std::string& path : {cmd.csv, cmd.markdown, cmd.charts})
+        if (!path.empty())
+            check_writable_folder(path == cmd.csv ? "--csv" : path == cmd.markdown ? "--markdown" : "--charts", path);
+    ggxcl::Sampler sampler(cmd.device);
+    report.device = sampler.device_name();
+    measure_device(sampler, plan, cmd, report);
+    if (!cmd.no_native)
+        measure_native(plan, report);
+    if (!cmd.no_startup)
+        report.startup = measure_startup(cmd.device, 5);
+    write_outputs(cmd, report);
 }
 
 } // namespace
 
 Action add_bench_command(CLI::App& app)
 {
-    auto state = std::make_shared<BenchCommand>();
-    CLI::App* cmd = app.add_subcommand("bench", "Time every method in every precision mode on a device");
-    state->options.add_view_options(*cmd);
-    cmd->add_option("-n,--count", state->count, "samples per timed run")->capture_default_str();
-    cmd->add_option("--repeats", state->repeats, "timed runs per variant (median reported)")->capture_default_str();
-    cmd->add_option("--csv", state->csv, "also write the rows to this CSV file");
-    return [cmd, state] {
+    auto s = std::make_shared<BenchCommand>();
+    CLI::App* cmd = app.add_subcommand("bench", "Speed against accuracy of every method and precision mode on a device, "
+                                                "beside the native C++ baseline");
+    cmd->add_option("--alpha", s->alpha, "GGX roughness of the speed runs (one value)")->capture_default_str();
+    cmd->add_option("--theta", s->theta, "view polar angle of the speed runs, degrees, 0..89")->capture_default_str();
+    cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
+    cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
+    cmd->add_option("--precisions", s->precisions, "comma-separated precision modes")->capture_default_str();
+    cmd->add_option("--jobs", s->jobs, "comma-separated jobs: write (m + pdf_m), furnace (fused estimator), "
+                                       "world (world-space o)")->capture_default_str();
+    cmd->add_option("-n,--count", s->count, "samples per timed device run")->capture_default_str();
+    cmd->add_option("--native-count", s->native_count, "samples per timed native run")->capture_default_str();
+    cmd->add_option("--repeats", s->repeats, "timed runs per row, 5..101 (median reported)")->capture_default_str();
+    cmd->add_option("--threads", s->threads, "threads of the native baseline")->capture_default_str();
+    cmd->add_option("--scene", s->scene, "size of the albedo table (views x roughnesses)")->capture_default_str();
+    cmd->add_option("--cell-samples", s->cell_samples, "samples per cell of the albedo table")->capture_default_str();
+    cmd->add_option("--budget-ms", s->budget_ms, "time budget of the whole table for the RMSE column")->capture_default_str();
+    cmd->add_flag("--no-native", s->no_native, "skip the native C++ baseline");
+    cmd->add_flag("--no-accuracy", s->no_accuracy, "skip the numerical and statistical accuracy columns");
+    cmd->add_flag("--no-startup", s->no_startup, "skip the start-up timing");
+    cmd->add_option("--csv", s->csv, "write the rows to this CSV file");
+    cmd->add_option("--charts", s->charts, "write PREFIX-speed-error.png and PREFIX-speed-rmse.png");
+    cmd->add_option("--markdown", s->markdown, "write the report to this Markdown file");
+    return [cmd, s] {
         if (*cmd)
-            run_bench(*state);
+            run_bench(*s);
     };
 }
 

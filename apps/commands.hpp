@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -16,5 +17,9 @@ Action add_demo_command(CLI::App& app);
 Action add_merge_command(CLI::App& app);
 Action add_histogram_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
+
+// The command line as typed (program name shortened to `ggx`), for reports.
+void remember_command_line(int argc, char** argv);
+const std::string& command_line();
 
 } // namespace ggxapp

@@ -10,30 +10,12 @@
 #include "ggx_stats.hpp"
 #include "npy_file.hpp"
 #include "plot.hpp"
+#include "reference_bridge.hpp"
 #include "sample_job.hpp"
 
 namespace ggxapp {
 
 namespace {
-
-ggxref::Params reference_params(const ggxcl::SampleParams& p)
-{
-    ggxref::Params r;
-    r.ax = p.alpha_x;
-    r.ay = p.alpha_y;
-    r.i = {p.view.x, p.view.y, p.view.z};
-    r.n = {p.normal.x, p.normal.y, p.normal.z};
-    return r;
-}
-
-// The reference's method of the same name (the two enums are independent).
-ggxref::Method reference_method(ggxcl::Method m)
-{
-    for (ggxref::Method r : ggxref::all_methods)
-        if (ggxcl::method_name(m) == ggxref::method_name(r))
-            return r;
-    throw std::logic_error("no reference method named " + std::string(ggxcl::method_name(m)));
-}
 
 std::string file_name(const std::string& path)
 {

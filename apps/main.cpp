@@ -9,6 +9,7 @@
 
 int main(int argc, char** argv)
 {
+    ggxapp::remember_command_line(argc, argv);
     CLI::App app{"ggx - GGX microfacet importance samplers on OpenCL devices (ggxcl " +
                  std::string(ggxcl::version()) + ")"};
     app.require_subcommand(1);

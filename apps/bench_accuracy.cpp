@@ -1,0 +1,109 @@
+// bench_accuracy.cpp - numerical error against the reference and the
+// variance of the albedo estimator over a small table.
+#include "bench_accuracy.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "reference_bridge.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+constexpr std::uint64_t samples_per_config = 1u << 13;
+constexpr std::uint64_t accuracy_seed = 777;
+
+ggxref::Vec3 as_double(const ggxcl::Vec3& v)
+{
+    return {v.x, v.y, v.z};
+}
+
+double angle_between(const ggxref::Vec3& a, const ggxref::Vec3& b)
+{
+    return std::atan2(ggxref::length(ggxref::cross(a, b)), ggxref::dot(a, b));
+}
+
+double relative(double value, double reference)
+{
+    return reference == 0.0 ? std::fabs(value) : std::fabs(value - reference) / std::fabs(reference);
+}
+
+ggxcl::SampleParams params_of(ggxcl::Method method, ggxcl::Precision precision, double alpha, double cos_theta)
+{
+    ggxcl::SampleParams p;
+    p.method = method;
+    p.precision = precision;
+    p.alpha_x = p.alpha_y = float(alpha);
+    p.view = ggxcl::view_from_angles(std::acos(cos_theta) * 180.0 / 3.14159265358979323846, 0.0);
+    return ggxcl::normalized(p);
+}
+
+void add_errors(const ggxcl::SampleSet& d, ggxcl::Method method, const ggxref::Params& ref,
+                std::vector<double>& angles, std::vector<double>& pdfs, std::uint64_t& non_finite)
+{
+    ggxref::Method ref_method = reference_method(method);
+    for (std::size_t j = 0; j < d.count; ++j) {
+        std::array<double, 2> u = ggxref::uniforms(accuracy_seed, j);
+        ggxref::Sample r = ggxref::sample(ref_method, ref, u[0], u[1]);
+        double angle = std::max(angle_between(as_double(d.m_at(j)), r.m), angle_between(as_double(d.o_at(j)), r.o));
+        if (!std::isfinite(angle) || !std::isfinite(d.pdf_m[j]) || !std::isfinite(d.pdf_o[j])) {
+            ++non_finite;
+            continue;
+        }
+        angles.push_back(angle);
+        pdfs.push_back(relative(d.pdf_m[j], r.pdf_m));
+        if (method != ggxcl::Method::ndf || std::fabs(ggxref::dot(r.o, r.m)) >= 1e-2)
+            pdfs.push_back(relative(d.pdf_o[j], r.pdf_o));
+    }
+}
+
+} // namespace
+
+void percentiles(std::vector<double>& errors, double& p99, double& max)
+{
+    if (errors.empty())
+        return;
+    max = *std::max_element(errors.begin(), errors.end());
+    std::size_t k = std::size_t(0.99 * double(errors.size() - 1));
+    std::nth_element(errors.begin(), errors.begin() + k, errors.end());
+    p99 = errors[k];
+}
+
+NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision)
+{
+    std::vector<double> angles, pdfs;
+    NumericalError error;
+    for (double alpha : {0.05, 0.3, 1.0})
+        for (double theta : {0.0, 45.0, 80.0}) {
+            ggxcl::SampleParams p = params_of(method, precision, alpha, std::cos(theta * 3.14159265358979323846 / 180));
+            ggxcl::SampleSet d = sampler.generate(p, {accuracy_seed, 0, samples_per_config},
+                                                  {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_m,
+                                                   ggxcl::Field::pdf_o});
+            add_errors(d, method, reference_params(p), angles, pdfs, error.non_finite);
+        }
+    percentiles(angles, error.angle_p99, error.angle_max);
+    percentiles(pdfs, error.pdf_p99, error.pdf_max);
+    return error;
+}
+
+SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+                                    int size, std::uint64_t samples_per_cell)
+{
+    SceneVariance scene;
+    std::uint64_t seed = 1000;
+    for (int a = 0; a < size; ++a)
+        for (int v = 0; v < size; ++v) {
+            ggxcl::SampleParams p = params_of(method, precision, (a + 0.5) / size, (v + 0.5) / size);
+            ggxcl::FurnaceSums sums = sampler.furnace(p, {++seed, 0, samples_per_cell});
+            scene.variance += sums.variance();
+            scene.mean_albedo += sums.mean();
+        }
+    scene.variance /= double(size) * size;
+    scene.mean_albedo /= double(size) * size;
+    return scene;
+}
+
+} // namespace ggxapp

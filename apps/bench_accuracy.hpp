@@ -1,0 +1,39 @@
+// bench_accuracy.hpp - the numerical and statistical accuracy columns of
+// `ggx bench`.
+//  - Numerical: device samples against the double-precision reference on the
+//    same uniforms (alpha 0.05, 0.3, 1 x view 0, 45, 80 degrees): the 99th
+//    percentile and maximum of the angle error of m and o, and of the relative
+//    error of pdf_m and pdf_o (ndf's pdf_o only where |o.m| >= 1e-2, as in the tests).
+//  - Statistical: the per-sample variance of the white-furnace (albedo)
+//    estimator, averaged over the cells of a size x size table of views
+//    (cos theta = (k + 1/2)/size) and roughnesses (alpha = (k + 1/2)/size):
+//    the table a renderer precomputes for energy compensation.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <ggxcl/ggxcl.hpp>
+
+namespace ggxapp {
+
+struct NumericalError {
+    double angle_p99 = 0, angle_max = 0;  // radians, m and o
+    double pdf_p99 = 0, pdf_max = 0;      // relative, pdf_m and pdf_o
+    std::uint64_t non_finite = 0;
+};
+
+NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision);
+
+// The 99th percentile and maximum of `errors` (left as they are when empty).
+void percentiles(std::vector<double>& errors, double& p99, double& max);
+
+struct SceneVariance {
+    double variance = 0;     // per-sample variance of the weight, mean over cells
+    double mean_albedo = 0;  // mean over cells of the albedo estimate
+};
+
+SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+                                    int size, std::uint64_t samples_per_cell);
+
+} // namespace ggxapp

@@ -1,0 +1,54 @@
+// bench_report.hpp - what `ggx bench` measured and how it is written: the
+// rows (one per method x precision mode x job, the native baseline with
+// precision "native"), derived columns (efficiency, RMSE at equal time),
+// the CSV, the Markdown report with its target checks, and the charts.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bench_accuracy.hpp"
+#include "bench_speed.hpp"
+
+namespace ggxapp {
+
+struct BenchRow {
+    std::string method, precision, job;
+    Timing timing;                // ns per sample
+    bool has_error = false;       // numerical error measured
+    NumericalError error;
+    double variance = 0;          // albedo estimator variance per sample (0: not measured)
+};
+
+struct StartupTiming {
+    bool measured = false;
+    double cold_ms = 0;           // fresh kernel cache
+    Timing warm_ms;               // cache warm, median of runs
+};
+
+struct BenchReport {
+    std::string command, date, machine, device;
+    std::uint32_t count = 0, native_count = 0;
+    int repeats = 0, threads = 0, scene_size = 0;
+    std::uint64_t samples_per_cell = 0;
+    double budget_ms = 1.0;       // time budget of the whole albedo table for the RMSE column
+    double alpha = 0, theta = 0;  // the speed runs' configuration
+    std::vector<BenchRow> rows;
+    bool has_ceiling = false;
+    Timing ceiling;               // hand-vectorized native fused caps
+    StartupTiming startup;
+};
+
+// 1 / (variance x seconds per sample), and the RMSE of each cell of the table
+// after the budget is spent on it: sqrt(variance / (budget / (cells x time))).
+double efficiency(const BenchRow& row);
+double rmse_at_budget(const BenchRow& row, const BenchReport& report);
+
+std::string bench_csv(const BenchReport& report);
+std::string bench_markdown(const BenchReport& report, const std::string& speed_error_png,
+                           const std::string& speed_rmse_png);
+
+// The machine: CPU model and logical cores (Linux /proc/cpuinfo).
+std::string machine_description();
+
+} // namespace ggxapp

@@ -1,0 +1,126 @@
+// bench_speed.cpp - event-profiled device timings of the bench jobs.
+#include "bench_speed.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace ggxapp {
+
+namespace {
+
+constexpr std::uint32_t world_count_limit = 1u << 22;
+
+cl::Buffer device_copy(ggxcl::Sampler& sampler, std::vector<float>& host)
+{
+    return cl::Buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, host.size() * sizeof(float),
+                      host.data());
+}
+
+} // namespace
+
+void random_world_inputs(std::uint32_t count, std::vector<float>& normals, std::vector<float>& views)
+{
+    std::mt19937 rng(20231122);
+    std::normal_distribution<float> gauss;
+    normals.resize(3 * std::size_t(count));
+    views.resize(3 * std::size_t(count));
+    for (std::uint32_t j = 0; j < count; ++j) {
+        float n[3], v[3];
+        do {
+            for (float& c : n) c = gauss(rng);
+            float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            for (float& c : n) c /= len;
+        } while (n[2] < -0.999f);
+        float along;
+        do {
+            for (float& c : v) c = gauss(rng);
+            float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            for (float& c : v) c /= len;
+            along = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+            if (along < 0.0f)
+                for (int c = 0; c < 3; ++c) v[c] -= 2.0f * along * n[c];  // mirror into the upper side
+            along = std::fabs(along);
+        } while (along < 0.05f);
+        for (int c = 0; c < 3; ++c) {
+            normals[c * std::size_t(count) + j] = n[c];
+            views[c * std::size_t(count) + j] = v[c];
+        }
+    }
+}
+
+std::string job_name(BenchJob job)
+{
+    switch (job) {
+    case BenchJob::write: return "write";
+    case BenchJob::furnace: return "furnace";
+    case BenchJob::world: return "world";
+    }
+    return "?";
+}
+
+Timing summarize(std::vector<double> ns)
+{
+    std::sort(ns.begin(), ns.end());
+    return {ns[ns.size() / 2], ns.front(), ns.back()};
+}
+
+DeviceTimer::DeviceTimer(ggxcl::Sampler& sampler, std::uint32_t count)
+    : sampler_(sampler), count_(count), world_count_(std::min(count, world_count_limit))
+{
+    const cl::Context& context = sampler.context();
+    write_out_.m = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * std::size_t(count) * sizeof(float));
+    write_out_.pdf_m = cl::Buffer(context, CL_MEM_WRITE_ONLY, std::size_t(count) * sizeof(float));
+    world_out_.o = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * std::size_t(world_count_) * sizeof(float));
+    sums_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 2 * sampler.furnace_items(count) * sizeof(float));
+    std::vector<float> normals, views;
+    random_world_inputs(world_count_, normals, views);
+    world_in_.normal = device_copy(sampler, normals);
+    world_in_.view = device_copy(sampler, views);
+    world_in_.views_above_horizon = true;  // true by construction
+    world_in_.isotropic = true;
+}
+
+std::uint32_t DeviceTimer::count_of(BenchJob job) const
+{
+    return job == BenchJob::world ? world_count_ : count_;
+}
+
+cl::Event DeviceTimer::launch(BenchJob job, const ggxcl::SampleParams& params, std::uint64_t seed)
+{
+    cl::CommandQueue& queue = sampler_.queue();
+    switch (job) {
+    case BenchJob::write:
+        return sampler_.enqueue(queue, params, {seed, 0, count_}, write_out_);
+    case BenchJob::furnace:
+        return sampler_.enqueue_furnace(queue, params, {seed, 0, count_}, sums_);
+    case BenchJob::world: {
+        ggxcl::SampleParams world = params;
+        world.world_space = true;
+        world.alpha_y = world.alpha_x;
+        return sampler_.enqueue(queue, world, {seed, 0, world_count_}, world_out_, 0, world_in_);
+    }
+    }
+    return {};
+}
+
+std::vector<Timing> DeviceTimer::time_interleaved(const std::vector<BenchTask>& tasks, int repeats)
+{
+    for (const BenchTask& task : tasks)
+        launch(task.job, task.params, 1).wait();  // warm-up: build and JIT
+    std::vector<std::vector<double>> ns(tasks.size());
+    for (int r = 0; r < repeats; ++r)
+        for (std::size_t t = 0; t < tasks.size(); ++t) {
+            cl::Event done = launch(tasks[t].job, tasks[t].params, std::uint64_t(r) + 2);
+            done.wait();
+            double elapsed = double(done.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                                    done.getProfilingInfo<CL_PROFILING_COMMAND_START>());
+            ns[t].push_back(elapsed / count_of(tasks[t].job));
+        }
+    std::vector<Timing> timings;
+    for (std::vector<double>& samples : ns)
+        timings.push_back(summarize(samples));
+    return timings;
+}
+
+} // namespace ggxapp

@@ -1,0 +1,58 @@
+// bench_speed.hpp - the device timings of `ggx bench`: one job of one
+// program variant, event-profiled, the median of repeated runs after a
+// warm-up run (which builds and JIT-compiles the variant).
+//   write   - tangent-space view, m and pdf_m written to device buffers;
+//   furnace - the fused white-furnace estimator, nothing written but sums;
+//   world   - world-space normal and view read per sample, o written in world
+//             space (classic methods build a basis, caps-iso needs none).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <ggxcl/ggxcl.hpp>
+
+namespace ggxapp {
+
+enum class BenchJob { write, furnace, world };
+inline constexpr BenchJob all_bench_jobs[] = {BenchJob::write, BenchJob::furnace, BenchJob::world};
+std::string job_name(BenchJob job);
+
+// Nanoseconds per sample: median, fastest and slowest of the timed runs.
+struct Timing {
+    double median = 0, low = 0, high = 0;
+};
+Timing summarize(std::vector<double> ns_per_sample);
+
+// The world job's inputs: planar unit normals over the sphere (away from the
+// pole -z, where caps-iso is singular) and unit views at 0..87 degrees from them.
+void random_world_inputs(std::uint32_t count, std::vector<float>& normals, std::vector<float>& views);
+
+struct BenchTask {
+    BenchJob job;
+    ggxcl::SampleParams params;
+};
+
+class DeviceTimer {
+public:
+    // Buffers for `count` samples (the world job uses at most 2^22, with
+    // random normals over the sphere and views within 87 degrees of them).
+    DeviceTimer(ggxcl::Sampler& sampler, std::uint32_t count);
+    // Warms every task up, then runs `repeats` rounds of all tasks in turn,
+    // so that the machine's drift spreads over all of them alike and their
+    // ratios stay meaningful on a noisy machine.
+    std::vector<Timing> time_interleaved(const std::vector<BenchTask>& tasks, int repeats);
+    std::uint32_t count_of(BenchJob job) const;
+
+private:
+    cl::Event launch(BenchJob job, const ggxcl::SampleParams& params, std::uint64_t seed);
+
+    ggxcl::Sampler& sampler_;
+    std::uint32_t count_, world_count_;
+    ggxcl::DeviceOutputs write_out_, world_out_;
+    ggxcl::DeviceInputs world_in_;
+    cl::Buffer sums_;
+};
+
+} // namespace ggxapp

@@ -1,0 +1,65 @@
+"""plot_bench.py - the two charts of `ggx bench` from its CSV:
+  SPEED_ERROR.png: ns per sample (x, write job) against the 99th percentile
+                   angle error of m and o against the reference (y);
+  SPEED_RMSE.png:  ns per sample (x, fused estimator) against the RMSE of the
+                   albedo table at equal time (y).
+One point per method and precision mode (color: method, marker: mode); both
+axes logarithmic.  Lower left is better.
+
+Usage: python3 plot_bench.py BENCH.csv SPEED_ERROR.png SPEED_RMSE.png TITLE
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+METHODS = ["ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"]
+COLORS = dict(zip(METHODS, ["#7f7f7f", "#1f77b4", "#17becf", "#d62728", "#ff7f0e", "#2ca02c"]))
+MARKERS = {"precise": "o", "fast": "s", "relaxed": "^", "native": "x"}
+
+
+def rows_of(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def chart(rows, job, y_column, y_label, title, out_path):
+    fig, ax = plt.subplots(figsize=(8, 5.5), dpi=100)
+    for row in rows:
+        if row["job"] != job or not row[y_column] or row["precision"] not in MARKERS:
+            continue
+        x, y = float(row["ns_median"]), max(float(row[y_column]), 1e-9)
+        ax.scatter(x, y, color=COLORS[row["method"]], marker=MARKERS[row["precision"]], s=55)
+        ax.annotate(row["method"], (x, y), textcoords="offset points", xytext=(5, 4), fontsize=7)
+    for method in METHODS:
+        ax.scatter([], [], color=COLORS[method], marker="o", label=method)
+    for mode, marker in MARKERS.items():
+        ax.scatter([], [], color="black", marker=marker, label=mode)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("ns per sample (median)")
+    ax.set_ylabel(y_label)
+    ax.set_title(title, fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, ncol=2, loc="best")
+    fig.tight_layout()
+    temp = out_path + ".tmp.png"
+    fig.savefig(temp)
+    os.replace(temp, out_path)
+
+
+def main():
+    csv_path, speed_error, speed_rmse, title = sys.argv[1:5]
+    rows = rows_of(csv_path)
+    chart(rows, "write", "angle_p99", "angle error of m and o, 99th percentile (rad)",
+          "Speed against numerical error (m + pdf_m written) - " + title, speed_error)
+    chart(rows, "furnace", "rmse_at_budget", "RMSE per cell of the albedo table at equal time",
+          "Speed against statistical error (fused estimator) - " + title, speed_rmse)
+
+
+if __name__ == "__main__":
+    main()

@@ -44,7 +44,8 @@ std::vector<std::string> parse_list(const std::string& flag, const std::string& 
     std::string joined, name;
     for (const std::string& a : allowed)
         joined += (joined.empty() ? "" : ", ") + a;
-    while (std::getline(in, name, ','))
+    bool empty_item = text.empty() || text.front() == ',' || text.back() == ',' || text.find(",,") != std::string::npos;
+    while (!empty_item && std::getline(in, name, ','))
         if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
             throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
         else

@@ -44,10 +44,10 @@ GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, f
 {
     // Stretch the tangential part of i by alpha (blog: "warp to the hemisphere configuration").
     float iz = ggx_dot(i, n);
-    float ti = ggx_t_about(i, n, alpha);
-    ggx_vec3 v = ggx_scale(ggx_stretch_about(i, n, alpha), 1.0f / ti);
+    float ti = ggx_t_about(i, n, alpha), inv_ti = 1.0f / ti;
+    ggx_vec3 v = ggx_scale(ggx_stretch_about(i, n, alpha), inv_ti);
     // A cap around +z with the height of v above the surface, then the half-turn onto n.
-    ggx_vec3 c_std = ggx_sample_cap(iz / ti, u1, u2);
+    ggx_vec3 c_std = ggx_sample_cap(iz * inv_ti, u1, u2);
     ggx_vec3 w = ggx_vec3_make(n.x, n.y, n.z + 1.0f);
     ggx_vec3 c = ggx_add(ggx_scale(w, ggx_dot(w, c_std) / w.z), ggx_scale(c_std, -1.0f));
     ggx_vec3 h = ggx_add(c, v);                                   // standard-space half vector

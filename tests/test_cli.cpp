@@ -129,6 +129,15 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"histogram --method caps --of x" + out, "--of"},
         {"histogram --method caps --precision turbo" + out, "--precision"},
         {"bench --repeats 2", "--repeats"},
+        {"bench --methods walter", "--methods"},
+        {"bench --methods caps,", "--methods"},
+        {"bench --precisions turbo", "--precisions"},
+        {"bench --jobs write,read", "--jobs"},
+        {"bench --alpha 0.2,0.5", "--alpha"},
+        {"bench --theta 95", "--theta"},
+        {"bench --scene 1", "--scene"},
+        {"bench -n 2^31", "-n"},
+        {"bench --csv /no/such/folder/b.csv", "--csv"},
         {"devices --verbose", "--verbose"},
         {"histogram --method caps --out /no/such/folder/h", "--out"},
         {"demo -n 0 --out " + (scratch() / "d").string(), "-n"},
@@ -147,6 +156,46 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
     }
 }
 
+
+TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown report")
+{
+    fs::path dir = scratch() / "bench";
+    fs::create_directories(dir);
+    Run run = ggx("bench --methods caps,heitz --precisions fast --jobs write,furnace,world -n 2^16 "
+                  "--native-count 2^14 --repeats 5 --scene 2 --cell-samples 2^10 --no-startup --csv " +
+                  (dir / "b.csv").string() + " --charts " + (dir / "b").string() + " --markdown " +
+                  (dir / "B.md").string());
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    std::stringstream csv(read_all(dir / "b.csv"));
+    std::string line;
+    std::getline(csv, line);
+    CHECK(line.rfind("method,precision,job,ns_median", 0) == 0);
+    int device_rows = 0, native_rows = 0, ceiling_rows = 0;
+    while (std::getline(csv, line)) {
+        std::stringstream fields(line);
+        std::string method, precision, job, ns;
+        std::getline(fields, method, ',');
+        std::getline(fields, precision, ',');
+        std::getline(fields, job, ',');
+        std::getline(fields, ns, ',');
+        CAPTURE(line);
+        CHECK(std::stod(ns) > 0.0);
+        device_rows += precision == "fast";
+        native_rows += precision == "native";
+        ceiling_rows += precision == "native-vectorized";
+    }
+    CHECK(device_rows == 6);  // 2 methods x 3 jobs
+    CHECK(native_rows == 6);
+    CHECK(ceiling_rows == 1);
+    std::string md = read_all(dir / "B.md");
+    for (const char* part : {"## Targets", "## Speed (ns per sample)", "b-speed-error.png", "b-speed-rmse.png",
+                             "| caps | fast |", "| heitz | native |", "ggx bench --methods caps,heitz"})
+        CHECK(md.find(part) != std::string::npos);
+    for (const char* png : {"b-speed-error.png", "b-speed-rmse.png"})
+        CHECK(read_all(dir / png).substr(1, 3) == "PNG");
+    fs::remove_all(dir);
+}
 
 TEST_CASE("ggx sample writes .csv with a header and .ply point clouds")
 {

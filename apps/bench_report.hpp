@@ -18,6 +18,7 @@ struct BenchRow {
     bool has_error = false;       // numerical error measured
     NumericalError error;
     double variance = 0;          // albedo estimator variance per sample (0: not measured)
+    double mean_albedo = 0;       // mean over the table's cells of the albedo estimate
 };
 
 struct StartupTiming {

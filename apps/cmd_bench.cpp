@@ -116,9 +116,12 @@ void measure_device(ggxcl::Sampler& sampler, const Plan& plan, const BenchComman
             row.has_error = true;
             row.error = numerical_error(sampler, p.method, p.precision);
         }
-        if (!cmd.no_accuracy && tasks[t].job == BenchJob::furnace)
-            row.variance = albedo_scene_variance(sampler, p.method, p.precision, report.scene_size,
-                                                 report.samples_per_cell).variance;
+        if (!cmd.no_accuracy && tasks[t].job == BenchJob::furnace) {
+            SceneVariance scene =
+                albedo_scene_variance(sampler, p.method, p.precision, report.scene_size, report.samples_per_cell);
+            row.variance = scene.variance;
+            row.mean_albedo = scene.mean_albedo;
+        }
         report.rows.push_back(row);
     }
 }
@@ -140,7 +143,7 @@ void measure_native(const Plan& plan, BenchReport& report)
             for (const BenchRow& device : report.rows)
                 if (job == BenchJob::furnace && device.method == name && device.precision == "precise" &&
                     device.job == "furnace")
-                    row.variance = device.variance;
+                    row.variance = device.variance, row.mean_albedo = device.mean_albedo;
             std::cerr << "  " << name << " native " << job_text << ": " << row.timing.median << " ns\n";
             report.rows.push_back(row);
         }

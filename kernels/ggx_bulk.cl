@@ -5,7 +5,7 @@
 //   GGX_METHOD=<id>                  which sampler (see ggx_samplers.h)
 //   GGX_WRITE_{M,O,PDF_M,PDF_O,WEIGHT}=0|1   fields to compute and store
 //   GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1   parameters read per sample from buffers
-//   GGX_ISOTROPIC=0|1, GGX_BELOW_HORIZON=0|1, GGX_WORLD_SPACE=0|1   what the request needs
+//   GGX_ISOTROPIC, GGX_BELOW_HORIZON, GGX_WORLD_SPACE, GGX_NORMAL_IS_Z=0|1   what the request needs
 // Arrays are planar: component c of sample j is at [c * stride + j].
 // One sample per work-item.  Each kernel comes in two forms: the main one
 // for whole work-groups, whose loads and stores go to consecutive addresses

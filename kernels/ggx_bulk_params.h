@@ -23,6 +23,8 @@
 #ifndef GGX_WORLD_SPACE
 #define GGX_WORLD_SPACE 0
 #endif
+// GGX_NORMAL_IS_Z=1 (default 0, see ggx_sample_caps_iso.h): the uniform
+// normal is exactly (0, 0, 1).
 
 GGX_INLINE ggx_vec3 ggx_load3(__global const float* p, uint j, uint stride)
 {
@@ -71,6 +73,8 @@ GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
 #endif
 #if GGX_PER_SAMPLE_NORMAL
     p.normal = ggx_load3(normal_in, j, stride);
+#elif GGX_NORMAL_IS_Z
+    p.normal = ggx_vec3_make(0.0f, 0.0f, 1.0f);
 #else
     p.normal = ggx_vec3_make(normal_x, normal_y, normal_z);
 #endif

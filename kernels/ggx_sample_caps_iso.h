@@ -8,6 +8,15 @@
 
 #include "ggx_sample_caps.h"
 
+// Build option GGX_NORMAL_IS_Z=1 promises n = (0, 0, 1): the projections
+// about n are then the tangent-space ones and the half-turn about w = 2z
+// negates x and y, so caps-iso becomes caps with its cap turned by pi,
+// without the per-sample work about a general n (which IEEE float math
+// cannot fold away at compile time).
+#ifndef GGX_NORMAL_IS_Z
+#define GGX_NORMAL_IS_Z 0
+#endif
+
 // The isotropic stretch about n: the tangential part of x scaled by alpha.
 GGX_INLINE ggx_vec3 ggx_stretch_about(ggx_vec3 x, ggx_vec3 n, float alpha)
 {
@@ -40,8 +49,21 @@ GGX_INLINE float ggx_inv_iz_plus_t_about(ggx_vec3 i, ggx_vec3 n, float alpha, fl
 #endif
 }
 
+// caps-iso about n = +z (see GGX_NORMAL_IS_Z).
+GGX_INLINE ggx_sample ggx_sample_caps_iso_z(ggx_vec3 i, float alpha, float u1, float u2)
+{
+    float ti = ggx_t(i, alpha, alpha);
+    ggx_vec3 v = ggx_scale(ggx_stretch(i, alpha, alpha), 1.0f / ti);
+    ggx_vec3 c = ggx_sample_cap(v.z, u1, u2);
+    ggx_vec3 h = ggx_vec3_make(v.x - c.x, v.y - c.y, v.z + c.z);  // the half-turn about z, then c + v
+    return ggx_finish_vndf_sample(i, h, alpha, alpha, ti, ggx_inv_iz_plus_t(i.z, ti, alpha, alpha, i));
+}
+
 GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
 {
+#if GGX_NORMAL_IS_Z
+    return ggx_sample_caps_iso_z(i, alpha, u1, u2);
+#endif
     // Stretch the tangential part of i by alpha (blog: "warp to the hemisphere configuration").
     float iz = ggx_dot(i, n);
     float ti = ggx_t_about(i, n, alpha), inv_ti = 1.0f / ti;
@@ -49,7 +71,8 @@ GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, f
     // A cap around +z with the height of v above the surface, then the half-turn onto n.
     ggx_vec3 c_std = ggx_sample_cap(iz * inv_ti, u1, u2);
     ggx_vec3 w = ggx_vec3_make(n.x, n.y, n.z + 1.0f);
-    ggx_vec3 c = ggx_add(ggx_scale(w, ggx_dot(w, c_std) / w.z), ggx_scale(c_std, -1.0f));
+    float inv_wz = 1.0f / w.z;  // a reciprocal, not a division per sample: w is uniform when n is
+    ggx_vec3 c = ggx_add(ggx_scale(w, ggx_dot(w, c_std) * inv_wz), ggx_scale(c_std, -1.0f));
     ggx_vec3 h = ggx_add(c, v);                                   // standard-space half vector
     // Unstretch: m = normalize(alpha h_t + hz n); D(m) = |A h|^4/(pi alpha^2 |h|^4).
     ggx_vec3 a = ggx_stretch_about(h, n, alpha);
@@ -70,6 +93,9 @@ GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, f
 // (the blog's appendix writes the same as alpha^2 / (4 pi N^2 sigma)).
 GGX_INLINE float ggx_pdf_caps_iso(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
 {
+#if GGX_NORMAL_IS_Z
+    return ggx_pdf_vndf_reflection(i, o, alpha, alpha);
+#endif
     ggx_vec3 m = ggx_half_vector(i, o);
     float mz = ggx_dot(m, n);
     float s = ggx_tangential2(m, n, mz) / (alpha * alpha) + mz * mz;

@@ -17,6 +17,7 @@ Action add_demo_command(CLI::App& app);
 Action add_merge_command(CLI::App& app);
 Action add_histogram_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
+Action add_stress_command(CLI::App& app);
 
 // The command line as typed (program name shortened to `ggx`), for reports.
 void remember_command_line(int argc, char** argv);

@@ -15,7 +15,8 @@ int main(int argc, char** argv)
     app.require_subcommand(1);
     std::vector<ggxapp::Action> actions = {ggxapp::add_devices_command(app), ggxapp::add_sample_command(app),
                                            ggxapp::add_histogram_command(app), ggxapp::add_demo_command(app),
-                                           ggxapp::add_merge_command(app), ggxapp::add_bench_command(app)};
+                                           ggxapp::add_merge_command(app), ggxapp::add_bench_command(app),
+                                           ggxapp::add_stress_command(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,87 @@
+// stress_grid.cpp - the cases of the stability map.
+#include "stress_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "reference_bridge.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+constexpr float one_below = 1.0f - 5.9604644775390625e-8f;  // 1 - 2^-24, the largest uniform
+constexpr double phi_degrees = 35.0;
+
+// The view with cos theta = c from n (exactly along, across and against it
+// at c = 1, 0, -1), turned by phi about n in the frame (t, b, n).
+ggxcl::Vec3 view_about(const ggxref::Vec3& n, double c)
+{
+    const double rad = 3.14159265358979323846 / 180.0;
+    double sin_theta = std::sqrt(std::max(0.0, 1.0 - c * c));
+    ggxref::Vec3 t = std::fabs(n.z) == 1.0 ? ggxref::Vec3{1, 0, 0} : ggxref::any_perpendicular(n);
+    ggxref::Vec3 b = ggxref::cross(n, t);
+    ggxref::Vec3 side = std::cos(phi_degrees * rad) * t + std::sin(phi_degrees * rad) * b;
+    ggxref::Vec3 v = c * n + sin_theta * side;
+    return {float(v.x), float(v.y), float(v.z)};
+}
+
+std::vector<std::array<float, 2>> roughness_pairs(ggxcl::Method method, double a)
+{
+    float f = float(a), tiny = float(a * 1e-3);
+    if (method == ggxcl::Method::caps_iso)
+        return {{f, f}};
+    return {{f, f}, {f, tiny}, {tiny, f}, {0.0f, f}, {f, 0.0f}};
+}
+
+std::vector<ggxref::Vec3> normals_for(ggxcl::Method method)
+{
+    if (method != ggxcl::Method::caps_iso)
+        return {{0, 0, 1}};
+    return {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, ggxref::normalize({1, 1, 1}), ggxref::normalize({0.3, -0.2, -0.93})};
+}
+
+std::vector<std::array<float, 2>> uniform_pairs()
+{
+    std::vector<std::array<float, 2>> pairs;
+    for (float a : {0.0f, 0.5f, one_below})
+        for (float b : {0.0f, 0.5f, one_below})
+            pairs.push_back({a, b});
+    for (std::uint64_t k = 0; k < 8; ++k) {
+        std::array<double, 2> u = ggxref::uniforms(2026, k);
+        pairs.push_back({float(u[0]), float(u[1])});
+    }
+    return pairs;
+}
+
+} // namespace
+
+StressAxes stress_axes()
+{
+    StressAxes axes;
+    for (int r = 0; r <= 18; ++r)
+        axes.alphas.push_back(std::pow(10.0, -7.0 + 0.5 * r));
+    const double rad = 3.14159265358979323846 / 180.0;
+    axes.cos_theta = {1.0, std::cos(30 * rad), std::cos(60 * rad), std::cos(85 * rad), std::cos(89 * rad), 1e-4, 1e-7,
+                      0.0, std::cos(95 * rad), std::cos(120 * rad), std::cos(150 * rad), std::cos(179 * rad), -1.0};
+    for (double c : axes.cos_theta)
+        axes.theta_degrees.push_back(std::acos(c) / rad);
+    return axes;
+}
+
+std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axes)
+{
+    std::vector<StressCase> cases;
+    const std::vector<std::array<float, 2>> uniforms = uniform_pairs();
+    for (int row = 0; row < int(axes.alphas.size()); ++row)
+        for (int column = 0; column < int(axes.cos_theta.size()); ++column) {
+            for (const ggxref::Vec3& n : normals_for(method))
+                for (const auto& alpha : roughness_pairs(method, axes.alphas[row]))
+                    for (const auto& u : uniforms)
+                        cases.push_back({alpha[0], alpha[1], view_about(n, axes.cos_theta[column]),
+                                         {float(n.x), float(n.y), float(n.z)}, u[0], u[1], row, column});
+        }
+    return cases;
+}
+
+} // namespace ggxapp

@@ -1,0 +1,45 @@
+// stress_run.hpp - the stability map's measurements: every case of
+// stress_grid run on the device (kernels/ggx_stress.cl) and on the host
+// reference, each outcome classified by failure kind, and the counts per
+// cell (alpha row x theta column) of the map.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <ggxcl/ggxcl.hpp>
+
+#include "stress_grid.hpp"
+
+namespace ggxapp {
+
+// What can go wrong with one sample:
+//   nan_inf          NaN or Inf in m, o, pdf_m, pdf_o or the weight;
+//   not_unit         m or o off unit length by more than 1e-5;
+//   m_below          the microfacet normal at or below the surface (m.n <= 0);
+//   wasted           o at or below the surface (o.n <= 0): not a failure, counted;
+//   pdf_nonpositive  a usable sample (o above the surface) with pdf_o or pdf_m <= 0;
+//   pdf_mismatch     its pdf recomputed from (i, o) differs from pdf_o by more than 1e-3 (relative) or is not finite.
+enum FailureKind { nan_inf, not_unit, m_below, wasted, pdf_nonpositive, pdf_mismatch, failure_kinds };
+const char* failure_name(int kind);
+
+struct StressOutcome {
+    double m[3], o[3], pdf_m, pdf_o, weight, pdf_again;
+};
+std::array<bool, failure_kinds> classify(const StressOutcome& outcome, const ggxcl::Vec3& normal);
+
+struct CellCounts {
+    std::uint64_t cases = 0;
+    std::array<std::uint64_t, failure_kinds> failures{};
+};
+
+// Counts per cell, row-major: cell (row, column) at row * columns + column.
+using StressMap = std::vector<CellCounts>;
+
+StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+                            const std::vector<StressCase>& cases, const StressAxes& axes);
+StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
+
+} // namespace ggxapp

@@ -1,0 +1,33 @@
+// ggx_stress.cl - the stability map's kernel (`ggx stress`): every case
+// brings its own roughness, view, normal and uniforms, so that the sweep
+// reaches inputs the runtime's validation refuses (an alpha of exactly 0)
+// and uniforms at the edges of [0, 1).  It calls the device functions as a
+// user kernel would (ggx_sample_<method> through ggx_sample_method, and
+// ggx_pdf_method on the returned direction).
+//
+// Build options: GGX_METHOD=<id>, GGX_FAST_SINCOS=0|1 (and optionally
+// -cl-fast-relaxed-math).  Layout: case j reads in[k * count + j] for
+// k = ax, ay, view x, y, z, normal x, y, z, u1, u2 and writes
+// out[k * count + j] for k = m x, y, z, o x, y, z, pdf_m, pdf_o, weight,
+// pdf of o recomputed from (i, o).
+#include "ggx_samplers.h"
+
+#ifndef GGX_METHOD
+#error "build with -DGGX_METHOD=<method id>"
+#endif
+
+__kernel void ggx_stress(uint count, __global const float* restrict in, __global float* restrict out)
+{
+    uint j = (uint)get_global_id(0);
+    if (j >= count)
+        return;
+    float ax = in[j], ay = in[count + j];
+    ggx_vec3 i = ggx_vec3_make(in[2u * count + j], in[3u * count + j], in[4u * count + j]);
+    ggx_vec3 n = ggx_vec3_make(in[5u * count + j], in[6u * count + j], in[7u * count + j]);
+    float u1 = in[8u * count + j], u2 = in[9u * count + j];
+    ggx_sample s = ggx_sample_method(GGX_METHOD, n, i, ax, ay, u1, u2);
+    float values[10] = {s.m.x, s.m.y, s.m.z, s.o.x, s.o.y, s.o.z, s.pdf_m, s.pdf_o, s.weight,
+                        ggx_pdf_method(GGX_METHOD, n, i, s.o, ax, ay)};
+    for (uint k = 0; k < 10u; ++k)
+        out[k * count + j] = values[k];
+}

@@ -104,14 +104,23 @@ void measure_device(ggxcl::Sampler& sampler, const Plan& plan, const BenchComman
                 p.method = ggxcl::parse_method(name);
                 p.precision = ggxcl::parse_precision(mode);
                 tasks.push_back({job_named(job_text), p});
+                if (mode == "fast" && job_text == "write") {  // the guards' cost, side by side
+                    p.guards = false;
+                    tasks.push_back({BenchJob::write, p});
+                }
             }
     std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
     DeviceTimer timer(sampler, report.count);
     std::vector<Timing> timings = timer.time_interleaved(tasks, report.repeats);
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         const ggxcl::SampleParams& p = tasks[t].params;
-        BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), std::string(ggxcl::precision_name(p.precision)),
+        std::string precision(ggxcl::precision_name(p.precision));
+        BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), p.guards ? precision : precision + "-unguarded",
                               job_name(tasks[t].job), timings[t]);
+        if (!p.guards) {  // measured for its speed only
+            report.rows.push_back(row);
+            continue;
+        }
         if (!cmd.no_accuracy && tasks[t].job == BenchJob::write) {
             row.has_error = true;
             row.error = numerical_error(sampler, p.method, p.precision);

@@ -88,7 +88,10 @@ void run_stress(const StressCommand& cmd)
     std::cout << "| method | side | cases";
     for (int k = 0; k < failure_kinds; ++k)
         std::cout << " | " << failure_name(k);
-    std::cout << " |\n|---|---|---|---|---|---|---|---|---|\n";
+    std::cout << " |\n|---|---|---|";
+    for (int k = 0; k < failure_kinds; ++k)
+        std::cout << "---|";
+    std::cout << "\n";
     for (ggxcl::Method method : methods) {
         std::string name(ggxcl::method_name(method));
         std::vector<StressCase> cases = stress_cases(method, axes);

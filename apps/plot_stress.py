@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-KINDS = ["nan_inf", "not_unit", "m_below", "wasted", "pdf_nonpositive", "pdf_mismatch"]
+KINDS = ["nan_inf", "fallback", "not_unit", "m_below", "wasted", "pdf_nonpositive", "pdf_mismatch"]
 
 
 def load(path):
@@ -44,7 +44,7 @@ def plot_method(rows, method, out_path):
     alphas = sorted({r["alpha"] for r in mine}, key=float)
     thetas = sorted({r["theta_degrees"] for r in mine}, key=float)
     sides = ["device", "host"]
-    fig, axes = plt.subplots(len(sides), len(KINDS), figsize=(24, 8.5), dpi=80, squeeze=False,
+    fig, axes = plt.subplots(len(sides), len(KINDS), figsize=(28, 8.5), dpi=80, squeeze=False,
                              constrained_layout=True)
     for i, side in enumerate(sides):
         for k, kind in enumerate(KINDS):

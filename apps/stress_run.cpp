@@ -53,10 +53,11 @@ void count(StressMap& map, const StressAxes& axes, const StressCase& c, const St
         cell.failures[k] += kinds[k];
 }
 
-std::string stress_options(ggxcl::Method method, ggxcl::Precision precision)
+std::string stress_options(ggxcl::Method method, ggxcl::Precision precision, bool guards)
 {
     std::string options = "-DGGX_METHOD=" + std::to_string(int(method)) +
-                          " -DGGX_FAST_SINCOS=" + (precision == ggxcl::Precision::precise ? "0" : "1");
+                          " -DGGX_FAST_SINCOS=" + (precision == ggxcl::Precision::precise ? "0" : "1") +
+                          " -DGGX_GUARDS=" + (guards ? "1" : "0");
     return precision == ggxcl::Precision::relaxed ? options + " -cl-fast-relaxed-math" : options;
 }
 
@@ -64,7 +65,8 @@ std::string stress_options(ggxcl::Method method, ggxcl::Precision precision)
 
 const char* failure_name(int kind)
 {
-    static const char* names[] = {"nan_inf", "not_unit", "m_below", "wasted", "pdf_nonpositive", "pdf_mismatch"};
+    static const char* names[] = {"nan_inf",         "fallback",   "not_unit", "m_below", "wasted",
+                                  "pdf_nonpositive", "pdf_mismatch"};
     return names[kind];
 }
 
@@ -73,6 +75,10 @@ std::array<bool, failure_kinds> classify(const StressOutcome& s, const ggxcl::Ve
     std::array<bool, failure_kinds> kinds{};
     kinds[nan_inf] = !all_finite(s);
     if (kinds[nan_inf])
+        return kinds;
+    kinds[fallback] = s.pdf_m == 0.0 && s.pdf_o == 0.0 && s.weight == 0.0 && s.m[0] == normal.x &&
+                      s.m[1] == normal.y && s.m[2] == normal.z;
+    if (kinds[fallback])
         return kinds;
     kinds[not_unit] = std::fabs(length3(s.m) - 1.0) > 1e-5 || std::fabs(length3(s.o) - 1.0) > 1e-5;
     kinds[m_below] = dot3(s.m, normal) <= 0.0;
@@ -86,12 +92,12 @@ std::array<bool, failure_kinds> classify(const StressOutcome& s, const ggxcl::Ve
 }
 
 StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
-                            const std::vector<StressCase>& cases, const StressAxes& axes)
+                            const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
 {
     const std::size_t n = cases.size();
     std::vector<float> in = planar_inputs(cases), out(output_planes * n);
     cl::Program program(sampler.context(), ggxcl::kernel_source("ggx_stress.cl"));
-    program.build({sampler.device()}, stress_options(method, precision).c_str());
+    program.build({sampler.device()}, stress_options(method, precision, guards).c_str());
     cl::Kernel kernel(program, "ggx_stress");
     cl::Buffer in_buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
                          in.data());

@@ -17,12 +17,14 @@ namespace ggxapp {
 
 // What can go wrong with one sample:
 //   nan_inf          NaN or Inf in m, o, pdf_m, pdf_o or the weight;
+//   fallback         the documented answer outside the domain (m = n, pdfs and weight 0;
+//                    kernels/ggx_guards.h): the kinds below are not judged for it;
 //   not_unit         m or o off unit length by more than 1e-5;
 //   m_below          the microfacet normal at or below the surface (m.n <= 0);
 //   wasted           o at or below the surface (o.n <= 0): not a failure, counted;
 //   pdf_nonpositive  a usable sample (o above the surface) with pdf_o or pdf_m <= 0;
 //   pdf_mismatch     its pdf recomputed from (i, o) differs from pdf_o by more than 1e-3 (relative) or is not finite.
-enum FailureKind { nan_inf, not_unit, m_below, wasted, pdf_nonpositive, pdf_mismatch, failure_kinds };
+enum FailureKind { nan_inf, fallback, not_unit, m_below, wasted, pdf_nonpositive, pdf_mismatch, failure_kinds };
 const char* failure_name(int kind);
 
 struct StressOutcome {
@@ -38,8 +40,9 @@ struct CellCounts {
 // Counts per cell, row-major: cell (row, column) at row * columns + column.
 using StressMap = std::vector<CellCounts>;
 
+// guards = false builds the kernel with GGX_GUARDS=0 (what the map looks like without them).
 StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
-                            const std::vector<StressCase>& cases, const StressAxes& axes);
+                            const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true);
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
 
 } // namespace ggxapp

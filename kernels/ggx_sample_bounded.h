@@ -32,7 +32,7 @@ GGX_INLINE float ggx_bounded_inv_sum(ggx_vec3 i, float k, float ti, float ax, fl
 #endif
 }
 
-GGX_INLINE ggx_sample ggx_sample_bounded(ggx_vec3 i, float ax, float ay, float u1, float u2)
+GGX_INLINE ggx_sample ggx_draw_bounded(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
     float ti = ggx_t(i, ax, ay);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);
@@ -41,6 +41,14 @@ GGX_INLINE ggx_sample ggx_sample_bounded(ggx_vec3 i, float ax, float ay, float u
     ggx_vec3 h = ggx_add(c, v);
     float inv_sum = ggx_bounded_inv_sum(i, k, ti, ax, ay);        // supplement sec. 2: D / (2 (k iz + t))
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
+}
+
+// The bounded sample, or the fallback of ggx_guards.h (a roughness axis of
+// 0, the view exactly opposite the normal).
+GGX_INLINE ggx_sample ggx_sample_bounded(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    float key = ggx_bounded_inv_sum(i, ggx_bounded_k(i, ax, ay), ggx_t(i, ax, ay), ax, ay);
+    return ggx_guard(ggx_draw_bounded(i, ax, ay, u1, u2), key, ax, ay);
 }
 
 // pdf of o from (i, o): D(m)/(2 (k iz + t)) inside the bounded cap, 0 outside.
@@ -56,7 +64,7 @@ GGX_INLINE float ggx_pdf_bounded(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
     float o_std_z = 2.0f * ggx_dot(v, m_std) * m_std.z - v.z;
     int inside = o_std_z >= -k * v.z - 1e-6f;
     float pdf = 0.5f * ggx_D(m, ax, ay) * ggx_bounded_inv_sum(i, k, ti, ax, ay);
-    return inside ? pdf : 0.0f;
+    return ggx_guard_pdf(inside ? pdf : 0.0f, ax, ay);
 }
 
 #endif

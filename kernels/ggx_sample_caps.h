@@ -4,6 +4,7 @@
 #ifndef GGX_SAMPLE_CAPS_H
 #define GGX_SAMPLE_CAPS_H
 
+#include "ggx_guards.h"
 #include "ggx_sincos.h"
 #include "ggx_vndf.h"
 
@@ -18,7 +19,7 @@ GGX_INLINE ggx_vec3 ggx_sample_cap(float lower, float u1, float u2)
     return ggx_vec3_make(sin_theta * cos_phi, sin_theta * sin_phi, z);
 }
 
-GGX_INLINE ggx_sample ggx_sample_caps(ggx_vec3 i, float ax, float ay, float u1, float u2)
+GGX_INLINE ggx_sample ggx_draw_caps(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
     float ti = ggx_t(i, ax, ay);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // warp to the hemisphere configuration
@@ -28,9 +29,16 @@ GGX_INLINE ggx_sample ggx_sample_caps(ggx_vec3 i, float ax, float ay, float u1, 
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 
+// The caps sample, or the fallback of ggx_guards.h (a roughness axis of 0,
+// the view exactly opposite the normal).
+GGX_INLINE ggx_sample ggx_sample_caps(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    return ggx_guard(ggx_draw_caps(i, ax, ay, u1, u2), ggx_inv_iz_plus_t(i.z, ggx_t(i, ax, ay), ax, ay, i), ax, ay);
+}
+
 GGX_INLINE float ggx_pdf_caps(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
-    return ggx_pdf_vndf_reflection(i, o, ax, ay);
+    return ggx_guard_pdf(ggx_pdf_vndf_reflection(i, o, ax, ay), ax, ay);
 }
 
 #endif

@@ -50,7 +50,7 @@ GGX_INLINE float ggx_inv_iz_plus_t_about(ggx_vec3 i, ggx_vec3 n, float alpha, fl
 }
 
 // caps-iso about n = +z (see GGX_NORMAL_IS_Z).
-GGX_INLINE ggx_sample ggx_sample_caps_iso_z(ggx_vec3 i, float alpha, float u1, float u2)
+GGX_INLINE ggx_sample ggx_draw_caps_iso_z(ggx_vec3 i, float alpha, float u1, float u2)
 {
     float ti = ggx_t(i, alpha, alpha);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, alpha, alpha), 1.0f / ti);
@@ -59,11 +59,8 @@ GGX_INLINE ggx_sample ggx_sample_caps_iso_z(ggx_vec3 i, float alpha, float u1, f
     return ggx_finish_vndf_sample(i, h, alpha, alpha, ti, ggx_inv_iz_plus_t(i.z, ti, alpha, alpha, i));
 }
 
-GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
+GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
 {
-#if GGX_NORMAL_IS_Z
-    return ggx_sample_caps_iso_z(i, alpha, u1, u2);
-#endif
     // Stretch the tangential part of i by alpha (blog: "warp to the hemisphere configuration").
     float iz = ggx_dot(i, n);
     float ti = ggx_t_about(i, n, alpha), inv_ti = 1.0f / ti;
@@ -89,19 +86,36 @@ GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, f
     return out;
 }
 
+// The caps-iso sample, or the fallback of ggx_guards.h about n (alpha 0, the
+// view exactly opposite n, and n = -z, where the half-turn about n + z is undefined).
+GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
+{
+#if GGX_NORMAL_IS_Z
+    float key = ggx_inv_iz_plus_t(i.z, ggx_t(i, alpha, alpha), alpha, alpha, i);
+    return ggx_guard(ggx_draw_caps_iso_z(i, alpha, u1, u2), key, alpha, alpha);
+#else
+    float iz = ggx_dot(i, n);
+    float key = ggx_inv_iz_plus_t_about(i, n, alpha, iz, ggx_t_about(i, n, alpha)) / (n.z + 1.0f);
+    ggx_sample s = ggx_draw_caps_iso(n, i, alpha, u1, u2);
+    // + m.z: a view within rounding of -n about a tilted n makes h = c + v vanish, and m NaN.
+    return ggx_guard_about(s, key + s.m.z, n, alpha, alpha);
+#endif
+}
+
 // pdf of o from (n, i, o): D(m)/(2 (iz + t)) with m the half vector, all about n
 // (the blog's appendix writes the same as alpha^2 / (4 pi N^2 sigma)).
 GGX_INLINE float ggx_pdf_caps_iso(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
 {
 #if GGX_NORMAL_IS_Z
-    return ggx_pdf_vndf_reflection(i, o, alpha, alpha);
+    return ggx_guard_pdf(ggx_pdf_vndf_reflection(i, o, alpha, alpha), alpha, alpha);
 #endif
     ggx_vec3 m = ggx_half_vector(i, o);
     float mz = ggx_dot(m, n);
     float s = ggx_tangential2(m, n, mz) / (alpha * alpha) + mz * mz;
     float D = mz > 0.0f ? 1.0f / (GGX_PI * alpha * alpha * s * s) : 0.0f;
     float iz = ggx_dot(i, n);
-    return 0.5f * D * ggx_inv_iz_plus_t_about(i, n, alpha, iz, ggx_t_about(i, n, alpha));
+    return ggx_guard_pdf(0.5f * D * ggx_inv_iz_plus_t_about(i, n, alpha, iz, ggx_t_about(i, n, alpha)), alpha,
+                         alpha);
 }
 
 #endif

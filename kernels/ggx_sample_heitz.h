@@ -6,6 +6,7 @@
 #ifndef GGX_SAMPLE_HEITZ_H
 #define GGX_SAMPLE_HEITZ_H
 
+#include "ggx_guards.h"
 #include "ggx_sincos.h"
 #include "ggx_vndf.h"
 
@@ -27,7 +28,7 @@ GGX_INLINE ggx_vec3 ggx_tangent_or_x(float sx, float sy)
     return ggx_vec3_make(pole ? 1.0f : sx * inv, pole ? 0.0f : sy * inv, 0.0f);
 }
 
-GGX_INLINE ggx_sample ggx_sample_heitz(ggx_vec3 i, float ax, float ay, float u1, float u2)
+GGX_INLINE ggx_sample ggx_draw_heitz(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
     float ti = ggx_t(i, ax, ay);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // stretched view (Heitz 2018, sec. 2)
@@ -45,7 +46,7 @@ GGX_INLINE ggx_sample ggx_sample_heitz(ggx_vec3 i, float ax, float ay, float u1,
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 
-GGX_INLINE ggx_sample ggx_sample_heitz2017(ggx_vec3 i, float ax, float ay, float u1, float u2)
+GGX_INLINE ggx_sample ggx_draw_heitz2017(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
     float ti = ggx_t(i, ax, ay);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // stretch view (report sec. 1)
@@ -67,14 +68,27 @@ GGX_INLINE ggx_sample ggx_sample_heitz2017(ggx_vec3 i, float ax, float ay, float
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 
+// The samples, or the fallback of ggx_guards.h (a roughness axis of 0, the
+// view exactly opposite the normal).
+GGX_INLINE ggx_sample ggx_sample_heitz(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    return ggx_guard(ggx_draw_heitz(i, ax, ay, u1, u2), ggx_inv_iz_plus_t(i.z, ggx_t(i, ax, ay), ax, ay, i), ax, ay);
+}
+
+GGX_INLINE ggx_sample ggx_sample_heitz2017(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    return ggx_guard(ggx_draw_heitz2017(i, ax, ay, u1, u2), ggx_inv_iz_plus_t(i.z, ggx_t(i, ax, ay), ax, ay, i), ax,
+                     ay);
+}
+
 GGX_INLINE float ggx_pdf_heitz(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
-    return ggx_pdf_vndf_reflection(i, o, ax, ay);
+    return ggx_guard_pdf(ggx_pdf_vndf_reflection(i, o, ax, ay), ax, ay);
 }
 
 GGX_INLINE float ggx_pdf_heitz2017(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
-    return ggx_pdf_vndf_reflection(i, o, ax, ay);
+    return ggx_guard_pdf(ggx_pdf_vndf_reflection(i, o, ax, ay), ax, ay);
 }
 
 #endif

@@ -3,10 +3,11 @@
 #ifndef GGX_SAMPLE_NDF_H
 #define GGX_SAMPLE_NDF_H
 
+#include "ggx_guards.h"
 #include "ggx_math.h"
 #include "ggx_sincos.h"
 
-GGX_INLINE ggx_sample ggx_sample_ndf(ggx_vec3 i, float ax, float ay, float u1, float u2)
+GGX_INLINE ggx_sample ggx_draw_ndf(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
     ggx_sample out;
     // Walter eq. 35-36 in slope space: |slope|/alpha = r = sqrt(u1/(1-u1)), phi = 2 pi u2.
@@ -23,11 +24,18 @@ GGX_INLINE ggx_sample ggx_sample_ndf(ggx_vec3 i, float ax, float ay, float u1, f
     out.pdf_m = one_minus_u1 * one_minus_u1 / (GGX_PI * ax * ay * mz * mz * mz);
     // Reflection Jacobian |dm/do| = 1/(4 |o.m|) = 1/(4 |i.m|) (Walter eq. 14).
     float i_dot_m = ggx_dot(i, out.m);
-    out.pdf_o = out.pdf_m / (4.0f * fabs(i_dot_m));
+    // (i.m = 0: a view across the surface reflected about m = n, o = -i has no density.)
+    out.pdf_o = i_dot_m != 0.0f ? out.pdf_m / (4.0f * fabs(i_dot_m)) : 0.0f;
     // weight = D G2 / (4 iz) / pdf_o = G2 (i.m) / (iz mz); a back-facing m reflects nothing.
     float g2 = ggx_G2(i, out.o, ax, ay);
     out.weight = (i_dot_m > 0.0f && i.z > 0.0f) ? g2 * i_dot_m / (i.z * mz) : 0.0f;
     return out;
+}
+
+// The ndf sample, or the fallback of ggx_guards.h (a roughness axis of 0).
+GGX_INLINE ggx_sample ggx_sample_ndf(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    return ggx_guard(ggx_draw_ndf(i, ax, ay, u1, u2), 1.0f, ax, ay);
 }
 
 // pdf of o recomputed from (i, o): the sampled m is the half vector flipped
@@ -37,7 +45,7 @@ GGX_INLINE float ggx_pdf_ndf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
     ggx_vec3 h = ggx_half_vector(i, o);
     ggx_vec3 m = ggx_scale(h, h.z < 0.0f ? -1.0f : 1.0f);
     float i_dot_m = fabs(ggx_dot(i, m));
-    return i_dot_m > 0.0f ? ggx_D(m, ax, ay) * m.z / (4.0f * i_dot_m) : 0.0f;
+    return ggx_guard_pdf(i_dot_m > 0.0f ? ggx_D(m, ax, ay) * m.z / (4.0f * i_dot_m) : 0.0f, ax, ay);
 }
 
 #endif

@@ -46,7 +46,7 @@ GGX_INLINE float ggx_pdf_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, 
         return ggx_pdf_caps_iso(n, i, o, ax);
     if (method == GGX_METHOD_BOUNDED)
         return ggx_pdf_bounded(i, o, ax, ay);
-    return ggx_pdf_vndf_reflection(i, o, ax, ay);
+    return ggx_pdf_caps(i, o, ax, ay);  // heitz, heitz2017 and caps share the VNDF reflection pdf
 }
 
 #endif

@@ -9,6 +9,34 @@ namespace ggxref {
 namespace {
 
 double sq(double x) { return x * x; }
+
+bool roughness_ok(const Params& p)
+{
+    return p.ax > 0.0 && p.ay > 0.0 && std::isfinite(p.ax) && std::isfinite(p.ay);
+}
+
+bool finite(const Sample& s)
+{
+    const double values[] = {s.m.x, s.m.y, s.m.z, s.o.x, s.o.y, s.o.z, s.pdf_m, s.pdf_o, s.weight};
+    for (double v : values)
+        if (!std::isfinite(v))
+            return false;
+    return true;
+}
+
+// The documented answer outside a method's domain (docs/STABILITY.md): m = o = n, pdfs and
+// weight 0 ("no sample").
+Sample fallback(Method method, const Params& p)
+{
+    const Vec3 n = method == Method::caps_iso ? p.n : Vec3{0.0, 0.0, 1.0};
+    return {n, n, 0.0, 0.0, 0.0};
+}
+
+double guarded(const Params& p, double pdf)
+{
+    return roughness_ok(p) && std::isfinite(pdf) ? pdf : 0.0;
+}
+
 // Every method but NDF sampling draws from a spherical cap (VNDF or bounded).
 bool is_vndf_cap(Method method) { return method != Method::ndf; }
 
@@ -97,9 +125,9 @@ const char* method_name(Method method)
 
 double pdf_m(Method method, const Params& p, const Vec3& m)
 {
-    if (method == Method::bounded && !in_bounded_cap(p, m))
+    if (!roughness_ok(p) || (method == Method::bounded && !in_bounded_cap(p, m)))
         return 0.0;
-    return density_m(method, p, m);
+    return guarded(p, density_m(method, p, m));
 }
 
 // The half vector h = normalize(i + o) is the only normal reflecting i to o; NDF sampling may have
@@ -111,23 +139,29 @@ double pdf_o(Method method, const Params& p, const Vec3& o)
         return 0.0;
     const Vec3 h = normalize(v);
     const double hz = height(method, p, h);
+    if (!roughness_ok(p))
+        return 0.0;
     if (method == Method::ndf) {  // D mz / (4 |i.m|) with |i.m| = |i + o| / 2, well conditioned near o = -i
         const Vec3 m = hz > 0.0 ? h : -h;
-        return hz == 0.0 ? 0.0 : D(m, p.ax, p.ay) * m.z / (2.0 * length(v));
+        return hz == 0.0 ? 0.0 : guarded(p, D(m, p.ax, p.ay) * m.z / (2.0 * length(v)));
     }
     if (hz <= 0.0 || (method == Method::bounded && !in_bounded_cap(p, h)))
         return 0.0;
-    return density_o(method, p, h);
+    return guarded(p, density_o(method, p, h));
 }
 
+namespace {
+
 // Furnace weight w = D(m) G2(i, o) / (4 iz) / pdf_o for reflections above the horizon (SPEC).
-Sample sample(Method method, const Params& p, double u1, double u2)
+Sample unguarded_sample(Method method, const Params& p, double u1, double u2)
 {
     Sample s{};
     s.m = sample_normal(method, p, u1, u2);
     s.o = reflect(p.i, s.m);
     s.pdf_m = density_m(method, p, s.m);
     s.pdf_o = density_o(method, p, s.m);
+    if (method == Method::ndf && dot(p.i, s.m) == 0.0)
+        s.pdf_o = 0.0;  // a view across the surface reflected about m = n: o = -i has no density
     const double iz = height(method, p, p.i), oz = height(method, p, s.o);
     const bool valid = iz > 0.0 && oz > 0.0 && (is_vndf_cap(method) || dot(p.i, s.m) > 0.0);
     if (!valid)
@@ -136,6 +170,26 @@ Sample sample(Method method, const Params& p, double u1, double u2)
                                                  : G2_height_correlated(p.i, s.o, p.ax, p.ay);
     s.weight = ndf(method, p, s.m) * g2 / (4.0 * iz) / s.pdf_o;
     return s;
+}
+
+// The domain rule the device applies too: the visible area (iz + t)/2 must exceed 5e-21 (the view
+// exactly opposite the normal sees nothing) and caps-iso's half-turn needs 1 + nz > 1e-20.
+bool sees_enough(Method method, const Params& p)
+{
+    if (method == Method::ndf)
+        return true;
+    const bool area_ok = inv_norm(view_of(method, p), 1.0) < 1e20;
+    return method == Method::caps_iso ? area_ok && 1.0 / (1.0 + p.n.z) < 1e20 : area_ok;
+}
+
+}  // namespace
+
+Sample sample(Method method, const Params& p, double u1, double u2)
+{
+    if (!roughness_ok(p) || !sees_enough(method, p))
+        return fallback(method, p);
+    Sample s = unguarded_sample(method, p, u1, u2);
+    return finite(s) ? s : fallback(method, p);
 }
 
 }  // namespace ggxref

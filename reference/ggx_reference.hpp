@@ -27,6 +27,9 @@ struct Sample {
     double weight;        // D(m) G2(i,o) / (4 iz) / pdf_o, 0 when iz <= 0 or oz <= 0 (white furnace)
 };
 
+// Outside a method's domain (a roughness not finite and > 0; a visible area (iz + t)/2 of 5e-21 or
+// less; caps-iso with 1 + nz <= 1e-20; any result not finite) sample() returns the fallback
+// m = o = n, pdfs and weight 0, and the pdfs are 0 (docs/STABILITY.md), as the device does.
 Sample sample(Method, const Params&, double u1, double u2);       // one sample from two uniforms
 Vec3 sample_normal(Method, const Params&, double u1, double u2);  // its microfacet normal m only
 double pdf_o(Method, const Params&, const Vec3& o);               // pdf of o recomputed from (i, o) alone

@@ -1,8 +1,9 @@
 // test_furnace.cpp - the fused white-furnace estimator (Sampler::furnace):
 // its sums are those of the weights the bulk kernel stores for the same
-// samples (any count, also not a multiple of the work-group size), and its
+// samples (any count, also not a multiple of the work-group size), its
 // mean is the reference albedo within 4 standard errors for every method in
-// every precision mode.  Negative control: a range shifted by one sample
+// every precision mode, and out of the domain (a view exactly opposite the
+// normal) the guarded rerun sums the fallback weights, 0.  Negative control: a range shifted by one sample
 // does not give the same sums.
 #include <doctest/doctest.h>
 
@@ -70,6 +71,18 @@ TEST_CASE("fused mean is the reference albedo in every precision mode")
                 CHECK(std::fabs(fused.mean() - albedo) <= 4.0 * standard_error);
                 CHECK(fused.variance() > 0.0);
             }
+}
+
+TEST_CASE("a view exactly opposite the normal sees nothing: the fallback weights sum to 0, not NaN")
+{
+    for (Method method : {Method::heitz, Method::caps, Method::bounded}) {
+        ggxcl::SampleParams p = ggxtest::to_library(method, ggxtest::make_params(0.3, 0.3, 0.0), ggxcl::Precision::fast);
+        p.view = {0.0f, 0.0f, -1.0f};
+        ggxcl::FurnaceSums fused = ggxtest::sampler().furnace(p, {5, 0, 5000});
+        CAPTURE(ggxref::method_name(method));
+        CHECK(fused.sum == 0.0);
+        CHECK(fused.sum_of_squares == 0.0);
+    }
 }
 
 TEST_CASE("negative control: a range shifted by one sample gives other sums")

@@ -1,7 +1,12 @@
-// test_stress.cpp - the stability map (`ggx stress`): its classification of
-// one outcome by failure kind on hand-made outcomes, and the tool's CSV
-// (one row per method, side and cell; every cell with all its cases; no
-// count above the cases) and bad input.
+// test_stress.cpp - the stability map (`ggx stress`) and the guards:
+//  - the classification of one outcome by failure kind, on hand-made outcomes;
+//  - no NaN or Inf anywhere on the stress grid, every method, device (in
+//    each precision mode) and host reference;
+//  - the fallback (docs/STABILITY.md) happens exactly where documented: a
+//    roughness axis of 0, the view exactly opposite the normal (the VNDF
+//    family), caps-iso at n = (0, 0, -1); never inside the domain;
+//  - the tool's CSV (one row per method, side and cell; every case counted)
+//    and bad input.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -10,6 +15,8 @@
 
 #include "cli_runner.hpp"
 #include "stress_run.hpp"
+
+#include <ggxcl/ggxcl.hpp>
 
 namespace {
 
@@ -34,6 +41,49 @@ std::vector<std::string> kinds_of(const StressOutcome& outcome)
 
 using Names = std::vector<std::string>;
 
+ggxcl::Sampler& sampler()
+{
+    static ggxcl::Sampler instance;
+    return instance;
+}
+
+// Totals of one kind over a map.
+std::uint64_t total(const ggxapp::StressMap& map, int kind)
+{
+    std::uint64_t n = 0;
+    for (const ggxapp::CellCounts& cell : map)
+        n += kind < 0 ? cell.cases : cell.failures[kind];
+    return n;
+}
+
+// The cases of the full grid that `keep` selects.
+template <class Keep>
+std::vector<ggxapp::StressCase> cases_where(ggxcl::Method method, const ggxapp::StressAxes& axes, Keep keep)
+{
+    std::vector<ggxapp::StressCase> kept;
+    for (const ggxapp::StressCase& c : ggxapp::stress_cases(method, axes))
+        if (keep(c))
+            kept.push_back(c);
+    return kept;
+}
+
+bool is_vndf(ggxcl::Method method)
+{
+    return method != ggxcl::Method::ndf;
+}
+
+// Device (fast mode) and host maps of `cases`, with a label for failures.
+struct BothSides {
+    ggxapp::StressMap device, host;
+};
+
+BothSides both_sides(ggxcl::Method method, const std::vector<ggxapp::StressCase>& cases,
+                     const ggxapp::StressAxes& axes)
+{
+    return {ggxapp::device_stress_map(sampler(), method, ggxcl::Precision::fast, cases, axes),
+            ggxapp::host_stress_map(method, cases, axes)};
+}
+
 } // namespace
 
 TEST_CASE("classify names each failure kind and nothing else")
@@ -45,6 +95,9 @@ TEST_CASE("classify names each failure kind and nothing else")
     s = good();
     s.weight = std::numeric_limits<double>::infinity();
     CHECK(kinds_of(s) == Names{"nan_inf"});
+    s = good();
+    s.m[0] = s.m[1] = 0.0, s.m[2] = 1.0, s.pdf_m = s.pdf_o = s.weight = 0.0;
+    CHECK(kinds_of(s) == Names{"fallback"});
     s = good();
     s.m[2] = 1.001;
     CHECK(kinds_of(s) == Names{"not_unit"});
@@ -74,7 +127,7 @@ TEST_CASE("ggx stress writes one row per method, side and cell, with every case 
     std::stringstream csv(ggxtest::read_all(dir / "map.csv"));
     std::string line;
     std::getline(csv, line);
-    CHECK(line == "method,side,precision,alpha,theta_degrees,cases,nan_inf,not_unit,m_below,wasted,"
+    CHECK(line == "method,side,precision,alpha,theta_degrees,cases,nan_inf,fallback,not_unit,m_below,wasted,"
                   "pdf_nonpositive,pdf_mismatch");
     int rows = 0;
     while (std::getline(csv, line)) {
@@ -83,12 +136,13 @@ TEST_CASE("ggx stress writes one row per method, side and cell, with every case 
         std::string field;
         while (std::getline(fields, field, ','))
             f.push_back(field);
-        REQUIRE(f.size() == 12);
+        REQUIRE(f.size() == 13);
         CAPTURE(line);
         long cases = std::stol(f[5]);
         CHECK(cases == 85);  // caps: 5 roughness pairs x 17 uniform pairs; caps-iso: 5 normals x 17
-        for (int k = 6; k < 12; ++k)
+        for (int k = 6; k < 13; ++k)
             CHECK(std::stol(f[k]) <= cases);
+        CHECK(f[6] == "0");  // no NaN or Inf anywhere
         ++rows;
     }
     CHECK(rows == 2 * 2 * 19 * 13);  // 2 methods x (device, host) x 19 alphas x 13 views
@@ -114,4 +168,82 @@ TEST_CASE("ggx stress: bad input exits 2 naming the flag")
         CHECK(run.err.find(c.flag) != std::string::npos);
     }
     ggxtest::fs::remove_all(dir);
+}
+
+TEST_CASE("no NaN or Inf anywhere on the stress grid: every method, device in every mode, host")
+{
+    ggxapp::StressAxes axes = ggxapp::stress_axes();
+    for (ggxcl::Method method : ggxcl::all_methods) {
+        std::vector<ggxapp::StressCase> cases = ggxapp::stress_cases(method, axes);
+        CAPTURE(ggxcl::method_name(method));
+        for (ggxcl::Precision precision :
+             {ggxcl::Precision::precise, ggxcl::Precision::fast, ggxcl::Precision::relaxed}) {
+            CAPTURE(ggxcl::precision_name(precision));
+            CHECK(total(ggxapp::device_stress_map(sampler(), method, precision, cases, axes), ggxapp::nan_inf) == 0);
+        }
+        CHECK(total(ggxapp::host_stress_map(method, cases, axes), ggxapp::nan_inf) == 0);
+    }
+}
+
+TEST_CASE("negative control: without the guards the same grid has NaN and Inf")
+{
+    ggxapp::StressAxes axes = ggxapp::stress_axes();
+    for (ggxcl::Method method : {ggxcl::Method::caps, ggxcl::Method::caps_iso}) {
+        std::vector<ggxapp::StressCase> cases = ggxapp::stress_cases(method, axes);
+        CAPTURE(ggxcl::method_name(method));
+        CHECK(total(ggxapp::device_stress_map(sampler(), method, ggxcl::Precision::fast, cases, axes, false),
+                    ggxapp::nan_inf) > 1000);
+    }
+}
+
+TEST_CASE("the fallback happens where documented: a roughness axis of 0")
+{
+    ggxapp::StressAxes axes = ggxapp::stress_axes();
+    for (ggxcl::Method method : ggxcl::all_methods) {
+        if (method == ggxcl::Method::caps_iso)
+            continue;  // isotropic: its grid has no zero axis (the runtime refuses alpha 0 anyway)
+        auto cases = cases_where(method, axes, [](const ggxapp::StressCase& c) { return c.ax == 0.0f || c.ay == 0.0f; });
+        BothSides maps = both_sides(method, cases, axes);
+        CAPTURE(ggxcl::method_name(method));
+        CHECK(total(maps.device, ggxapp::fallback) == cases.size());
+        CHECK(total(maps.host, ggxapp::fallback) == cases.size());
+    }
+}
+
+TEST_CASE("the fallback happens where documented: the view exactly opposite the normal, caps-iso at n = -z")
+{
+    ggxapp::StressAxes axes = ggxapp::stress_axes();
+    for (ggxcl::Method method : ggxcl::all_methods) {
+        auto opposite = cases_where(method, axes, [](const ggxapp::StressCase& c) {
+            return c.ax > 0.0f && c.ay > 0.0f && c.normal.z == 1.0f && c.view.z == -1.0f;
+        });
+        BothSides maps = both_sides(method, opposite, axes);
+        CAPTURE(ggxcl::method_name(method));
+        REQUIRE(!opposite.empty());
+        std::uint64_t expected = is_vndf(method) ? opposite.size() : 0;  // ndf samples normals, not visible ones
+        CHECK(total(maps.device, ggxapp::fallback) == expected);
+        CHECK(total(maps.host, ggxapp::fallback) == expected);
+    }
+    auto pole = cases_where(ggxcl::Method::caps_iso, axes,
+                            [](const ggxapp::StressCase& c) { return c.normal.z == -1.0f; });
+    BothSides maps = both_sides(ggxcl::Method::caps_iso, pole, axes);
+    CHECK(total(maps.device, ggxapp::fallback) == pole.size());
+    CHECK(total(maps.host, ggxapp::fallback) == pole.size());
+}
+
+TEST_CASE("inside the domain nothing falls back: alpha 1e-3..1e2, views up to 89 degrees")
+{
+    ggxapp::StressAxes axes = ggxapp::stress_axes();
+    for (ggxcl::Method method : ggxcl::all_methods) {
+        auto inside = cases_where(method, axes, [&](const ggxapp::StressCase& c) {
+            return std::min(c.ax, c.ay) >= 1e-3f && axes.cos_theta[c.column] >= std::cos(89.0 * 3.14159265358979 / 180) &&
+                   c.normal.z > -0.99f;
+        });
+        BothSides maps = both_sides(method, inside, axes);
+        CAPTURE(ggxcl::method_name(method));
+        REQUIRE(!inside.empty());
+        CHECK(total(maps.device, ggxapp::fallback) == 0);
+        CHECK(total(maps.host, ggxapp::fallback) == 0);
+        CHECK(total(maps.device, ggxapp::nan_inf) == 0);
+    }
 }

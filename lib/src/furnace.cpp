@@ -17,6 +17,18 @@ namespace {
 constexpr std::uint64_t samples_per_launch = 1u << 26;
 constexpr std::uint64_t samples_per_item = 8;  // GGX_FURNACE_PER_ITEM of ggx_furnace.cl
 
+// The partial sums of one launch added in double; false if one of them is not finite.
+bool add_partial_sums(const std::vector<float>& host, std::size_t items, double& sum, double& sum_of_squares)
+{
+    for (std::size_t g = 0; g < items; ++g) {
+        if (!std::isfinite(host[g]) || !std::isfinite(host[items + g]))
+            return false;
+        sum += host[g];
+        sum_of_squares += host[items + g];
+    }
+    return true;
+}
+
 } // namespace
 
 double FurnaceSums::mean() const
@@ -75,11 +87,17 @@ FurnaceSums Sampler::furnace(const SampleParams& params, const SampleRange& rang
         for (std::uint64_t start = 0; start < range.count; start += per_launch) {
             std::uint64_t n = std::min(per_launch, range.count - start);
             std::size_t used = furnace_items(n);
-            enqueue_furnace(queue_, params, {range.seed, range.first + start, n}, sums);
-            queue_.enqueueReadBuffer(sums, CL_TRUE, 0, 2 * used * sizeof(float), host.data());
-            for (std::size_t g = 0; g < used; ++g) {
-                total.sum += host[g];
-                total.sum_of_squares += host[used + g];
+            SampleParams attempt = params;
+            for (bool guarded : {false, true}) {  // unguarded first; a non-finite sum reruns with guards
+                attempt.guards = guarded;
+                enqueue_furnace(queue_, attempt, {range.seed, range.first + start, n}, sums);
+                queue_.enqueueReadBuffer(sums, CL_TRUE, 0, 2 * used * sizeof(float), host.data());
+                double sum = 0.0, sum_of_squares = 0.0;
+                if (add_partial_sums(host, used, sum, sum_of_squares) || guarded) {
+                    total.sum += sum;
+                    total.sum_of_squares += sum_of_squares;
+                    break;
+                }
             }
         }
         return 0;

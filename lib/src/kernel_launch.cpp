@@ -26,7 +26,7 @@ std::string build_options(const SampleParams& params, unsigned write_mask, const
                flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr);
     options += flag("GGX_ISOTROPIC", is_isotropic(params, inputs)) +
                flag("GGX_BELOW_HORIZON", !is_above_horizon(params, inputs)) +
-               flag("GGX_WORLD_SPACE", params.world_space) +
+               flag("GGX_WORLD_SPACE", params.world_space) + flag("GGX_GUARDS", params.guards) +
                flag("GGX_NORMAL_IS_Z", inputs.normal() == nullptr && params.normal.x == 0.0f &&
                                            params.normal.y == 0.0f && params.normal.z == 1.0f);
     return options;

@@ -38,6 +38,11 @@ struct SampleParams {
     // normal (Duff et al. 2017) and transform in and out; caps-iso needs none.
     // Isotropic only (alpha_x == alpha_y): the normal alone fixes no tangent.
     bool world_space = false;
+    // Outside its domain (a roughness of 0, the view exactly opposite the
+    // normal, ...) every method returns the fallback m = n, o = the mirror of
+    // i, pdfs and weight 0 (docs/STABILITY.md).  false drops these guards:
+    // NaN and Inf become possible there; it exists to measure their cost.
+    bool guards = true;
 };
 
 // Whether the view is measured against params.normal (caps-iso, world space)

@@ -128,7 +128,12 @@ public:
 
     // Enqueues it for one range (count < 2^32): `sums` receives
     // 2 * furnace_items(count) floats, the partial weight sums of the
-    // work-items, then their partial sums of squared weights.
+    // work-items, then their partial sums of squared weights.  With
+    // params.guards (the default) the kernel applies the fallbacks of
+    // docs/STABILITY.md but does not vectorize on PoCL (the 8 guarded samples
+    // of a work-item get paired by LLVM's SLP vectorizer); furnace() therefore
+    // runs it unguarded and reruns a launch with guards only when one of its
+    // sums is not finite.
     cl::Event enqueue_furnace(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
                               const cl::Buffer& sums, const DeviceInputs& inputs = {},
                               const std::vector<cl::Event>* wait = nullptr);

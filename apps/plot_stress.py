@@ -44,7 +44,7 @@ def plot_method(rows, method, out_path):
     alphas = sorted({r["alpha"] for r in mine}, key=float)
     thetas = sorted({r["theta_degrees"] for r in mine}, key=float)
     sides = ["device", "host"]
-    fig, axes = plt.subplots(len(sides), len(KINDS), figsize=(28, 8.5), dpi=80, squeeze=False,
+    fig, axes = plt.subplots(len(sides), len(KINDS), figsize=(28, 8.5), dpi=56, squeeze=False,
                              constrained_layout=True)
     for i, side in enumerate(sides):
         for k, kind in enumerate(KINDS):

@@ -29,6 +29,10 @@ GGX_INLINE float ggx_vndf_weight(ggx_vec3 i, ggx_vec3 o, float ax, float ay, flo
 // pdf(m) = pdf(o) 4 (i.m).
 GGX_INLINE ggx_sample ggx_finish_vndf_sample(ggx_vec3 i, ggx_vec3 h, float ax, float ay, float ti, float inv_sum)
 {
+    // Keep h above the horizon (pbrt-v4 floors at 1e-6; views below the horizon need all of
+    // (0, 1e-6), so 1e-30): the last uniform, 1 - 2^-24, rounds onto the edge of the cap or
+    // disk, where m would lie exactly in the surface.
+    h.z = fmax(h.z, 1e-30f);
     ggx_sample out;
     out.m = ggx_normalize(ggx_stretch(h, ax, ay));
     out.o = ggx_reflect(i, out.m);

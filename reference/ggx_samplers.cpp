@@ -14,7 +14,9 @@ constexpr double pi = 3.14159265358979323846;
 // Warp to the hemisphere configuration: ih = normalize(ax ix, ay iy, iz) (Dupuy-Benyoub Sec. 2, step 1).
 Vec3 stretch(const Vec3& i, double ax, double ay) { return normalize({ax * i.x, ay * i.y, i.z}); }
 // Warp a hemisphere normal back to the ellipsoid: m = normalize(ax mh.x, ay mh.y, mh.z) (step 3).
-Vec3 unstretch(const Vec3& mh, double ax, double ay) { return normalize({ax * mh.x, ay * mh.y, mh.z}); }
+// The standard-space normal is kept at least 1e-30 above the horizon, as the device keeps it: the
+// last uniform, 1 - 2^-24, rounds onto the edge of the cap or disk.
+Vec3 unstretch(const Vec3& mh, double ax, double ay) { return normalize({ax * mh.x, ay * mh.y, std::max(mh.z, 1e-30)}); }
 
 // Uniform direction on the spherical cap z in (-lower, 1] about +z (Dupuy-Benyoub Listing 3).
 Vec3 cap_point(double u1, double u2, double lower)
@@ -46,7 +48,7 @@ Vec3 sample_heitz(const Params& p, double u1, double u2)
     const double s = 0.5 * (1.0 + ih.z);
     const double t2 = (1.0 - s) * std::sqrt(1.0 - t1 * t1) + s * r * std::sin(phi);
     const Vec3 mh = t1 * T1 + t2 * T2 + std::sqrt(std::max(0.0, 1.0 - t1 * t1 - t2 * t2)) * ih;
-    return normalize({p.ax * mh.x, p.ay * mh.y, std::max(0.0, mh.z)});
+    return unstretch(mh, p.ax, p.ay);
 }
 
 // Heitz 2017 report: the two half disks chosen with probabilities a = 1/(1 + ih.z) and 1 - a
@@ -64,7 +66,7 @@ Vec3 sample_heitz2017(const Params& p, double u1, double u2)
     const double P1 = r * std::cos(phi);
     const double P2 = r * std::sin(phi) * (upper ? 1.0 : V.z);                                 // Eq. 5
     const Vec3 N = P1 * T1 + P2 * T2 + std::sqrt(std::max(0.0, 1.0 - P1 * P1 - P2 * P2)) * V;  // Eq. 6
-    return normalize({p.ax * N.x, p.ay * N.y, std::max(0.0, N.z)});
+    return unstretch(N, p.ax, p.ay);
 }
 
 // Dupuy & Benyoub 2023: reflected direction c uniform on the cap z > -ih.z, m = halfway(ih, c).
@@ -94,8 +96,8 @@ Vec3 sample_caps_iso(const Params& p, double u1, double u2)
     const Vec3 w = n + Vec3{0.0, 0.0, 1.0};
     const Vec3 c = (dot(w, cstd) / w.z) * w - cstd;  // cap about n
     const Vec3 mh = c + ih;
-    const double mhz = dot(n, mh);
-    return normalize(alpha * (mh - mhz * n) + mhz * n);  // unstretch the tangential part
+    const double mhz = std::max(dot(n, mh), 1e-30);  // kept above the horizon, as unstretch() does
+    return normalize(alpha * (mh - dot(n, mh) * n) + mhz * n);  // unstretch the tangential part
 }
 
 }  // namespace

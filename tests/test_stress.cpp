@@ -231,19 +231,31 @@ TEST_CASE("the fallback happens where documented: the view exactly opposite the 
     CHECK(total(maps.host, ggxapp::fallback) == pole.size());
 }
 
-TEST_CASE("inside the domain nothing falls back: alpha 1e-3..1e2, views up to 89 degrees")
+TEST_CASE("inside the domain nothing fails: alpha 1e-2..1e2 (anisotropy to 1:1000 within it), views to 89 degrees")
 {
     ggxapp::StressAxes axes = ggxapp::stress_axes();
+    const double cos_89 = std::cos(89.0 * 3.14159265358979323846 / 180.0);
     for (ggxcl::Method method : ggxcl::all_methods) {
         auto inside = cases_where(method, axes, [&](const ggxapp::StressCase& c) {
-            return std::min(c.ax, c.ay) >= 1e-3f && axes.cos_theta[c.column] >= std::cos(89.0 * 3.14159265358979 / 180) &&
-                   c.normal.z > -0.99f;
+            return std::min(c.ax, c.ay) >= 1e-2f && axes.cos_theta[c.column] >= cos_89 - 1e-12 && c.normal.z > -0.99f;
         });
         BothSides maps = both_sides(method, inside, axes);
         CAPTURE(ggxcl::method_name(method));
         REQUIRE(!inside.empty());
-        CHECK(total(maps.device, ggxapp::fallback) == 0);
-        CHECK(total(maps.host, ggxapp::fallback) == 0);
-        CHECK(total(maps.device, ggxapp::nan_inf) == 0);
+        for (int kind = 0; kind < ggxapp::failure_kinds; ++kind) {
+            if (kind == ggxapp::wasted)
+                continue;  // not a failure
+            CAPTURE(ggxapp::failure_name(kind));
+            CHECK(total(maps.host, kind) == 0);
+            // caps-iso about a tilted n: m.n of a microfacet at the cap's edge is 0 within float
+            // rounding of world-space vectors (docs/STABILITY.md); about +z it is exact.
+            if (method == ggxcl::Method::caps_iso && kind == ggxapp::m_below)
+                continue;
+            CHECK(total(maps.device, kind) == 0);
+        }
     }
+    auto about_z = cases_where(ggxcl::Method::caps_iso, axes, [&](const ggxapp::StressCase& c) {
+        return c.ax >= 1e-2f && axes.cos_theta[c.column] >= cos_89 - 1e-12 && c.normal.z == 1.0f;
+    });
+    CHECK(total(both_sides(ggxcl::Method::caps_iso, about_z, axes).device, ggxapp::m_below) == 0);
 }

@@ -71,10 +71,10 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, flo
     float inv_wz = 1.0f / w.z;  // a reciprocal, not a division per sample: w is uniform when n is
     ggx_vec3 c = ggx_add(ggx_scale(w, ggx_dot(w, c_std) * inv_wz), ggx_scale(c_std, -1.0f));
     ggx_vec3 h = ggx_add(c, v);                                   // standard-space half vector
-    // Unstretch: m = normalize(alpha h_t + hn n) with h.n kept above the horizon (as in
-    // ggx_vndf.h); D(m) = |A h|^4/(pi alpha^2 |h|^4).
-    float hn = ggx_dot(h, n);
-    ggx_vec3 a = ggx_add(ggx_scale(ggx_add(h, ggx_scale(n, -hn)), alpha), ggx_scale(n, fmax(hn, 1e-30f)));
+    // Unstretch: m = normalize(alpha h_t + hz n); D(m) = |A h|^4/(pi alpha^2 |h|^4).  (No floor on
+    // h.n here, unlike ggx_vndf.h: about a general n, m.n at the cap's edge is 0 only to within
+    // the rounding of world-space vectors anyway, and a vanishing h must stay NaN for the guard.)
+    ggx_vec3 a = ggx_stretch_about(h, n, alpha);
     float ratio = ggx_dot(a, a) / ggx_dot(h, h);
     float inv_sum = ggx_inv_iz_plus_t_about(i, n, alpha, iz, ti);
     ggx_sample out;

@@ -96,8 +96,8 @@ Vec3 sample_caps_iso(const Params& p, double u1, double u2)
     const Vec3 w = n + Vec3{0.0, 0.0, 1.0};
     const Vec3 c = (dot(w, cstd) / w.z) * w - cstd;  // cap about n
     const Vec3 mh = c + ih;
-    const double mhz = std::max(dot(n, mh), 1e-30);  // kept above the horizon, as unstretch() does
-    return normalize(alpha * (mh - dot(n, mh) * n) + mhz * n);  // unstretch the tangential part
+    const double mhz = dot(n, mh);
+    return normalize(alpha * (mh - mhz * n) + mhz * n);  // unstretch the tangential part
 }
 
 }  // namespace

@@ -247,15 +247,12 @@ TEST_CASE("inside the domain nothing fails: alpha 1e-2..1e2 (anisotropy to 1:100
                 continue;  // not a failure
             CAPTURE(ggxapp::failure_name(kind));
             CHECK(total(maps.host, kind) == 0);
-            // caps-iso about a tilted n: m.n of a microfacet at the cap's edge is 0 within float
-            // rounding of world-space vectors (docs/STABILITY.md); about +z it is exact.
+            // caps-iso's general form (any n; the runtime uses the exact tangent-space form for
+            // n = +z): m.n of a microfacet at the cap's edge is 0 only to within the rounding of
+            // world-space vectors (docs/STABILITY.md).
             if (method == ggxcl::Method::caps_iso && kind == ggxapp::m_below)
                 continue;
             CHECK(total(maps.device, kind) == 0);
         }
     }
-    auto about_z = cases_where(ggxcl::Method::caps_iso, axes, [&](const ggxapp::StressCase& c) {
-        return c.ax >= 1e-2f && axes.cos_theta[c.column] >= cos_89 - 1e-12 && c.normal.z == 1.0f;
-    });
-    CHECK(total(both_sides(ggxcl::Method::caps_iso, about_z, axes).device, ggxapp::m_below) == 0);
 }

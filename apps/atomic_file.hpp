@@ -28,4 +28,11 @@ private:
 // Writes `text` to `path` through an AtomicFile.
 void write_text_file(const std::string& path, const std::string& text);
 
+// Makes an interrupted or aborted run (SIGINT, SIGTERM, SIGHUP, SIGABRT) remove the temporary
+// files of the AtomicFiles still open before it ends with that signal (and
+// so does a library that calls exit() mid-run), and
+// makes a write past the file-size limit fail with EFBIG (an error message)
+// rather than kill the process (SIGXFSZ).  Called once by main().
+void install_interrupt_cleanup();
+
 } // namespace ggxapp

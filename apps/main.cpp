@@ -4,12 +4,14 @@
 
 #include <ggxcl/ggxcl.hpp>
 
+#include "atomic_file.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv)
 {
     ggxapp::remember_command_line(argc, argv);
+    ggxapp::install_interrupt_cleanup();
     CLI::App app{"ggx - GGX microfacet importance samplers on OpenCL devices (ggxcl " +
                  std::string(ggxcl::version()) + ")"};
     app.require_subcommand(1);

@@ -36,10 +36,12 @@ struct Run {
     std::string err;  // what it printed on stderr
 };
 
-// Runs `ggx ARGS` with stdout discarded; stderr goes through `err_file`.
-inline Run run_ggx(const std::string& args, const fs::path& err_file)
+// Runs `ggx ARGS` (or, with prefix_binary false, the shell command ARGS) with
+// stdout discarded; stderr goes through `err_file`.
+inline Run run_ggx(const std::string& args, const fs::path& err_file, bool prefix_binary = true)
 {
-    std::string command = std::string(GGX_BINARY) + " " + args + " >/dev/null 2>" + err_file.string();
+    std::string command = (prefix_binary ? std::string(GGX_BINARY) + " " : std::string()) + args + " >/dev/null 2>" +
+                          err_file.string();
     int raw = std::system(command.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_all(err_file)};
 }

@@ -1,0 +1,101 @@
+// test_faults.cpp - runtime faults of the `ggx` tool (issue 6): each gets a
+// clear message on stderr, exit status 1 (or the signal that stopped it),
+// and leaves no file behind, neither under the final name nor as a
+// temporary:
+//  - no OpenCL platform at all (the ICD loader pointed at an empty folder):
+//    the message says how to install PoCL;
+//  - the disk fills up (a file-size limit, RLIMIT_FSIZE, below the output):
+//    "File too large", no partial file;
+//  - an interrupted run (SIGINT while sampling): no file, temporary removed.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <csignal>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <thread>
+#include <vector>
+
+#include "cli_runner.hpp"
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch()
+{
+    static fs::path dir = ggxtest::scratch_dir("faults");
+    return dir;
+}
+
+bool folder_empty(const fs::path& dir)
+{
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().filename() != "stderr.txt")
+            return false;
+    return true;
+}
+
+} // namespace
+
+TEST_CASE("no OpenCL platform: exit 1 and a message that says how to install PoCL")
+{
+    fs::path empty = scratch() / "no-icd";
+    fs::create_directories(empty);
+    for (const std::string& args : {std::string("devices"),
+                                    "sample --method caps -n 10 --out " + (scratch() / "x.npy").string()}) {
+        ggxtest::Run run = ggxtest::run_ggx("env OCL_ICD_VENDORS=" + empty.string() + " " + GGX_BINARY + " " + args,
+                                            scratch() / "stderr.txt", false);
+        CAPTURE(args);
+        CAPTURE(run.err);
+        CHECK(run.status == 1);
+        CHECK(run.err.find("no OpenCL platform") != std::string::npos);
+        CHECK(run.err.find("pocl-opencl-icd") != std::string::npos);
+    }
+    fs::remove_all(empty);
+    CHECK(folder_empty(scratch()));
+}
+
+TEST_CASE("a full disk (file-size limit): exit 1, 'File too large', no partial file")
+{
+    const std::string args = "sample --method caps --precision fast -n 1e6 --fields m,o --out ";
+    // Warm the kernel cache first: PoCL writes its cache under the same limit.
+    REQUIRE(ggxtest::run_ggx(args + (scratch() / "warm.npy").string(), scratch() / "stderr.txt").status == 0);
+    fs::remove(scratch() / "warm.npy");
+    fs::remove(scratch() / "warm.json");
+    ggxtest::Run run = ggxtest::run_ggx("sh -c 'ulimit -f 4096; exec " + std::string(GGX_BINARY) + " " + args +
+                                            (scratch() / "big.npy").string() + "'",
+                                        scratch() / "stderr.txt", false);
+    CAPTURE(run.err);
+    CHECK(run.status == 1);
+    CHECK(run.err.find("File too large") != std::string::npos);
+    CHECK(run.err.find("big.npy") != std::string::npos);
+    CHECK(folder_empty(scratch()));
+}
+
+TEST_CASE("an interrupted run (SIGINT) leaves no file and no temporary")
+{
+    std::string out = (scratch() / "int.npy").string();
+    std::vector<std::string> words = {GGX_BINARY, "sample", "--method", "caps",  "--precision",
+                                      "precise",  "-n",     "2^27",     "--out", out};
+    std::vector<char*> argv;
+    for (std::string& w : words)
+        argv.push_back(w.data());
+    argv.push_back(nullptr);
+    pid_t pid;
+    REQUIRE(::posix_spawn(&pid, GGX_BINARY, nullptr, nullptr, argv.data(), environ) == 0);
+    // Wait until the run has opened its temporary output, then interrupt it.
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (folder_empty(scratch()) && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    CHECK(!folder_empty(scratch()));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    ::kill(pid, SIGINT);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == SIGINT);
+    CHECK(folder_empty(scratch()));
+}

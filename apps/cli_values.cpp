@@ -1,6 +1,7 @@
 // cli_values.cpp - strict parsers for CLI values (whole string, finite numbers).
 #include "cli_values.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <unistd.h>
@@ -42,26 +43,32 @@ bool to_double(const std::string& text, double& value)
 
 std::array<float, 2> parse_alpha(const std::string& flag, const std::string& text)
 {
-    const std::string allowed = "one or two finite numbers > 0, as AX or AX,AY";
+    const std::string allowed = "one or two numbers from 1e-30 to 1e30, as AX or AX,AY";
     std::vector<std::string> parts = split(text, ',');
     if (parts.empty() || parts.size() > 2)
         throw UsageError(flag, text, allowed);
     double values[2];
-    for (std::size_t k = 0; k < parts.size(); ++k)
-        if (!to_double(parts[k], values[k]) || !(values[k] > 0.0) || values[k] > 1e30)
+    for (std::size_t k = 0; k < parts.size(); ++k)  // (1e-30: 9e-69 would round to a float 0; fuzz/fuzz_values)
+        if (!to_double(parts[k], values[k]) || !(values[k] >= 1e-30) || values[k] > 1e30)
             throw UsageError(flag, text, allowed);
     return {float(values[0]), float(values[parts.size() - 1])};
 }
 
 std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text)
 {
-    const std::string allowed = "three finite numbers X,Y,Z, not all 0";
+    const std::string allowed = "three finite numbers X,Y,Z, not all 0 (a direction)";
     std::vector<std::string> parts = split(text, ',');
     double v[3];
     if (parts.size() != 3 || !to_double(parts[0], v[0]) || !to_double(parts[1], v[1]) || !to_double(parts[2], v[2]) ||
         (v[0] == 0 && v[1] == 0 && v[2] == 0))
         throw UsageError(flag, text, allowed);
-    return {float(v[0]), float(v[1]), float(v[2])};
+    // Only the direction matters: normalize in double (scaled first, so 1e300 or 1e-300 components
+    // neither overflow nor vanish in float; found by fuzz/fuzz_values).
+    double largest = std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])});
+    for (double& c : v)
+        c /= largest;
+    double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    return {float(v[0] / length), float(v[1] / length), float(v[2] / length)};
 }
 
 std::uint64_t parse_count(const std::string& flag, const std::string& text)

@@ -26,7 +26,7 @@ public:
 };
 
 std::array<float, 2> parse_alpha(const std::string& flag, const std::string& text);
-std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text);
+std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text);  // returned unit length
 std::uint64_t parse_count(const std::string& flag, const std::string& text);
 std::uint64_t parse_uint64(const std::string& flag, const std::string& text);
 std::uint64_t parse_whole(const std::string& flag, const std::string& text, std::uint64_t low, std::uint64_t high);

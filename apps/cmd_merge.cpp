@@ -10,6 +10,7 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "npy_file.hpp"
+#include "sidecar_reader.hpp"
 #include "sample_job.hpp"
 
 namespace ggxapp {
@@ -21,7 +22,7 @@ nlohmann::json read_sidecar(const std::string& shard)
     std::ifstream in(sidecar_path(shard));
     if (!in)
         throw UsageError("SHARD", shard, "a shard with its .json sidecar beside it");
-    return nlohmann::json::parse(in);
+    return parse_sidecar(in, shard);
 }
 
 // What must agree between shards: everything but the range and the device.
@@ -39,6 +40,8 @@ nlohmann::json merged_sidecar(const std::vector<std::string>& shards)
     std::uint64_t next = merged["first"].get<std::uint64_t>() + merged["count"].get<std::uint64_t>();
     for (std::size_t k = 1; k < shards.size(); ++k) {
         nlohmann::json doc = read_sidecar(shards[k]);
+        if (next < merged["first"].get<std::uint64_t>())  // the ranges wrapped around 2^64
+            throw UsageError("SHARD", shards[k], "shards whose ranges end before index 2^64");
         if (doc["first"].get<std::uint64_t>() != next)
             throw UsageError("SHARD", shards[k], "the shard starting at --first " + std::to_string(next));
         next += doc["count"].get<std::uint64_t>();

@@ -1,8 +1,10 @@
 // npy_file.cpp - .npy writer and reader (format: numpy.lib.format, v1.0).
 #include "npy_file.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <istream>
 #include <regex>
 #include <stdexcept>
 
@@ -58,6 +60,16 @@ void write_npy_f64(const std::string& path, std::uint64_t rows, std::uint64_t co
 NpyArray read_npy(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw std::runtime_error("cannot read '" + path + "'");
+    return parse_npy(in, path);
+}
+
+NpyArray parse_npy(std::istream& in, const std::string& path)
+{
+    in.seekg(0, std::ios::end);
+    const std::uint64_t size = std::uint64_t(in.tellg());
+    in.seekg(0, std::ios::beg);
     char preamble[10];
     if (!in.read(preamble, 10) || std::memcmp(preamble, "\x93NUMPY\x01\x00", 8) != 0)
         throw std::runtime_error("'" + path + "' is not a version 1.0 .npy file");
@@ -69,8 +81,15 @@ NpyArray read_npy(const std::string& path)
     if (!in || !std::regex_match(dict, match, shape))
         throw std::runtime_error("'" + path + "' is not a 2-D float32 C-order .npy file");
     NpyArray array;
-    array.rows = std::stoull(match[1]);
-    array.columns = std::stoull(match[2]);
+    const std::string rows = match[1], columns = match[2];
+    if (rows.size() > 19 || columns.size() > 19)  // beyond any file's size, and beyond stoull
+        throw std::runtime_error("'" + path + "' is shorter than its shape says");
+    array.rows = std::stoull(rows);
+    array.columns = std::stoull(columns);
+    // The data must be exactly what remains after the header (checked before allocating).
+    const std::uint64_t header = 10 + length, remaining = size - std::min(size, header);
+    if (array.columns != 0 && array.rows > remaining / sizeof(float) / array.columns)
+        throw std::runtime_error("'" + path + "' is shorter than its shape says");
     array.data.resize(array.rows * array.columns);
     if (!in.read(reinterpret_cast<char*>(array.data.data()), array.data.size() * sizeof(float)))
         throw std::runtime_error("'" + path + "' is shorter than its shape says");

@@ -35,7 +35,9 @@ struct NpyArray {
 // Writes a whole float64 (rows, columns) array, e.g. counts beyond 2^24.
 void write_npy_f64(const std::string& path, std::uint64_t rows, std::uint64_t columns, const std::vector<double>& data);
 
-// Reads a float32 C-order 2-D .npy; throws std::runtime_error on anything else.
+// Reads a float32 C-order 2-D .npy; throws std::runtime_error naming `path`
+// on anything else (another format, a shape its bytes do not fill).
 NpyArray read_npy(const std::string& path);
+NpyArray parse_npy(std::istream& in, const std::string& name);
 
 } // namespace ggxapp

@@ -104,6 +104,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"sample --method caps --alpha 0 -n 10" + out, "--alpha"},
         {"sample --method caps --alpha nan -n 10" + out, "--alpha"},
         {"sample --method caps --alpha 0.1,-2 -n 10" + out, "--alpha"},
+        {"sample --method caps --alpha 9e-69 -n 10" + out, "--alpha"},  // rounds to a float 0 (found by fuzzing)
         {"sample --method caps-iso --alpha 0.1,0.2 -n 10" + out, "--alpha"},
         {"sample --method caps --theta 181 -n 10" + out, "--theta"},
         {"sample --method caps --theta -1 -n 10" + out, "--theta"},
@@ -194,6 +195,36 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
         CHECK(md.find(part) != std::string::npos);
     for (const char* png : {"b-speed-error.png", "b-speed-rmse.png"})
         CHECK(read_all(dir / png).substr(1, 3) == "PNG");
+    fs::remove_all(dir);
+}
+
+TEST_CASE("ggx merge refuses a damaged shard: a sidecar without its fields, a .npy shorter than its shape")
+{
+    fs::path dir = scratch() / "damaged";
+    fs::create_directories(dir);
+    for (const char* name : {"a", "b"})
+        REQUIRE(ggx("sample --method caps -n 100 --first " + std::string(name[0] == 'a' ? "0" : "100") + " --out " +
+                    (dir / (std::string(name) + ".npy")).string())
+                    .status == 0);
+    const std::string merge = "merge --out " + (dir / "m.npy").string() + " " + (dir / "a.npy").string() + " " +
+                              (dir / "b.npy").string();
+    std::string sidecar = read_all(dir / "b.json");
+    std::ofstream(dir / "b.json") << "{\"first\": \"100\"}";
+    Run run = ggx(merge);
+    CAPTURE(run.err);
+    CHECK(run.status == 2);
+    CHECK(run.err.find("SHARD") != std::string::npos);
+    std::ofstream(dir / "b.json") << sidecar;
+    std::string npy = read_all(dir / "b.npy");
+    std::size_t at = npy.find("(100,");
+    REQUIRE(at != std::string::npos);
+    npy.replace(at, 5, "(900,");  // the shape now claims more rows than the bytes hold
+    std::ofstream(dir / "b.npy", std::ios::binary) << npy;
+    run = ggx(merge);
+    CAPTURE(run.err);
+    CHECK(run.status == 1);
+    CHECK(run.err.find("shorter than its shape says") != std::string::npos);
+    CHECK(!fs::exists(dir / "m.npy"));
     fs::remove_all(dir);
 }
 

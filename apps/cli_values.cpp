@@ -112,6 +112,28 @@ std::uint64_t parse_whole(const std::string& flag, const std::string& text, std:
     return value;
 }
 
+// Comma-separated names, each one of `allowed` ("all": every one).
+std::vector<std::string> parse_name_list(const std::string& flag, const std::string& text,
+                                    const std::vector<std::string>& allowed)
+{
+    if (text == "all")
+        return allowed;
+    std::vector<std::string> names;
+    std::stringstream in(text);
+    std::string joined, name;
+    for (const std::string& a : allowed)
+        joined += (joined.empty() ? "" : ", ") + a;
+    bool empty_item = text.empty() || text.front() == ',' || text.back() == ',' || text.find(",,") != std::string::npos;
+    while (!empty_item && std::getline(in, name, ','))
+        if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
+            throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
+        else
+            names.push_back(name);
+    if (names.empty())
+        throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
+    return names;
+}
+
 double parse_level(const std::string& flag, const std::string& text)
 {
     double value;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace ggxapp {
 
@@ -34,6 +35,11 @@ std::uint64_t parse_whole(const std::string& flag, const std::string& text, std:
 void check_writable_folder(const std::string& flag, const std::string& path);
 
 double parse_angle(const std::string& flag, const std::string& text, double low, double high);
+
+// Comma-separated names, each one of `allowed` ("all": every one, in order);
+// empty items are refused.
+std::vector<std::string> parse_name_list(const std::string& flag, const std::string& text,
+                                         const std::vector<std::string>& allowed);
 
 // A significance level strictly between 0 and 1.
 double parse_level(const std::string& flag, const std::string& text);

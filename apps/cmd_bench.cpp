@@ -33,28 +33,6 @@ struct BenchCommand {
     std::string csv, charts, markdown;
 };
 
-// Comma-separated names, each one of `allowed` ("all": every one).
-std::vector<std::string> parse_list(const std::string& flag, const std::string& text,
-                                    const std::vector<std::string>& allowed)
-{
-    if (text == "all")
-        return allowed;
-    std::vector<std::string> names;
-    std::stringstream in(text);
-    std::string joined, name;
-    for (const std::string& a : allowed)
-        joined += (joined.empty() ? "" : ", ") + a;
-    bool empty_item = text.empty() || text.front() == ',' || text.back() == ',' || text.find(",,") != std::string::npos;
-    while (!empty_item && std::getline(in, name, ','))
-        if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
-            throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
-        else
-            names.push_back(name);
-    if (names.empty())
-        throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
-    return names;
-}
-
 std::vector<std::string> method_names()
 {
     std::vector<std::string> names;
@@ -192,9 +170,9 @@ void write_outputs(const BenchCommand& cmd, const BenchReport& report)
 
 void run_bench(const BenchCommand& cmd)
 {
-    Plan plan{parse_list("--methods", cmd.methods, method_names()),
-              parse_list("--precisions", cmd.precisions, {"precise", "fast", "relaxed"}),
-              parse_list("--jobs", cmd.jobs, {"write", "furnace", "world"}), {}};
+    Plan plan{parse_name_list("--methods", cmd.methods, method_names()),
+              parse_name_list("--precisions", cmd.precisions, {"precise", "fast", "relaxed"}),
+              parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world"}), {}};
     BenchReport report;
     report.command = command_line();
     report.date = today();

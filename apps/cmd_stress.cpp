@@ -23,20 +23,12 @@ struct StressCommand {
 
 std::vector<ggxcl::Method> parse_methods(const std::string& text)
 {
+    std::vector<std::string> names;
+    for (ggxcl::Method m : ggxcl::all_methods)
+        names.emplace_back(ggxcl::method_name(m));
     std::vector<ggxcl::Method> methods;
-    if (text == "all")
-        return {std::begin(ggxcl::all_methods), std::end(ggxcl::all_methods)};
-    std::stringstream in(text);
-    std::string name;
-    bool empty_item = text.empty() || text.back() == ',' || text.front() == ',' || text.find(",,") != std::string::npos;
-    while (!empty_item && std::getline(in, name, ','))
-        try {
-            methods.push_back(ggxcl::parse_method(name));
-        } catch (const ggxcl::InvalidArgument&) {
-            empty_item = true;
-        }
-    if (empty_item || methods.empty())
-        throw UsageError("--methods", text, "a comma-separated list of " + ggxcl::method_list() + " (or all)");
+    for (const std::string& name : parse_name_list("--methods", text, names))
+        methods.push_back(ggxcl::parse_method(name));
     return methods;
 }
 

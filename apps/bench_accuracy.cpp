@@ -13,22 +13,9 @@ namespace ggxapp {
 
 namespace {
 
-constexpr std::uint64_t samples_per_config = 1u << 13;
-constexpr std::uint64_t accuracy_seed = 777;
-
 ggxref::Vec3 as_double(const ggxcl::Vec3& v)
 {
     return {v.x, v.y, v.z};
-}
-
-double angle_between(const ggxref::Vec3& a, const ggxref::Vec3& b)
-{
-    return std::atan2(ggxref::length(ggxref::cross(a, b)), ggxref::dot(a, b));
-}
-
-double relative(double value, double reference)
-{
-    return reference == 0.0 ? std::fabs(value) : std::fabs(value - reference) / std::fabs(reference);
 }
 
 ggxcl::SampleParams params_of(ggxcl::Method method, ggxcl::Precision precision, double alpha, double cos_theta)
@@ -54,9 +41,9 @@ void add_errors(const ggxcl::SampleSet& d, ggxcl::Method method, const ggxref::P
             continue;
         }
         angles.push_back(angle);
-        pdfs.push_back(relative(d.pdf_m[j], r.pdf_m));
+        pdfs.push_back(relative_error(d.pdf_m[j], r.pdf_m));
         if (method != ggxcl::Method::ndf || std::fabs(ggxref::dot(r.o, r.m)) >= 1e-2)
-            pdfs.push_back(relative(d.pdf_o[j], r.pdf_o));
+            pdfs.push_back(relative_error(d.pdf_o[j], r.pdf_o));
     }
 }
 
@@ -72,18 +59,35 @@ void percentiles(std::vector<double>& errors, double& p99, double& max)
     p99 = errors[k];
 }
 
+double angle_between(const ggxref::Vec3& a, const ggxref::Vec3& b)
+{
+    return std::atan2(ggxref::length(ggxref::cross(a, b)), ggxref::dot(a, b));
+}
+
+double relative_error(double value, double reference)
+{
+    return reference == 0.0 ? std::fabs(value) : std::fabs(value - reference) / std::fabs(reference);
+}
+
+std::vector<ggxcl::SampleParams> accuracy_configs(ggxcl::Method method, ggxcl::Precision precision)
+{
+    std::vector<ggxcl::SampleParams> configs;
+    for (double alpha : {0.05, 0.3, 1.0})
+        for (double theta : {0.0, 45.0, 80.0})
+            configs.push_back(params_of(method, precision, alpha, std::cos(theta * 3.14159265358979323846 / 180)));
+    return configs;
+}
+
 NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision)
 {
     std::vector<double> angles, pdfs;
     NumericalError error;
-    for (double alpha : {0.05, 0.3, 1.0})
-        for (double theta : {0.0, 45.0, 80.0}) {
-            ggxcl::SampleParams p = params_of(method, precision, alpha, std::cos(theta * 3.14159265358979323846 / 180));
-            ggxcl::SampleSet d = sampler.generate(p, {accuracy_seed, 0, samples_per_config},
-                                                  {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_m,
-                                                   ggxcl::Field::pdf_o});
-            add_errors(d, method, reference_params(p), angles, pdfs, error.non_finite);
-        }
+    for (const ggxcl::SampleParams& p : accuracy_configs(method, precision)) {
+        ggxcl::SampleSet d = sampler.generate(p, {accuracy_seed, 0, accuracy_samples},
+                                              {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_m,
+                                               ggxcl::Field::pdf_o});
+        add_errors(d, method, reference_params(p), angles, pdfs, error.non_finite);
+    }
     percentiles(angles, error.angle_p99, error.angle_max);
     percentiles(pdfs, error.pdf_p99, error.pdf_max);
     return error;

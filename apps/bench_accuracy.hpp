@@ -15,6 +15,8 @@
 
 #include <ggxcl/ggxcl.hpp>
 
+#include "ggx_reference.hpp"
+
 namespace ggxapp {
 
 struct NumericalError {
@@ -24,6 +26,15 @@ struct NumericalError {
 };
 
 NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision);
+
+// What the device and the native baseline are both measured on: the 9
+// configurations (normalized parameters), samples 0 .. 2^13 - 1 of this seed.
+inline constexpr std::uint64_t accuracy_seed = 777, accuracy_samples = 1u << 13;
+std::vector<ggxcl::SampleParams> accuracy_configs(ggxcl::Method method, ggxcl::Precision precision);
+
+// Angle between two directions (atan2 form, accurate near 0) and relative error.
+double angle_between(const ggxref::Vec3& a, const ggxref::Vec3& b);
+double relative_error(double value, double reference);
 
 // The 99th percentile and maximum of `errors` (left as they are when empty).
 void percentiles(std::vector<double>& errors, double& p99, double& max);

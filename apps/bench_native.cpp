@@ -42,11 +42,6 @@ Timing wall_timing(const std::function<void(std::uint64_t seed)>& run, std::uint
     return summarize(ns);
 }
 
-double relative(double value, double reference)
-{
-    return reference == 0.0 ? std::fabs(value) : std::fabs(value - reference) / std::fabs(reference);
-}
-
 } // namespace
 
 Timing native_timing(ggxcl::Method method, BenchJob job, const NativeSetup& setup)
@@ -81,34 +76,27 @@ Timing native_ceiling_timing(const NativeSetup& setup)
 
 NumericalError native_numerical_error(ggxcl::Method method)
 {
-    const std::uint64_t count = 1u << 13, seed = 777;
+    const std::uint64_t count = accuracy_samples;
     std::vector<double> angles, pdfs;
     NumericalError error;
-    for (double alpha : {0.05, 0.3, 1.0})
-        for (double theta : {0.0, 45.0, 80.0}) {
-            ggxcl::SampleParams p;
-            p.method = method;
-            p.alpha_x = p.alpha_y = float(alpha);
-            p.view = ggxcl::view_from_angles(theta, 0.0);
-            p = ggxcl::normalized(p);
-            std::vector<float> m(3 * count), pdf_m(count);
-            ggxnative::run({native_method(method), ggxnative::Job::write_m_pdf_m, p.alpha_x, p.alpha_y,
-                            {p.view.x, p.view.y, p.view.z}, seed, count, 1},
-                           {m.data(), pdf_m.data()});
-            ggxref::Params ref = reference_params(p);
-            for (std::uint64_t j = 0; j < count; ++j) {
-                std::array<double, 2> u = ggxref::uniforms(seed, j);
-                ggxref::Sample r = ggxref::sample(reference_method(method), ref, u[0], u[1]);
-                ggxref::Vec3 dm{m[j], m[count + j], m[2 * count + j]};
-                double angle = std::atan2(ggxref::length(ggxref::cross(dm, r.m)), ggxref::dot(dm, r.m));
-                if (!std::isfinite(angle) || !std::isfinite(pdf_m[j])) {
-                    ++error.non_finite;
-                    continue;
-                }
-                angles.push_back(angle);
-                pdfs.push_back(relative(pdf_m[j], r.pdf_m));
+    for (const ggxcl::SampleParams& p : accuracy_configs(method, ggxcl::Precision::precise)) {
+        std::vector<float> m(3 * count), pdf_m(count);
+        ggxnative::run({native_method(method), ggxnative::Job::write_m_pdf_m, p.alpha_x, p.alpha_y,
+                        {p.view.x, p.view.y, p.view.z}, accuracy_seed, count, 1},
+                       {m.data(), pdf_m.data()});
+        ggxref::Params ref = reference_params(p);
+        for (std::uint64_t j = 0; j < count; ++j) {
+            std::array<double, 2> u = ggxref::uniforms(accuracy_seed, j);
+            ggxref::Sample r = ggxref::sample(reference_method(method), ref, u[0], u[1]);
+            double angle = angle_between({m[j], m[count + j], m[2 * count + j]}, r.m);
+            if (!std::isfinite(angle) || !std::isfinite(pdf_m[j])) {
+                ++error.non_finite;
+                continue;
             }
+            angles.push_back(angle);
+            pdfs.push_back(relative_error(pdf_m[j], r.pdf_m));
         }
+    }
     percentiles(angles, error.angle_p99, error.angle_max);
     percentiles(pdfs, error.pdf_p99, error.pdf_max);
     return error;

@@ -19,6 +19,7 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "plot.hpp"
+#include "sample_options.hpp"
 
 namespace ggxapp {
 
@@ -32,14 +33,6 @@ struct BenchCommand {
     bool no_native = false, no_accuracy = false, no_startup = false;
     std::string csv, charts, markdown;
 };
-
-std::vector<std::string> method_names()
-{
-    std::vector<std::string> names;
-    for (ggxcl::Method m : ggxcl::all_methods)
-        names.emplace_back(ggxcl::method_name(m));
-    return names;
-}
 
 std::string today()
 {

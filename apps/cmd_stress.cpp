@@ -10,6 +10,7 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "plot.hpp"
+#include "sample_options.hpp"
 #include "stress_run.hpp"
 
 namespace ggxapp {
@@ -23,11 +24,8 @@ struct StressCommand {
 
 std::vector<ggxcl::Method> parse_methods(const std::string& text)
 {
-    std::vector<std::string> names;
-    for (ggxcl::Method m : ggxcl::all_methods)
-        names.emplace_back(ggxcl::method_name(m));
     std::vector<ggxcl::Method> methods;
-    for (const std::string& name : parse_name_list("--methods", text, names))
+    for (const std::string& name : parse_name_list("--methods", text, method_names()))
         methods.push_back(ggxcl::parse_method(name));
     return methods;
 }

@@ -24,6 +24,14 @@ void SampleOptions::add_method_options(CLI::App& cmd)
     cmd.add_option("--normal", normal, "caps-iso only: world-space surface normal X,Y,Z (default 0,0,1)");
 }
 
+std::vector<std::string> method_names()
+{
+    std::vector<std::string> names;
+    for (ggxcl::Method m : ggxcl::all_methods)
+        names.emplace_back(ggxcl::method_name(m));
+    return names;
+}
+
 ggxcl::Method SampleOptions::parsed_method() const
 {
     try {

@@ -4,11 +4,15 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <ggxcl/ggxcl.hpp>
 
 namespace ggxapp {
+
+// The method names in ggxcl::all_methods order, for lists of methods.
+std::vector<std::string> method_names();
 
 struct SampleOptions {
     std::string method = "caps";

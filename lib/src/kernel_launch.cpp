@@ -70,18 +70,20 @@ std::size_t group_size(const cl::Device& device)
     return std::min(preferred_group_size, device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>());
 }
 
-cl::Event launch_split(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& whole, cl::Kernel& tail,
-                       std::uint32_t count, const std::vector<cl::Event>* wait)
+cl::Event launch_split(cl::CommandQueue& queue, const cl::Device& device, const KernelMaker& make,
+                       const std::string& name, std::uint32_t count, const std::vector<cl::Event>* wait)
 {
     std::size_t group = group_size(device);
     std::size_t full = count / group * group;
     std::vector<cl::Event> launched;
     if (full > 0) {
         launched.emplace_back();
+        cl::Kernel whole = make(name);
         queue.enqueueNDRangeKernel(whole, cl::NullRange, cl::NDRange(full), cl::NDRange(group), wait, &launched.back());
     }
     if (full < count) {
         launched.emplace_back();
+        cl::Kernel tail = make(name + "_tail");
         queue.enqueueNDRangeKernel(tail, cl::NDRange(full), cl::NDRange(group), cl::NDRange(group), wait,
                                    &launched.back());
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,10 +28,13 @@ void check_launch_count(std::uint64_t count, std::uint32_t stride);
 
 std::size_t group_size(const cl::Device& device);
 
-// One work-item per sample: `whole` (kernel NAME) over the whole work-groups,
-// then `tail` (NAME_tail, same arguments) over the last partial one with a
-// global offset.  Returns the event of the launch, or a marker on both.
-cl::Event launch_split(cl::CommandQueue& queue, const cl::Device& device, cl::Kernel& whole, cl::Kernel& tail,
-                       std::uint32_t count, const std::vector<cl::Event>* wait);
+// One work-item per sample: kernel `name` over the whole work-groups, then
+// `name`_tail (same arguments) over the last partial one with a global
+// offset; `make` creates a kernel by name with its arguments set, and only
+// the kernels a count needs are created.  Returns the event of the launch,
+// or a marker on both.
+using KernelMaker = std::function<cl::Kernel(const std::string& name)>;
+cl::Event launch_split(cl::CommandQueue& queue, const cl::Device& device, const KernelMaker& make,
+                       const std::string& name, std::uint32_t count, const std::vector<cl::Event>* wait);
 
 } // namespace ggxcl::detail

@@ -84,19 +84,19 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
         std::string options = build_options(unit, mask, inputs);
-        cl::Kernel whole = kernel(bulk_file, "ggx_sample_bulk", options);
-        cl::Kernel tail = kernel(bulk_file, "ggx_sample_bulk_tail", options);
-        for (cl::Kernel* k : {&whole, &tail}) {
-            k->setArg(0, cl_ulong(range.seed));
-            k->setArg(1, cl_ulong(range.first));
-            k->setArg(2, cl_uint(range.count));
-            k->setArg(3, cl_uint(stride ? stride : range.count));
-            set_param_args(*k, 4, unit, inputs);
+        auto make = [&](const std::string& name) {
+            cl::Kernel k = kernel(bulk_file, name, options);
+            k.setArg(0, cl_ulong(range.seed));
+            k.setArg(1, cl_ulong(range.first));
+            k.setArg(2, cl_uint(range.count));
+            k.setArg(3, cl_uint(stride ? stride : range.count));
+            set_param_args(k, 4, unit, inputs);
             const cl::Buffer* buffers[] = {&outputs.m, &outputs.o, &outputs.pdf_m, &outputs.pdf_o, &outputs.weight};
             for (cl_uint b = 0; b < 5; ++b)
-                k->setArg(15 + b, *buffers[b]);
-        }
-        return launch_split(queue, device_, whole, tail, cl_uint(range.count), wait);
+                k.setArg(15 + b, *buffers[b]);
+            return k;
+        };
+        return launch_split(queue, device_, make, "ggx_sample_bulk", cl_uint(range.count), wait);
     });
 }
 
@@ -109,16 +109,16 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
         std::string options = build_options(unit, 0, inputs);
-        cl::Kernel whole = kernel(bulk_file, "ggx_pdf_bulk", options);
-        cl::Kernel tail = kernel(bulk_file, "ggx_pdf_bulk_tail", options);
-        for (cl::Kernel* k : {&whole, &tail}) {
-            k->setArg(0, cl_uint(count));
-            k->setArg(1, cl_uint(stride ? stride : count));
-            set_param_args(*k, 2, unit, inputs);
-            k->setArg(13, directions);
-            k->setArg(14, pdf_out);
-        }
-        return launch_split(queue, device_, whole, tail, count, wait);
+        auto make = [&](const std::string& name) {
+            cl::Kernel k = kernel(bulk_file, name, options);
+            k.setArg(0, cl_uint(count));
+            k.setArg(1, cl_uint(stride ? stride : count));
+            set_param_args(k, 2, unit, inputs);
+            k.setArg(13, directions);
+            k.setArg(14, pdf_out);
+            return k;
+        };
+        return launch_split(queue, device_, make, "ggx_pdf_bulk", count, wait);
     });
 }
 

@@ -9,8 +9,11 @@
 // Build options: those of ggx_bulk.cl (method, precision, per-sample and
 // specialization flags; the GGX_WRITE_* flags are ignored).
 // Work-item w of a launch of `count` samples draws samples
-// w + k * items (k < GGX_FURNACE_PER_ITEM, items = global size) that are < count.
-// Output: sums[w] = sum of its weights, sums[items + w] = sum of their squares.
+// GGX_FURNACE_PER_ITEM * w + k (k < GGX_FURNACE_PER_ITEM) that are < count,
+// so the partial sums depend neither on the work-group size nor, for
+// launches that start at multiples of GGX_FURNACE_PER_ITEM, on how a range
+// is split into launches.  Output (items = global size): sums[w] = sum of
+// its weights, sums[items + w] = sum of their squares.
 #ifndef GGX_METHOD
 #error "build with -DGGX_METHOD=<method id>"
 #endif
@@ -25,7 +28,7 @@ __kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride,
     float w_total = 0.0f, w2_total = 0.0f;
 #pragma unroll
     for (uint k = 0; k < GGX_FURNACE_PER_ITEM; ++k) {
-        uint index = item + k * items;
+        uint index = item * GGX_FURNACE_PER_ITEM + k;
         uint j = min(index, count - 1u);  // past `count`: recompute the last sample, then count it as 0
         ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
         ggx_sample s = ggx_bulk_sample(seed, first + j, p);

@@ -6,7 +6,9 @@
 //    the message says how to install PoCL;
 //  - the disk fills up (a file-size limit, RLIMIT_FSIZE, below the output):
 //    "File too large", no partial file;
-//  - an interrupted run (SIGINT while sampling): no file, temporary removed.
+//  - an interrupted run (SIGINT while sampling): no file, temporary removed;
+//  - a lost device mid-run (injected): the CL error, no file;
+//  - device memory exhausted (injected): the same file as an undisturbed run.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -97,5 +99,34 @@ TEST_CASE("an interrupted run (SIGINT) leaves no file and no temporary")
     ::waitpid(pid, &status, 0);
     CHECK(WIFSIGNALED(status));
     CHECK(WTERMSIG(status) == SIGINT);
+    CHECK(folder_empty(scratch()));
+}
+
+TEST_CASE("a lost device mid-run (GGXCL_INJECT_FAULT=lost-after=1): exit 1, the CL error, no partial file")
+{
+    std::string out = (scratch() / "lost.npy").string();
+    ggxtest::Run run = ggxtest::run_ggx("env GGXCL_INJECT_FAULT=lost-after=1 " + std::string(GGX_BINARY) +
+                                            " sample --method caps -n 2^21 --out " + out,  // two chunks of 2^20
+                                        scratch() / "stderr.txt", false);
+    CAPTURE(run.err);
+    CHECK(run.status == 1);
+    CHECK(run.err.find("device was lost") != std::string::npos);
+    CHECK(run.err.find("CL_DEVICE_NOT_AVAILABLE") != std::string::npos);
+    CHECK(folder_empty(scratch()));
+}
+
+TEST_CASE("device memory exhausted (GGXCL_INJECT_FAULT=alloc-above=...): the same file, in smaller chunks")
+{
+    const std::string args = " sample --method heitz --alpha 0.2,0.5 -n 300001 --fields m,o,weight --out ";
+    fs::path plain = scratch() / "plain.npy", squeezed = scratch() / "squeezed.npy";
+    REQUIRE(ggxtest::run_ggx(args + plain.string(), scratch() / "stderr.txt").status == 0);
+    ggxtest::Run run = ggxtest::run_ggx("env GGXCL_INJECT_FAULT=alloc-above=100000 " + std::string(GGX_BINARY) +
+                                            args + squeezed.string(),
+                                        scratch() / "stderr.txt", false);
+    CAPTURE(run.err);
+    CHECK(run.status == 0);
+    CHECK(ggxtest::read_all(plain) == ggxtest::read_all(squeezed));
+    for (const char* name : {"plain.npy", "plain.json", "squeezed.npy", "squeezed.json"})
+        fs::remove(scratch() / name);
     CHECK(folder_empty(scratch()));
 }

@@ -7,11 +7,14 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "bit_compare.hpp"
 #include "device_fixture.hpp"
 
 namespace {
 
 using ggxcl::Field;
+using ggxtest::message_of;
+using ggxtest::same_bits;
 
 ggxcl::SampleParams test_params(ggxcl::Method method = ggxcl::Method::heitz)
 {
@@ -21,28 +24,6 @@ ggxcl::SampleParams test_params(ggxcl::Method method = ggxcl::Method::heitz)
     p.alpha_y = method == ggxcl::Method::caps_iso ? 0.25f : 0.6f;
     p.view = ggxcl::view_from_angles(50, 20);
     return p;
-}
-
-bool same_bits(const std::vector<float>& a, const std::vector<float>& b)
-{
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
-
-bool same_bits(const ggxcl::SampleSet& a, const ggxcl::SampleSet& b)
-{
-    return a.count == b.count && same_bits(a.m, b.m) && same_bits(a.o, b.o) && same_bits(a.pdf_m, b.pdf_m) &&
-           same_bits(a.pdf_o, b.pdf_o) && same_bits(a.weight, b.weight);
-}
-
-template <typename Exception, typename Body>
-std::string message_of(Body&& body)
-{
-    try {
-        body();
-    } catch (const Exception& e) {
-        return e.what();
-    }
-    return "(nothing thrown)";
 }
 
 } // namespace

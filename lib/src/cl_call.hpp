@@ -1,7 +1,9 @@
 // cl_call.hpp - runs OpenCL C++ binding calls and turns their cl::Error
-// into ggxcl::ClError, which carries the CL error name.
+// into ggxcl::ClError, which carries the CL error name (DeviceLost for the
+// codes of a lost device).
 #pragma once
 
+#include "device_faults.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/opencl.hpp"
 
@@ -13,6 +15,8 @@ auto translate_cl_errors(Body&& body) -> decltype(body())
     try {
         return body();
     } catch (const cl::Error& e) {
+        if (is_device_lost(e.err()))
+            throw DeviceLost(e.what(), e.err());
         throw ClError(e.what(), e.err());
     }
 }

@@ -18,6 +18,13 @@ std::string describe_failure(const std::string& call, int code)
 
 ClError::ClError(const std::string& call, int code) : Error(describe_failure(call, code)), code_(code) {}
 
+DeviceLost::DeviceLost(const std::string& call, int code)
+    : ClError(code, "the OpenCL device was lost or stopped responding: " + describe_failure(call, code) +
+                        "; the results of this call are incomplete (nothing is written); "
+                        "create a new Sampler once the device is back")
+{
+}
+
 BuildError::BuildError(int code, const std::string& device, const std::string& options,
                        const std::string& log)
     : ClError(code, describe_failure("clBuildProgram on '" + device + "' with options '" + options + "'",

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cl_call.hpp"
+#include "device_faults.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
 #include "kernel_launch.hpp"
@@ -14,10 +15,11 @@ namespace ggxcl {
 
 namespace {
 
-constexpr std::uint64_t samples_per_launch = 1u << 26;
+constexpr std::uint64_t samples_per_launch = 1u << 26;  // a multiple of samples_per_item
 constexpr std::uint64_t samples_per_item = 8;  // GGX_FURNACE_PER_ITEM of ggx_furnace.cl
 
-// The partial sums of one launch added in double; false if one of them is not finite.
+// The partial sums of one launch added in double, in work-item order, to
+// sum and sum_of_squares; false if one of them is not finite.
 bool add_partial_sums(const std::vector<float>& host, std::size_t items, double& sum, double& sum_of_squares)
 {
     for (std::size_t g = 0; g < items; ++g) {
@@ -46,7 +48,7 @@ double FurnaceSums::variance() const
 
 std::size_t Sampler::furnace_items(std::uint64_t count) const
 {
-    std::size_t group = detail::group_size(device_);
+    std::size_t group = work_group_size();
     std::uint64_t items = (count + samples_per_item - 1) / samples_per_item;
     return std::size_t((items + group - 1) / group * group);
 }
@@ -58,6 +60,8 @@ cl::Event Sampler::enqueue_furnace(cl::CommandQueue& queue, const SampleParams& 
     validate(params);
     validate(range);
     detail::check_launch_count(range.count, 0);
+    if (range.count > (1ull << 31))  // keeps the kernel's 32-bit sample indices from wrapping
+        throw InvalidArgument("count", std::to_string(range.count), "1 .. 2^31 per enqueue_furnace");
     SampleParams unit = normalized(params);
     return detail::translate_cl_errors([&] {
         cl::Kernel k = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, 16u, inputs));
@@ -68,10 +72,31 @@ cl::Event Sampler::enqueue_furnace(cl::CommandQueue& queue, const SampleParams& 
         detail::set_param_args(k, 4, unit, inputs);
         k.setArg(15, sums);
         cl::Event event;
+        detail::before_launch();
         queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(furnace_items(range.count)),
-                                   cl::NDRange(detail::group_size(device_)), wait, &event);
+                                   cl::NDRange(work_group_size()), wait, &event);
         return event;
     });
+}
+
+// Adds the sums of one launch to `total`: unguarded first, and again with
+// guards if a partial sum is not finite.
+void Sampler::add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,
+                                 std::vector<float>& host, FurnaceSums& total)
+{
+    std::size_t used = furnace_items(range.count);
+    SampleParams attempt = params;
+    for (bool guarded : {false, true}) {
+        attempt.guards = guarded;
+        enqueue_furnace(queue_, attempt, range, sums);
+        queue_.enqueueReadBuffer(sums, CL_TRUE, 0, 2 * used * sizeof(float), host.data());
+        double sum = total.sum, sum_of_squares = total.sum_of_squares;  // one order of additions, whatever the launches
+        if (add_partial_sums(host, used, sum, sum_of_squares) || guarded) {
+            total.sum = sum;
+            total.sum_of_squares = sum_of_squares;
+            return;
+        }
+    }
 }
 
 FurnaceSums Sampler::furnace(const SampleParams& params, const SampleRange& range)
@@ -80,26 +105,18 @@ FurnaceSums Sampler::furnace(const SampleParams& params, const SampleRange& rang
     validate(range);
     FurnaceSums total;
     total.count = range.count;
-    const std::uint64_t per_launch = std::min(samples_per_launch, range.count);
     detail::translate_cl_errors([&] {
-        cl::Buffer sums(context_, CL_MEM_WRITE_ONLY, 2 * furnace_items(per_launch) * sizeof(float));
-        std::vector<float> host(2 * furnace_items(per_launch));
-        for (std::uint64_t start = 0; start < range.count; start += per_launch) {
-            std::uint64_t n = std::min(per_launch, range.count - start);
-            std::size_t used = furnace_items(n);
-            SampleParams attempt = params;
-            for (bool guarded : {false, true}) {  // unguarded first; a non-finite sum reruns with guards
-                attempt.guards = guarded;
-                enqueue_furnace(queue_, attempt, {range.seed, range.first + start, n}, sums);
-                queue_.enqueueReadBuffer(sums, CL_TRUE, 0, 2 * used * sizeof(float), host.data());
-                double sum = 0.0, sum_of_squares = 0.0;
-                if (add_partial_sums(host, used, sum, sum_of_squares) || guarded) {
-                    total.sum += sum;
-                    total.sum_of_squares += sum_of_squares;
-                    break;
-                }
+        std::uint64_t start = 0, launch_size = std::min(samples_per_launch, range.count);
+        auto run_launches = [&](std::uint64_t per_launch) {
+            std::size_t floats = 2 * furnace_items(per_launch);
+            cl::Buffer sums = detail::device_buffer(context_, CL_MEM_WRITE_ONLY, floats * sizeof(float));
+            std::vector<float> host(floats);
+            for (; start < range.count; start += per_launch) {  // start: the first sample not summed
+                std::uint64_t n = std::min(per_launch, range.count - start);
+                add_furnace_launch(params, {range.seed, range.first + start, n}, sums, host, total);
             }
-        }
+        };  // launches start at multiples of samples_per_item: the same partial sums however split
+        detail::retry_with_smaller_chunks(launch_size, 1024, memory_retries_, run_launches, samples_per_item);
         return 0;
     });
     return total;

@@ -51,9 +51,9 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
         const std::size_t bins = std::size_t(bins_z) * bins_phi;
         Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0};
         cl::Kernel k = kernel("ggx_histogram.cl", "ggx_histogram", histogram_options(unit, bins_z, bins_phi, direction));
-        cl::Buffer counts(context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
+        cl::Buffer counts = detail::device_buffer(context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
         std::vector<cl_uint> launch_counts(bins + 1);
-        const std::size_t group = detail::group_size(device_);
+        const std::size_t group = work_group_size();
         for (std::uint64_t start = 0; start < range.count; start += samples_per_launch) {
             std::uint64_t n = std::min(samples_per_launch, range.count - start);
             queue_.enqueueFillBuffer(counts, cl_uint(0), 0, (bins + 1) * sizeof(cl_uint));
@@ -64,6 +64,7 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
             detail::set_param_args(k, 4, unit, {});
             k.setArg(15, counts);
             std::size_t groups = (n + group * samples_per_item - 1) / (group * samples_per_item);
+            detail::before_launch();
             queue_.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(groups * group), cl::NDRange(group));
             queue_.enqueueReadBuffer(counts, CL_TRUE, 0, (bins + 1) * sizeof(cl_uint), launch_counts.data());
             for (std::size_t b = 0; b < bins; ++b)

@@ -1,10 +1,12 @@
 // host_transfer.cpp - Sampler::generate, generate_chunks and pdf: the
 // host-memory front end that runs the bulk kernels chunk by chunk through
-// device buffers of bounded size.
+// device buffers of bounded size, halving the chunk when the device runs
+// out of memory.
 #include <algorithm>
 #include <cmath>
 
 #include "cl_call.hpp"
+#include "device_faults.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
 
@@ -13,6 +15,8 @@ namespace ggxcl {
 namespace {
 
 using detail::translate_cl_errors;
+
+constexpr std::uint64_t smallest_chunk = 1024;  // samples; out of memory below it is an error
 
 std::size_t bytes(std::uint64_t floats)
 {
@@ -53,9 +57,12 @@ struct ChunkInputs {
     {
         buffers.views_above_horizon = all_views_above_horizon(in, params);
         buffers.isotropic = all_isotropic(in, params);
-        if (!in.views.empty()) buffers.view = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(3 * capacity));
-        if (!in.alphas.empty()) buffers.alpha = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(2 * capacity));
-        if (!in.normals.empty()) buffers.normal = cl::Buffer(context, CL_MEM_READ_ONLY, bytes(3 * capacity));
+        auto make = [&](int planes) {
+            return detail::device_buffer(context, CL_MEM_READ_ONLY, bytes(planes * capacity));
+        };
+        if (!in.views.empty()) buffers.view = make(3);
+        if (!in.alphas.empty()) buffers.alpha = make(2);
+        if (!in.normals.empty()) buffers.normal = make(3);
     }
 
     void upload(cl::CommandQueue& queue, const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
@@ -81,6 +88,14 @@ void read_planes(cl::CommandQueue& queue, const cl::Buffer& buffer, int planes, 
         queue.enqueueReadBuffer(buffer, CL_FALSE, bytes(c * capacity), bytes(n), host.data() + c * n);
 }
 
+// The chunk capacity: the requested one, within the count, and small enough
+// that a buffer of `planes` planes fits the device's largest allocation.
+std::uint64_t fitted_capacity(const cl::Device& device, std::uint64_t requested, std::uint64_t count, int planes)
+{
+    std::uint64_t largest = device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>() / (planes * sizeof(float));
+    return std::max<std::uint64_t>(1, std::min({requested, count, largest}));
+}
+
 } // namespace
 
 void Sampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
@@ -91,28 +106,31 @@ void Sampler::generate_chunks(const SampleParams& params, const SampleRange& ran
     validate(per_sample, params, range.count);
     if (fields.empty())
         throw InvalidArgument("fields", "none", "at least one of m, o, pdf_m, pdf_o, weight");
-    const std::uint64_t capacity = std::min(chunk_size_, range.count);
     translate_cl_errors([&] {
-        DeviceOutputs out;
-        cl::Buffer* buffers[] = {&out.m, &out.o, &out.pdf_m, &out.pdf_o, &out.weight};
-        for (Field f : all_fields)
-            if (fields.has(f))
-                *buffers[int(f)] = cl::Buffer(context_, CL_MEM_WRITE_ONLY, bytes(field_columns(f) * capacity));
-        ChunkInputs inputs(context_, per_sample, params, capacity);
-        SampleSet chunk;
-        std::vector<float>* hosts[] = {&chunk.m, &chunk.o, &chunk.pdf_m, &chunk.pdf_o, &chunk.weight};
-        for (std::uint64_t start = 0; start < range.count; start += capacity) {
-            std::uint64_t n = std::min(capacity, range.count - start);
-            inputs.upload(queue_, per_sample, start, n, capacity);
-            enqueue(queue_, params, {range.seed, range.first + start, n}, out, std::uint32_t(capacity),
-                    inputs.buffers);
-            chunk.count = n;
+        std::uint64_t start = 0, chunk = fitted_capacity(device_, chunk_size_, range.count, 3);
+        detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
+            DeviceOutputs out;
+            cl::Buffer* buffers[] = {&out.m, &out.o, &out.pdf_m, &out.pdf_o, &out.weight};
             for (Field f : all_fields)
                 if (fields.has(f))
-                    read_planes(queue_, *buffers[int(f)], field_columns(f), n, capacity, *hosts[int(f)]);
-            queue_.finish();
-            sink(chunk, start);
-        }
+                    *buffers[int(f)] =
+                        detail::device_buffer(context_, CL_MEM_WRITE_ONLY, bytes(field_columns(f) * capacity));
+            ChunkInputs inputs(context_, per_sample, params, capacity);
+            SampleSet chunk;
+            std::vector<float>* hosts[] = {&chunk.m, &chunk.o, &chunk.pdf_m, &chunk.pdf_o, &chunk.weight};
+            for (; start < range.count; start += chunk.count) {  // start: the first sample not delivered
+                std::uint64_t n = std::min(capacity, range.count - start);
+                inputs.upload(queue_, per_sample, start, n, capacity);
+                enqueue(queue_, params, {range.seed, range.first + start, n}, out, std::uint32_t(capacity),
+                        inputs.buffers);
+                chunk.count = n;
+                for (Field f : all_fields)
+                    if (fields.has(f))
+                        read_planes(queue_, *buffers[int(f)], field_columns(f), n, capacity, *hosts[int(f)]);
+                queue_.finish();
+                sink(chunk, start);
+            }
+        });
         return 0;
     });
 }
@@ -147,19 +165,22 @@ std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Ve
     if (count == 0)
         throw InvalidArgument("directions", "0 entries", "at least one direction");
     validate(per_sample, params, count);
-    const std::uint64_t capacity = std::min(chunk_size_, count);
     std::vector<float> result(count);
     translate_cl_errors([&] {
-        cl::Buffer dirs(context_, CL_MEM_READ_ONLY, bytes(3 * capacity));
-        cl::Buffer pdfs(context_, CL_MEM_WRITE_ONLY, bytes(capacity));
-        ChunkInputs inputs(context_, per_sample, params, capacity);
-        for (std::uint64_t start = 0; start < count; start += capacity) {
-            std::uint64_t n = std::min(capacity, count - start);
-            inputs.upload(queue_, per_sample, start, n, capacity);
-            ChunkInputs::write(queue_, dirs, planar_units(directions, start, n, capacity));
-            enqueue_pdf(queue_, params, std::uint32_t(n), dirs, pdfs, std::uint32_t(capacity), inputs.buffers);
-            queue_.enqueueReadBuffer(pdfs, CL_TRUE, 0, bytes(n), result.data() + start);
-        }
+        std::uint64_t start = 0, chunk = fitted_capacity(device_, chunk_size_, count, 3);
+        detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
+            cl::Buffer dirs = detail::device_buffer(context_, CL_MEM_READ_ONLY, bytes(3 * capacity));
+            cl::Buffer pdfs = detail::device_buffer(context_, CL_MEM_WRITE_ONLY, bytes(capacity));
+            ChunkInputs inputs(context_, per_sample, params, capacity);
+            while (start < count) {  // start: the first direction whose pdf is not read back
+                std::uint64_t n = std::min(capacity, count - start);
+                inputs.upload(queue_, per_sample, start, n, capacity);
+                ChunkInputs::write(queue_, dirs, planar_units(directions, start, n, capacity));
+                enqueue_pdf(queue_, params, std::uint32_t(n), dirs, pdfs, std::uint32_t(capacity), inputs.buffers);
+                queue_.enqueueReadBuffer(pdfs, CL_TRUE, 0, bytes(n), result.data() + start);
+                start += n;
+            }
+        });
         return 0;
     });
     return result;

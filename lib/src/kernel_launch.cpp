@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "device_faults.hpp"
 #include "ggxcl/error.hpp"
 
 namespace ggxcl {
@@ -65,15 +66,15 @@ void check_launch_count(std::uint64_t count, std::uint32_t stride)
         throw InvalidArgument("stride", std::to_string(stride), "0 (= count) or at least count");
 }
 
-std::size_t group_size(const cl::Device& device)
+std::size_t group_size(const cl::Device& device, std::size_t requested)
 {
-    return std::min(preferred_group_size, device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>());
+    return requested ? requested : std::min(preferred_group_size, device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>());
 }
 
-cl::Event launch_split(cl::CommandQueue& queue, const cl::Device& device, const KernelMaker& make,
+cl::Event launch_split(cl::CommandQueue& queue, std::size_t group, const KernelMaker& make,
                        const std::string& name, std::uint32_t count, const std::vector<cl::Event>* wait)
 {
-    std::size_t group = group_size(device);
+    before_launch();
     std::size_t full = count / group * group;
     std::vector<cl::Event> launched;
     if (full > 0) {

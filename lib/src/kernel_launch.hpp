@@ -26,7 +26,8 @@ void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p
 
 void check_launch_count(std::uint64_t count, std::uint32_t stride);
 
-std::size_t group_size(const cl::Device& device);
+// The work-group size of a launch: `requested`, or 0 for the default.
+std::size_t group_size(const cl::Device& device, std::size_t requested = 0);
 
 // One work-item per sample: kernel `name` over the whole work-groups, then
 // `name`_tail (same arguments) over the last partial one with a global
@@ -34,7 +35,7 @@ std::size_t group_size(const cl::Device& device);
 // the kernels a count needs are created.  Returns the event of the launch,
 // or a marker on both.
 using KernelMaker = std::function<cl::Kernel(const std::string& name)>;
-cl::Event launch_split(cl::CommandQueue& queue, const cl::Device& device, const KernelMaker& make,
+cl::Event launch_split(cl::CommandQueue& queue, std::size_t group, const KernelMaker& make,
                        const std::string& name, std::uint32_t count, const std::vector<cl::Event>* wait);
 
 } // namespace ggxcl::detail

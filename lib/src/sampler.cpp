@@ -66,6 +66,20 @@ void Sampler::set_chunk_size(std::uint64_t samples)
     chunk_size_ = samples;
 }
 
+void Sampler::set_work_group_size(std::size_t items)
+{
+    std::size_t most = translate_cl_errors([&] { return device_.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>(); });
+    if (items > most)
+        throw InvalidArgument("work-group size", std::to_string(items),
+                              "0 (automatic) or 1 .. " + std::to_string(most) + " (the device's maximum)");
+    work_group_size_ = items;
+}
+
+std::size_t Sampler::work_group_size() const
+{
+    return translate_cl_errors([&] { return group_size(device_, work_group_size_); });
+}
+
 cl::Kernel Sampler::kernel(const std::string& file, const std::string& name, const std::string& options)
 {
     return cl::Kernel(programs_->get(device_, file, options), name.c_str());
@@ -96,7 +110,7 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
                 k.setArg(15 + b, *buffers[b]);
             return k;
         };
-        return launch_split(queue, device_, make, "ggx_sample_bulk", cl_uint(range.count), wait);
+        return launch_split(queue, work_group_size(), make, "ggx_sample_bulk", cl_uint(range.count), wait);
     });
 }
 
@@ -118,7 +132,7 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
             k.setArg(14, pdf_out);
             return k;
         };
-        return launch_split(queue, device_, make, "ggx_pdf_bulk", count, wait);
+        return launch_split(queue, work_group_size(), make, "ggx_pdf_bulk", count, wait);
     });
 }
 

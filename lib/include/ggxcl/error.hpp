@@ -1,6 +1,7 @@
 // error.hpp - the exceptions ggxcl throws: bad arguments (naming the
 // parameter, the value and what is allowed), OpenCL failures (carrying the
-// CL error name) and program build failures (with options and build log).
+// CL error name; a lost device has its own type) and program build
+// failures (with options and build log).
 #pragma once
 
 #include <stdexcept>
@@ -47,6 +48,14 @@ protected:
 
 private:
     int code_;
+};
+
+// The device stopped working during a call (CL_DEVICE_NOT_AVAILABLE, or
+// its queue or context became invalid): the call's results are incomplete.
+// The Sampler cannot be used again; make a new one once the device is back.
+class DeviceLost : public ClError {
+public:
+    DeviceLost(const std::string& call, int code);
 };
 
 // clBuildProgram failed: the message carries the CL error name, the build

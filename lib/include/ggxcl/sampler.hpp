@@ -70,6 +70,9 @@ struct FurnaceSums {
     double variance() const;  // per-sample variance of the weight
 };
 
+// Errors: InvalidArgument for bad arguments, ClError for OpenCL failures,
+// DeviceLost (a ClError) when the device stops working mid-call; a call
+// that throws has delivered only whole chunks, in order, to a ChunkSink.
 class Sampler {
 public:
     // A sampler with its own context and in-order queue on the device that
@@ -87,8 +90,20 @@ public:
 
     // Samples per device pass in generate()/pdf(); memory stays bounded by
     // it and the result does not depend on it.  Default 2^20.
+    // When the device runs out of memory (CL_MEM_OBJECT_ALLOCATION_FAILURE,
+    // CL_OUT_OF_RESOURCES, CL_OUT_OF_HOST_MEMORY) these calls halve the chunk
+    // and go on from the first sample not yet delivered, down to 1024
+    // samples; memory_retries() counts the halvings.  Chunks are also kept
+    // within the device's largest allocation.
     void set_chunk_size(std::uint64_t samples);
     std::uint64_t chunk_size() const { return chunk_size_; }
+    std::uint64_t memory_retries() const { return memory_retries_; }
+
+    // Work-items per work-group of every launch: 0 (the default) picks 256,
+    // or the device's maximum if smaller; else 1 .. the device's maximum.
+    // Results do not depend on it (sample k is work-item k).
+    void set_work_group_size(std::size_t items);
+    std::size_t work_group_size() const;
 
     // Draws the samples of `range` into host vectors.
     SampleSet generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
@@ -126,7 +141,7 @@ public:
     // sums their weights on the device; nothing per sample is stored.
     FurnaceSums furnace(const SampleParams& params, const SampleRange& range);
 
-    // Enqueues it for one range (count < 2^32): `sums` receives
+    // Enqueues it for one range (count <= 2^31): `sums` receives
     // 2 * furnace_items(count) floats, the partial weight sums of the
     // work-items, then their partial sums of squared weights.  With
     // params.guards (the default) the kernel applies the fallbacks of
@@ -143,6 +158,8 @@ public:
     std::size_t programs_built() const { return programs_->size(); }
 
 private:
+    void add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,
+                            std::vector<float>& host, FurnaceSums& total);
     cl::Kernel kernel(const std::string& file, const std::string& name, const std::string& options);
 
     cl::Context context_;
@@ -150,6 +167,8 @@ private:
     cl::CommandQueue queue_;
     std::shared_ptr<ProgramCache> programs_;
     std::uint64_t chunk_size_ = 1u << 20;
+    std::size_t work_group_size_ = 0;
+    std::uint64_t memory_retries_ = 0;
 };
 
 } // namespace ggxcl

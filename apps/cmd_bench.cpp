@@ -14,25 +14,16 @@
 
 #include "atomic_file.hpp"
 #include "bench_native.hpp"
+#include "bench_plan.hpp"
 #include "bench_report.hpp"
 #include "bench_startup.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "plot.hpp"
-#include "sample_options.hpp"
 
 namespace ggxapp {
 
 namespace {
-
-struct BenchCommand {
-    std::string alpha = "0.3", theta = "60", device;
-    std::string methods = "all", precisions = "precise,fast,relaxed", jobs = "write,furnace,world";
-    std::string count = "2^24", native_count = "2^22", repeats = "7", threads = "2";
-    std::string scene = "16", cell_samples = "2^14", budget_ms = "1";
-    bool no_native = false, no_accuracy = false, no_startup = false;
-    std::string csv, charts, markdown;
-};
 
 std::string today()
 {
@@ -40,14 +31,6 @@ std::string today()
     char text[32];
     std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
     return text;
-}
-
-BenchJob job_named(const std::string& name)
-{
-    for (BenchJob job : all_bench_jobs)
-        if (job_name(job) == name)
-            return job;
-    throw UsageError("--jobs", name, "write, furnace or world");
 }
 
 BenchRow row_of(const std::string& method, const std::string& precision, const std::string& job, Timing timing)
@@ -60,12 +43,7 @@ BenchRow row_of(const std::string& method, const std::string& precision, const s
     return row;
 }
 
-struct Plan {
-    std::vector<std::string> methods, precisions, jobs;
-    ggxcl::SampleParams base;
-};
-
-void measure_device(ggxcl::Sampler& sampler, const Plan& plan, const BenchCommand& cmd, BenchReport& report)
+void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchCommand& cmd, BenchReport& report)
 {
     std::vector<BenchTask> tasks;
     for (const std::string& mode : plan.precisions)
@@ -108,7 +86,7 @@ void measure_device(ggxcl::Sampler& sampler, const Plan& plan, const BenchComman
 
 // The native rows; their albedo variance is the device's precise one for the
 // same method (the same samples, drawn from the same uniforms).
-void measure_native(const Plan& plan, BenchReport& report)
+void measure_native(const BenchPlan& plan, BenchReport& report)
 {
     NativeSetup setup{report.native_count, report.threads, report.repeats, plan.base.alpha_x, plan.base.view};
     for (const std::string& name : plan.methods) {
@@ -161,34 +139,15 @@ void write_outputs(const BenchCommand& cmd, const BenchReport& report)
     std::cout << md;
 }
 
-void run_bench(const BenchCommand& cmd)
+void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
 {
-    Plan plan{parse_name_list("--methods", cmd.methods, method_names()),
-              parse_name_list("--precisions", cmd.precisions, {"precise", "fast", "relaxed"}),
-              parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world"}), {}};
-    BenchReport report;
-    report.command = command_line();
-    report.date = today();
-    report.machine = machine_description();
-    report.count = std::uint32_t(parse_count("-n", cmd.count));
-    if (report.count > (1u << 30) || parse_count("-n", cmd.count) > (1u << 30))
-        throw UsageError("-n", cmd.count, "1 .. 2^30 samples per timed run");
-    report.native_count = std::uint32_t(parse_whole("--native-count", std::to_string(parse_count("--native-count", cmd.native_count)), 1, 1u << 28));
-    report.repeats = int(parse_whole("--repeats", cmd.repeats, 5, 101));
-    report.threads = int(parse_whole("--threads", cmd.threads, 1, 256));
-    report.scene_size = int(parse_whole("--scene", cmd.scene, 2, 64));
-    report.samples_per_cell = parse_whole("--cell-samples", std::to_string(parse_count("--cell-samples", cmd.cell_samples)), 2, 1ull << 26);
-    report.budget_ms = parse_angle("--budget-ms", cmd.budget_ms, 1e-3, 1e6);
-    std::array<float, 2> alpha = parse_alpha("--alpha", cmd.alpha);
-    if (alpha[0] != alpha[1])
-        throw UsageError("--alpha", cmd.alpha, "one value (the bench includes caps-iso and world space, which are isotropic)");
-    report.alpha = alpha[0];
-    report.theta = parse_angle("--theta", cmd.theta, 0.0, 89.0);
-    plan.base.alpha_x = plan.base.alpha_y = alpha[0];
-    plan.base.view = ggxcl::view_from_angles(report.theta, 0.0);
     for (const std::string& path : {cmd.csv, cmd.markdown, cmd.charts})
         if (!path.empty())
             check_writable_folder(path == cmd.csv ? "--csv" : path == cmd.markdown ? "--markdown" : "--charts", path);
+    BenchReport report = plan.settings;
+    report.command = command_line();
+    report.date = today();
+    report.machine = machine_description();
     ggxcl::Sampler sampler(cmd.device);
     report.device = sampler.device_name();
     measure_device(sampler, plan, cmd, report);
@@ -199,9 +158,23 @@ void run_bench(const BenchCommand& cmd)
     write_outputs(cmd, report);
 }
 
+// The speed runs: every method in every precision mode.
+std::vector<Batch> timed_batches(const BenchPlan& plan)
+{
+    std::vector<Batch> batches;
+    for (const std::string& mode : plan.precisions)
+        for (const std::string& name : plan.methods) {
+            ggxcl::SampleParams p = plan.base;
+            p.method = ggxcl::parse_method(name);
+            p.precision = ggxcl::parse_precision(mode);
+            batches.push_back({p, {0, 0, plan.settings.count}});
+        }
+    return batches;
+}
+
 } // namespace
 
-Action add_bench_command(CLI::App& app)
+Prepare add_bench_command(CLI::App& app)
 {
     auto s = std::make_shared<BenchCommand>();
     CLI::App* cmd = app.add_subcommand("bench", "Speed against accuracy of every method and precision mode on a device, "
@@ -226,9 +199,11 @@ Action add_bench_command(CLI::App& app)
     cmd->add_option("--csv", s->csv, "write the rows to this CSV file");
     cmd->add_option("--charts", s->charts, "write PREFIX-speed-error.png and PREFIX-speed-rmse.png");
     cmd->add_option("--markdown", s->markdown, "write the report to this Markdown file");
-    return [cmd, s] {
-        if (*cmd)
-            run_bench(*s);
+    return [cmd, s]() -> std::optional<Work> {
+        if (!*cmd)
+            return std::nullopt;
+        BenchPlan plan = plan_bench(*s);
+        return Work{[s, plan] { run_bench(*s, plan); }, timed_batches(plan)};
     };
 }
 

@@ -66,11 +66,28 @@ std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult
     return md.str();
 }
 
-void run_demo(const DemoCommand& demo)
+struct DemoCounts {
+    std::uint64_t cloud = 0, histogram = 0;
+};
+
+// Checks every option for every method; returns the counts and what will be sampled.
+DemoCounts check_demo(const DemoCommand& demo, std::vector<Batch>& batches)
 {
-    std::uint64_t count = parse_count("-n", demo.count), histogram_count = parse_count("--histogram-n", demo.histogram_count);
-    for (ggxcl::Method method : ggxcl::all_methods)  // every option is checked before anything is written
-        demo.options.for_method(method).params_for(method);
+    DemoCounts counts{parse_count("-n", demo.count), parse_count("--histogram-n", demo.histogram_count)};
+    std::vector<ggxcl::SampleParams> params;
+    for (ggxcl::Method method : ggxcl::all_methods)
+        params.push_back(demo.options.for_method(method).params_for(method));
+    std::uint64_t seed = demo.options.parsed_seed();
+    for (const ggxcl::SampleParams& p : params) {
+        batches.push_back({p, {seed, 0, counts.cloud}});
+        batches.push_back({p, {seed, 0, counts.histogram}});
+    }
+    return counts;
+}
+
+void run_demo(const DemoCommand& demo, DemoCounts counts)
+{
+    const std::uint64_t count = counts.cloud, histogram_count = counts.histogram;
     std::filesystem::create_directories(demo.out);
     check_writable_folder("--out", demo.out + "/index.md");
     ggxcl::Sampler sampler(demo.options.device);
@@ -99,7 +116,7 @@ void run_demo(const DemoCommand& demo)
 
 } // namespace
 
-Action add_demo_command(CLI::App& app)
+Prepare add_demo_command(CLI::App& app)
 {
     auto state = std::make_shared<DemoCommand>();
     CLI::App* cmd = app.add_subcommand("demo", "Samples, histograms and a summary page for every method");
@@ -109,9 +126,12 @@ Action add_demo_command(CLI::App& app)
         ->capture_default_str();
     cmd->add_flag("--no-png", state->no_png, "skip the figures (no Python needed)");
     cmd->add_option("--out", state->out, "output folder")->capture_default_str();
-    return [cmd, state] {
-        if (*cmd)
-            run_demo(*state);
+    return [cmd, state]() -> std::optional<Work> {
+        if (!*cmd)
+            return std::nullopt;
+        std::vector<Batch> batches;
+        DemoCounts counts = check_demo(*state, batches);
+        return Work{[state, counts] { run_demo(*state, counts); }, batches};
     };
 }
 

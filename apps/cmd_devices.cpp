@@ -8,16 +8,24 @@
 
 namespace ggxapp {
 
-Action add_devices_command(CLI::App& app)
+namespace {
+
+void list_devices()
+{
+    for (const ggxcl::DeviceInfo& d : ggxcl::list_devices())
+        std::cout << d.index << ": " << d.label() << " (" << d.type << ", " << d.compute_units
+                  << " compute units)  select with --device " << d.index << " or GGXCL_DEVICE=" << d.index << "\n";
+}
+
+} // namespace
+
+Prepare add_devices_command(CLI::App& app)
 {
     CLI::App* cmd = app.add_subcommand("devices", "List OpenCL devices and their selectors");
-    return [cmd] {
+    return [cmd]() -> std::optional<Work> {
         if (!*cmd)
-            return;
-        for (const ggxcl::DeviceInfo& d : ggxcl::list_devices())
-            std::cout << d.index << ": " << d.label() << " (" << d.type << ", " << d.compute_units
-                      << " compute units)  select with --device " << d.index << " or GGXCL_DEVICE=" << d.index
-                      << "\n";
+            return std::nullopt;
+        return Work{list_devices, {}};
     };
 }
 

@@ -17,6 +17,7 @@ struct HistogramCommand {
     std::string count = "1e6", first = "0", bins_z = "32", bins_phi = "64", check, against, out, of = "o";
     bool no_png = false;
 
+    // Every option checked; the --out folder is checked by run_histogram.
     HistogramJob job() const
     {
         HistogramJob job;
@@ -31,12 +32,11 @@ struct HistogramCommand {
         }
         job.theta_degrees = options.parsed_theta();
         job.phi_degrees = options.parsed_phi();
-        job.range = {options.parsed_seed(), parse_uint64("--first", first), parse_count("-n", count)};
+        job.range = options.parsed_range(first, count);
         job.bins_z = int(parse_whole("--bins-z", bins_z, 1, 512));
         job.bins_phi = int(parse_whole("--bins-phi", bins_phi, 1, 1024));
         if (out.empty())
             throw UsageError("--out", out, "a path prefix such as results/caps");
-        check_writable_folder("--out", out);
         job.prefix = out;
         job.png = !no_png;
         if (of != "o" && of != "m")
@@ -46,9 +46,21 @@ struct HistogramCommand {
     }
 };
 
+// `level`: the --check significance level, 0 when none was given.
+void run_histogram(const HistogramCommand& command, const HistogramJob& job, double level)
+{
+    check_writable_folder("--out", job.prefix);
+    ggxcl::Sampler sampler(command.options.device);
+    HistogramResult result = run_histogram_job(sampler, job);
+    std::cout << job.prefix << ": chi-square " << result.chi_square << " on " << result.dof << " dof, p = "
+              << result.p_value << (result.png.empty() ? "" : ", figure " + result.png) << "\n";
+    if (level > 0.0 && result.p_value < level)
+        throw CheckFailed("p = " + std::to_string(result.p_value) + " is below --check " + command.check);
+}
+
 } // namespace
 
-Action add_histogram_command(CLI::App& app)
+Prepare add_histogram_command(CLI::App& app)
 {
     auto state = std::make_shared<HistogramCommand>();
     CLI::App* cmd = app.add_subcommand("histogram", "Bin o (or m) on the device and chi-square test it against the pdf");
@@ -64,17 +76,12 @@ Action add_histogram_command(CLI::App& app)
     cmd->add_option("--check", state->check, "exit with status 1 when p < ALPHA (0 < ALPHA < 1)");
     cmd->add_flag("--no-png", state->no_png, "skip the figure (no Python needed)");
     cmd->add_option("--out", state->out, "path prefix of PREFIX.observed.npy, .expected.npy, .json, .png")->required();
-    return [cmd, state] {
+    return [cmd, state]() -> std::optional<Work> {
         if (!*cmd)
-            return;
+            return std::nullopt;
         double level = state->check.empty() ? 0.0 : parse_level("--check", state->check);
         HistogramJob job = state->job();
-        ggxcl::Sampler sampler(state->options.device);
-        HistogramResult result = run_histogram_job(sampler, job);
-        std::cout << job.prefix << ": chi-square " << result.chi_square << " on " << result.dof << " dof, p = "
-                  << result.p_value << (result.png.empty() ? "" : ", figure " + result.png) << "\n";
-        if (level > 0.0 && result.p_value < level)
-            throw CheckFailed("p = " + std::to_string(result.p_value) + " is below --check " + state->check);
+        return Work{[state, job, level] { run_histogram(*state, job, level); }, {{job.params, job.range}}};
     };
 }
 

@@ -80,33 +80,45 @@ void merge_csv(const std::vector<std::string>& shards, const std::string& out)
     file.commit();
 }
 
+// Checks the output and the shards' formats: both .npy, or both .csv.
+Format check_formats(const std::vector<std::string>& shards, const std::string& out)
+{
+    Format format = format_of("--out", out);
+    for (const std::string& shard : shards)
+        if (format_of("SHARD", shard) != format || format == Format::ply)
+            throw UsageError("SHARD", shard, "shards of the output's format, .npy or .csv");
+    return format;
+}
+
+void run_merge(const std::vector<std::string>& shards, const std::string& out, Format format)
+{
+    check_writable_folder("--out", out);
+    nlohmann::json sidecar = merged_sidecar(shards);
+    AtomicFile json_file(sidecar_path(out));
+    if (format == Format::npy)
+        merge_npy(shards, out, sidecar["count"].get<std::uint64_t>(), sidecar["columns"].size());
+    else
+        merge_csv(shards, out);
+    std::string text = sidecar.dump(2) + "\n";
+    json_file.write(text.data(), text.size());
+    json_file.commit();
+    std::cout << out << ": " << sidecar["count"] << " samples from " << shards.size() << " shards\n";
+}
+
 } // namespace
 
-Action add_merge_command(CLI::App& app)
+Prepare add_merge_command(CLI::App& app)
 {
     auto shards = std::make_shared<std::vector<std::string>>();
     auto out = std::make_shared<std::string>();
     CLI::App* cmd = app.add_subcommand("merge", "Join shards of consecutive --first ranges into one file (.npy or .csv)");
     cmd->add_option("--out", *out, "merged output, same extension as the shards")->required();
     cmd->add_option("shards", *shards, "shard files in order of --first")->required();
-    return [cmd, shards, out] {
+    return [cmd, shards, out]() -> std::optional<Work> {
         if (!*cmd)
-            return;
-        Format format = format_of("--out", *out);
-        for (const std::string& shard : *shards)
-            if (format_of("SHARD", shard) != format || format == Format::ply)
-                throw UsageError("SHARD", shard, "shards of the output's format, .npy or .csv");
-        check_writable_folder("--out", *out);
-        nlohmann::json sidecar = merged_sidecar(*shards);
-        AtomicFile json_file(sidecar_path(*out));
-        if (format == Format::npy)
-            merge_npy(*shards, *out, sidecar["count"].get<std::uint64_t>(), sidecar["columns"].size());
-        else
-            merge_csv(*shards, *out);
-        std::string text = sidecar.dump(2) + "\n";
-        json_file.write(text.data(), text.size());
-        json_file.commit();
-        std::cout << *out << ": " << sidecar["count"] << " samples from " << shards->size() << " shards\n";
+            return std::nullopt;
+        Format format = check_formats(*shards, *out);
+        return Work{[shards, out, format] { run_merge(*shards, *out, format); }, {}};
     };
 }
 

@@ -1,5 +1,5 @@
-// cmd_sample.cpp - `ggx sample`: samples of one method into a .npy with a
-// JSON sidecar.
+// cmd_sample.cpp - `ggx sample`: samples of one method into a .npy, .csv or
+// .ply with a JSON sidecar, on one device or split across several.
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -36,13 +36,14 @@ struct SampleCommand {
         return list;
     }
 
+    // Every option checked; the --out folder is checked by run_sample.
     SampleJob job() const
     {
         SampleJob job;
         job.params = options.params_for(options.parsed_method());
         job.theta_degrees = options.parsed_theta();
         job.phi_degrees = options.parsed_phi();
-        job.range = {options.parsed_seed(), parse_uint64("--first", first), parse_count("-n", count)};
+        job.range = options.parsed_range(first, count);
         try {
             job.fields = ggxcl::parse_field_list(fields);
         } catch (const ggxcl::InvalidArgument&) {
@@ -56,15 +57,25 @@ struct SampleCommand {
                 throw UsageError("--fields", fields, "o or m for a .ply (the direction plotted, colored by its pdf)");
             }
         }
-        check_writable_folder("--out", out);
         job.out = out;
         return job;
     }
 };
 
+void run_sample(const SampleCommand& command, const SampleJob& job)
+{
+    check_writable_folder("--out", job.out);
+    std::vector<std::unique_ptr<ggxcl::Sampler>> owned = command.samplers();
+    std::vector<ggxcl::Sampler*> samplers;
+    for (auto& s : owned)
+        samplers.push_back(s.get());
+    run_sample_job(samplers, job);
+    std::cout << job.out << ": " << job.range.count << " samples of " << command.options.method << "\n";
+}
+
 } // namespace
 
-Action add_sample_command(CLI::App& app)
+Prepare add_sample_command(CLI::App& app)
 {
     auto state = std::make_shared<SampleCommand>();
     CLI::App* cmd = app.add_subcommand("sample", "Write samples of one method to a .npy file with a JSON sidecar");
@@ -78,17 +89,12 @@ Action add_sample_command(CLI::App& app)
     cmd->add_option("--out", state->out, "output .npy, .csv or .ply (a .json sidecar goes beside it)")->required();
     cmd->add_option("--devices", state->devices, "split the job across these devices: selectors separated by commas");
     cmd->add_flag("--all-devices", state->all_devices, "split the job across every device of the machine");
-    return [cmd, state, fields] {
+    return [cmd, state, fields]() -> std::optional<Work> {
         if (!*cmd)
-            return;
+            return std::nullopt;
         state->fields_given = fields->count() > 0;
         SampleJob job = state->job();
-        std::vector<std::unique_ptr<ggxcl::Sampler>> owned = state->samplers();
-        std::vector<ggxcl::Sampler*> samplers;
-        for (auto& s : owned)
-            samplers.push_back(s.get());
-        run_sample_job(samplers, job);
-        std::cout << job.out << ": " << job.range.count << " samples of " << state->options.method << "\n";
+        return Work{[state, job] { run_sample(*state, job); }, {{job.params, job.range}}};
     };
 }
 

@@ -58,19 +58,25 @@ void print_totals(const std::string& method, const char* side, const StressMap& 
     std::cout << " |\n";
 }
 
-void run_stress(const StressCommand& cmd)
+struct StressPlan {
+    std::vector<ggxcl::Method> methods;
+    ggxcl::Precision precision = ggxcl::Precision::precise;
+};
+
+StressPlan plan_stress(const StressCommand& cmd)
 {
-    std::vector<ggxcl::Method> methods = parse_methods(cmd.methods);
-    ggxcl::Precision precision;
+    StressPlan plan{parse_methods(cmd.methods)};
     try {
-        precision = ggxcl::parse_precision(cmd.precision);
+        plan.precision = ggxcl::parse_precision(cmd.precision);
     } catch (const ggxcl::InvalidArgument&) {
         throw UsageError("--precision", cmd.precision, "one of precise, fast, relaxed");
     }
-    check_writable_folder("--out", cmd.out + ".csv");
-    ggxcl::Sampler sampler(cmd.device);
-    StressAxes axes = stress_axes();
-    std::ostringstream csv;
+    return plan;
+}
+
+// The CSV's header line and the totals table's header (Markdown).
+void write_headers(std::ostringstream& csv)
+{
     csv << std::setprecision(9) << "method,side,precision,alpha,theta_degrees,cases";
     for (int k = 0; k < failure_kinds; ++k)
         csv << "," << failure_name(k);
@@ -82,10 +88,19 @@ void run_stress(const StressCommand& cmd)
     for (int k = 0; k < failure_kinds; ++k)
         std::cout << "---|";
     std::cout << "\n";
-    for (ggxcl::Method method : methods) {
+}
+
+void run_stress(const StressCommand& cmd, const StressPlan& plan)
+{
+    check_writable_folder("--out", cmd.out + ".csv");
+    ggxcl::Sampler sampler(cmd.device);
+    StressAxes axes = stress_axes();
+    std::ostringstream csv;
+    write_headers(csv);
+    for (ggxcl::Method method : plan.methods) {
         std::string name(ggxcl::method_name(method));
         std::vector<StressCase> cases = stress_cases(method, axes);
-        StressMap device = device_stress_map(sampler, method, precision, cases, axes);
+        StressMap device = device_stress_map(sampler, method, plan.precision, cases, axes);
         StressMap host = host_stress_map(method, cases, axes);
         append_rows(csv, name, "device", cmd.precision, axes, device);
         append_rows(csv, name, "host", "double", axes, host);
@@ -99,7 +114,7 @@ void run_stress(const StressCommand& cmd)
 
 } // namespace
 
-Action add_stress_command(CLI::App& app)
+Prepare add_stress_command(CLI::App& app)
 {
     auto s = std::make_shared<StressCommand>();
     CLI::App* cmd = app.add_subcommand("stress", "Stability map: failures of every method over alpha x view x uniforms, "
@@ -109,9 +124,11 @@ Action add_stress_command(CLI::App& app)
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
     cmd->add_option("--out", s->out, "output prefix: PREFIX.csv and PREFIX-METHOD.png")->required();
     cmd->add_flag("--no-png", s->no_png, "write the CSV only (no Python needed)");
-    return [cmd, s] {
-        if (*cmd)
-            run_stress(*s);
+    return [cmd, s]() -> std::optional<Work> {
+        if (!*cmd)
+            return std::nullopt;
+        StressPlan plan = plan_stress(*s);
+        return Work{[s, plan] { run_stress(*s, plan); }, {}};
     };
 }
 

@@ -1,23 +1,44 @@
-// commands.hpp - the subcommands of the `ggx` tool; each registers its
-// options on a CLI11 subcommand and returns the action to run after parsing.
+// commands.hpp - the subcommands of the `ggx` tool.  Each registers its
+// options on a CLI11 subcommand and returns its prepare step, called after
+// parsing: it checks every option (touching no file and no device) and
+// returns the work to run, or nothing when its subcommand was not given.
+// Bad usage is thus reported before any device is opened or file written.
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+#include <ggxcl/ggxcl.hpp>
 
 namespace ggxapp {
 
-using Action = std::function<void()>;
+// One batch of samples a prepared command will draw: checked parameters
+// (normalized) and range.
+struct Batch {
+    ggxcl::SampleParams params;
+    ggxcl::SampleRange range;
+};
 
-Action add_devices_command(CLI::App& app);
-Action add_sample_command(CLI::App& app);
-Action add_demo_command(CLI::App& app);
-Action add_merge_command(CLI::App& app);
-Action add_histogram_command(CLI::App& app);
-Action add_bench_command(CLI::App& app);
-Action add_stress_command(CLI::App& app);
+// A prepared command: `run` opens the devices and files and does the job
+// (file-system checks such as a writable --out folder come first in it);
+// `batches` lists what it will sample, for tests and fuzz/fuzz_cli.
+struct Work {
+    std::function<void()> run;
+    std::vector<Batch> batches;
+};
+
+using Prepare = std::function<std::optional<Work>()>;
+
+Prepare add_devices_command(CLI::App& app);
+Prepare add_sample_command(CLI::App& app);
+Prepare add_demo_command(CLI::App& app);
+Prepare add_merge_command(CLI::App& app);
+Prepare add_histogram_command(CLI::App& app);
+Prepare add_bench_command(CLI::App& app);
+Prepare add_stress_command(CLI::App& app);
 
 // The command line as typed (program name shortened to `ggx`), for reports.
 void remember_command_line(int argc, char** argv);

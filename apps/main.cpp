@@ -1,37 +1,32 @@
 // main.cpp - the `ggx` command-line tool.  Exit status: 0 success, 1 runtime
-// failure, 2 bad usage; messages go to stderr on one line.
+// failure, 2 bad usage; messages go to stderr on one line.  Every option is
+// checked (GgxApp::prepare) before any device is opened or file written.
 #include <iostream>
 
 #include <ggxcl/ggxcl.hpp>
 
 #include "atomic_file.hpp"
 #include "cli_values.hpp"
-#include "commands.hpp"
+#include "ggx_app.hpp"
 
 int main(int argc, char** argv)
 {
     ggxapp::remember_command_line(argc, argv);
     ggxapp::install_interrupt_cleanup();
-    CLI::App app{"ggx - GGX microfacet importance samplers on OpenCL devices (ggxcl " +
-                 std::string(ggxcl::version()) + ")"};
-    app.require_subcommand(1);
-    std::vector<ggxapp::Action> actions = {ggxapp::add_devices_command(app), ggxapp::add_sample_command(app),
-                                           ggxapp::add_histogram_command(app), ggxapp::add_demo_command(app),
-                                           ggxapp::add_merge_command(app), ggxapp::add_bench_command(app),
-                                           ggxapp::add_stress_command(app)};
+    ggxapp::GgxApp app;
     try {
-        app.parse(argc, argv);
+        app.cli.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
+        return app.cli.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
+        return app.cli.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "ggx: " << e.what() << " (see ggx --help)\n";
         return 2;
     }
     try {
-        for (const ggxapp::Action& action : actions)
-            action();
+        for (const ggxapp::Work& work : app.prepare())
+            work.run();
     } catch (const ggxapp::CheckFailed& e) {
         std::cerr << "ggx: check failed: " << e.what() << "\n";
         return 1;

@@ -1,6 +1,8 @@
 // sample_options.cpp - shared sampling options and their validation.
 #include "sample_options.hpp"
 
+#include <limits>
+
 #include "cli_values.hpp"
 
 namespace ggxapp {
@@ -42,6 +44,15 @@ ggxcl::Method SampleOptions::parsed_method() const
 }
 
 std::uint64_t SampleOptions::parsed_seed() const { return parse_uint64("--seed", seed); }
+ggxcl::SampleRange SampleOptions::parsed_range(const std::string& first, const std::string& count) const
+{
+    ggxcl::SampleRange range{parsed_seed(), parse_uint64("--first", first), parse_count("-n", count)};
+    const std::uint64_t room = std::numeric_limits<std::uint64_t>::max() - range.first;
+    if (range.count > room)  // found by fuzz/fuzz_cli: refused by the library only after a device was opened
+        throw UsageError("-n", count, "at most 2^64 - 1 - --first = " + std::to_string(room) + " samples");
+    return range;
+}
+
 double SampleOptions::parsed_theta() const { return parse_angle("--theta", theta, 0.0, 180.0); }
 double SampleOptions::parsed_phi() const { return parse_angle("--phi", phi, -360.0, 360.0); }
 

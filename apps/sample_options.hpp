@@ -35,6 +35,8 @@ struct SampleOptions {
     ggxcl::SampleParams params_for(ggxcl::Method method) const;
     ggxcl::Method parsed_method() const;
     std::uint64_t parsed_seed() const;
+    // --seed, --first and -n; the range must end before index 2^64.
+    ggxcl::SampleRange parsed_range(const std::string& first, const std::string& count) const;
     double parsed_theta() const;
     double parsed_phi() const;
 };

@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-15}"
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++-15 -DGGXCL_BUILD_FUZZERS=ON >/dev/null
 cmake --build build-fuzz -j"$(nproc)"
-for target in npy sidecar values; do
+for target in npy sidecar values cli; do
   work="$(mktemp -d)"
   cp fuzz/corpus/"$target"/* "$work"/
   echo "fuzz_$target: ${seconds} s"

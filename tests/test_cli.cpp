@@ -111,6 +111,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"sample --method caps -n 0" + out, "-n"},
         {"sample --method caps -n -5" + out, "-n"},
         {"sample --method caps -n ten" + out, "-n"},
+        {"sample --method caps -n 2^63 --first 18446744073709551615" + out, "-n"},  // found by fuzz_cli
         {"sample --method caps -n 10 --fields m,x" + out, "--fields"},
         {"sample --method caps --normal 0,0,1 -n 10" + out, "--normal"},
         {"sample --method caps-iso --normal 0,0,0 -n 10" + out, "--normal"},
@@ -123,6 +124,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"histogram --method caps --alpha 0" + out, "--alpha"},
         {"histogram --method caps --theta 200" + out, "--theta"},
         {"histogram --method caps -n 0" + out, "-n"},
+        {"histogram --method caps -n 2 --first 18446744073709551615" + out, "-n"},
         {"histogram --method caps --check 1.5" + out, "--check"},
         {"histogram --method caps --bins-z 0" + out, "--bins-z"},
         {"histogram --method caps --bins-phi x" + out, "--bins-phi"},

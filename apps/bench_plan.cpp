@@ -1,0 +1,55 @@
+// bench_plan.cpp - checking the options of `ggx bench` into its plan.
+#include "bench_plan.hpp"
+
+#include <array>
+
+#include "cli_values.hpp"
+#include "sample_options.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+// The report's settings, in the order the options are checked.
+void plan_settings(const BenchCommand& cmd, BenchReport& report)
+{
+    report.count = std::uint32_t(parse_count("-n", cmd.count));
+    if (report.count > (1u << 30) || parse_count("-n", cmd.count) > (1u << 30))
+        throw UsageError("-n", cmd.count, "1 .. 2^30 samples per timed run");
+    report.native_count = std::uint32_t(parse_whole(
+        "--native-count", std::to_string(parse_count("--native-count", cmd.native_count)), 1, 1u << 28));
+    report.repeats = int(parse_whole("--repeats", cmd.repeats, 5, 101));
+    report.threads = int(parse_whole("--threads", cmd.threads, 1, 256));
+    report.scene_size = int(parse_whole("--scene", cmd.scene, 2, 64));
+    report.samples_per_cell = parse_whole(
+        "--cell-samples", std::to_string(parse_count("--cell-samples", cmd.cell_samples)), 2, 1ull << 26);
+    report.budget_ms = parse_angle("--budget-ms", cmd.budget_ms, 1e-3, 1e6);
+}
+
+} // namespace
+
+BenchJob job_named(const std::string& name)
+{
+    for (BenchJob job : all_bench_jobs)
+        if (job_name(job) == name)
+            return job;
+    throw UsageError("--jobs", name, "write, furnace or world");
+}
+
+BenchPlan plan_bench(const BenchCommand& cmd)
+{
+    BenchPlan plan{parse_name_list("--methods", cmd.methods, method_names()),
+                   parse_name_list("--precisions", cmd.precisions, {"precise", "fast", "relaxed"}),
+                   parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world"}), {}, {}};
+    plan_settings(cmd, plan.settings);
+    std::array<float, 2> alpha = parse_alpha("--alpha", cmd.alpha);
+    if (alpha[0] != alpha[1])
+        throw UsageError("--alpha", cmd.alpha, "one value (the bench includes caps-iso and world space, which are isotropic)");
+    plan.settings.alpha = alpha[0];
+    plan.settings.theta = parse_angle("--theta", cmd.theta, 0.0, 89.0);
+    plan.base.alpha_x = plan.base.alpha_y = alpha[0];
+    plan.base.view = ggxcl::view_from_angles(plan.settings.theta, 0.0);
+    return plan;
+}
+
+} // namespace ggxapp

@@ -1,0 +1,37 @@
+// bench_plan.hpp - the options of `ggx bench` as typed, and the plan they
+// give once checked: the method, precision and job lists, the speed runs'
+// parameters and the report's settings (counts, repeats, threads, table
+// size, budget).  Planning touches no file and no device.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ggxcl/ggxcl.hpp>
+
+#include "bench_report.hpp"
+
+namespace ggxapp {
+
+struct BenchCommand {
+    std::string alpha = "0.3", theta = "60", device;
+    std::string methods = "all", precisions = "precise,fast,relaxed", jobs = "write,furnace,world";
+    std::string count = "2^24", native_count = "2^22", repeats = "7", threads = "2";
+    std::string scene = "16", cell_samples = "2^14", budget_ms = "1";
+    bool no_native = false, no_accuracy = false, no_startup = false;
+    std::string csv, charts, markdown;
+};
+
+struct BenchPlan {
+    std::vector<std::string> methods, precisions, jobs;
+    ggxcl::SampleParams base;  // the speed runs' roughness and view
+    BenchReport settings;      // count, native_count, repeats, threads, scene_size,
+                               // samples_per_cell, budget_ms, alpha, theta
+};
+
+// Throws UsageError naming the first bad option.
+BenchPlan plan_bench(const BenchCommand& cmd);
+
+BenchJob job_named(const std::string& name);
+
+} // namespace ggxapp

@@ -1,0 +1,45 @@
+# GgxclInstall.cmake - what `cmake --install` puts where (GNUInstallDirs):
+# libggxcl, its C++ headers, the OpenCL C device headers for user kernels
+# (GGXCL_INSTALL_DEVICE_DIR) and the `ggx` tool; the CMake package
+# (find_package(ggxcl CONFIG) -> ggxcl::ggxcl, with a version file), the
+# pkg-config file ggxcl.pc, and the same package for the build tree.
+include(CMakePackageConfigHelpers)
+set(GGXCL_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/ggxcl)
+
+install(TARGETS ggxcl EXPORT ggxclTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/lib/include/ggxcl DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+  FILES_MATCHING PATTERN "*.hpp")
+# Every header (user kernels include them) and the bulk kernels built from
+# them, for reading or building offline; not the stress harness.
+file(GLOB GGXCL_DEVICE_HEADERS ${PROJECT_SOURCE_DIR}/kernels/*.h)
+install(FILES ${GGXCL_DEVICE_HEADERS} ${PROJECT_SOURCE_DIR}/kernels/ggx_bulk.cl
+  ${PROJECT_SOURCE_DIR}/kernels/ggx_furnace.cl ${PROJECT_SOURCE_DIR}/kernels/ggx_histogram.cl
+  DESTINATION ${GGXCL_INSTALL_DEVICE_DIR})
+if(TARGET ggx)
+  install(TARGETS ggx RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+
+# The CMake package, installed: GGXCL_DEVICE_INCLUDE_DIR relative to the prefix.
+set(GGXCL_CONFIG_DEVICE_DIR ${GGXCL_INSTALL_DEVICE_DIR})
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/ggxclConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/package/ggxclConfig.cmake
+  INSTALL_DESTINATION ${GGXCL_CMAKE_DIR} PATH_VARS GGXCL_CONFIG_DEVICE_DIR)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/ggxclConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(EXPORT ggxclTargets NAMESPACE ggxcl:: DESTINATION ${GGXCL_CMAKE_DIR})
+install(FILES ${PROJECT_BINARY_DIR}/package/ggxclConfig.cmake ${PROJECT_BINARY_DIR}/ggxclConfigVersion.cmake
+  DESTINATION ${GGXCL_CMAKE_DIR})
+
+# The same package in the build tree (ggxcl_DIR=<build dir>): the device
+# headers are the source tree's kernels/.
+set(GGXCL_CONFIG_DEVICE_DIR ${PROJECT_SOURCE_DIR}/kernels)
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/ggxclConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/ggxclConfig.cmake
+  INSTALL_DESTINATION ${PROJECT_BINARY_DIR} INSTALL_PREFIX ${PROJECT_BINARY_DIR}
+  PATH_VARS GGXCL_CONFIG_DEVICE_DIR)
+export(EXPORT ggxclTargets NAMESPACE ggxcl:: FILE ${PROJECT_BINARY_DIR}/ggxclTargets.cmake)
+
+include(${CMAKE_CURRENT_LIST_DIR}/GgxclPkgConfig.cmake)

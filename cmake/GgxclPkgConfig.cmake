@@ -1,0 +1,40 @@
+# GgxclPkgConfig.cmake - ggxcl.pc for `pkg-config --cflags --libs ggxcl`:
+# the include directory and ggxcl's public compile definitions, the library
+# with OpenCL (and, for a static libggxcl, the thread library).  The prefix
+# is found from the file's own place (${pcfiledir}), so the installed tree
+# can move; `pkg-config --variable=devicedir ggxcl` names the device headers.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_INCLUDEDIR}")
+  set(GGXCL_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+  set(GGXCL_PC_LIBDIR "${CMAKE_INSTALL_FULL_LIBDIR}")
+  set(GGXCL_PC_INCLUDEDIR "${CMAKE_INSTALL_FULL_INCLUDEDIR}")
+else()
+  file(RELATIVE_PATH GGXCL_PC_UP /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
+  string(REGEX REPLACE "/$" "" GGXCL_PC_UP "${GGXCL_PC_UP}")
+  set(GGXCL_PC_PREFIX "\${pcfiledir}/${GGXCL_PC_UP}")
+  set(GGXCL_PC_LIBDIR "\${prefix}/${CMAKE_INSTALL_LIBDIR}")
+  set(GGXCL_PC_INCLUDEDIR "\${prefix}/${CMAKE_INSTALL_INCLUDEDIR}")
+endif()
+
+# -D flags of the definitions that travel with ggxcl::ggxcl.
+get_target_property(GGXCL_PC_DEFINITIONS ggxcl INTERFACE_COMPILE_DEFINITIONS)
+list(TRANSFORM GGXCL_PC_DEFINITIONS PREPEND -D)
+list(JOIN GGXCL_PC_DEFINITIONS " " GGXCL_PC_CFLAGS)
+
+# OpenCL: its include and library directories unless the compiler searches them anyway.
+set(GGXCL_PC_LIBS "-lOpenCL")
+get_filename_component(GGXCL_OPENCL_LIBDIR "${OpenCL_LIBRARY}" DIRECTORY)
+if(GGXCL_OPENCL_LIBDIR AND NOT GGXCL_OPENCL_LIBDIR IN_LIST CMAKE_CXX_IMPLICIT_LINK_DIRECTORIES)
+  string(PREPEND GGXCL_PC_LIBS "-L${GGXCL_OPENCL_LIBDIR} ")
+endif()
+foreach(dir IN LISTS OpenCL_INCLUDE_DIRS)
+  if(NOT dir IN_LIST CMAKE_CXX_IMPLICIT_INCLUDE_DIRECTORIES)
+    string(APPEND GGXCL_PC_CFLAGS " -I${dir}")
+  endif()
+endforeach()
+get_target_property(GGXCL_TYPE ggxcl TYPE)
+if(GGXCL_TYPE STREQUAL "STATIC_LIBRARY" AND CMAKE_THREAD_LIBS_INIT)
+  string(APPEND GGXCL_PC_LIBS " ${CMAKE_THREAD_LIBS_INIT}")
+endif()
+
+configure_file(${CMAKE_CURRENT_LIST_DIR}/ggxcl.pc.in ${PROJECT_BINARY_DIR}/package/ggxcl.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/package/ggxcl.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -1,0 +1,25 @@
+// user_kernels.cpp - building a user's program with the device headers on
+// its include path, and the -I option that puts them there.
+#include "ggxcl/user_kernels.hpp"
+
+#include "build_program.hpp"
+
+namespace ggxcl {
+
+std::string device_include_option()
+{
+    const std::string dir = device_include_dir();
+    // Drivers split build options at spaces; quoting is the common reading.
+    if (dir.find_first_of(" \t") != std::string::npos)
+        return "-I\"" + dir + "\"";
+    return "-I" + dir;
+}
+
+cl::Program build_user_program(const cl::Context& context, const cl::Device& device, const std::string& source,
+                               const std::string& options)
+{
+    return detail::build_program(context, device, source,
+                                 device_include_option() + (options.empty() ? "" : " " + options));
+}
+
+} // namespace ggxcl

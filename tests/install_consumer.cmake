@@ -1,0 +1,101 @@
+# install_consumer.cmake - the test_install_consumer CTest script (cmake -P):
+# installs the build tree to a temporary prefix, checks what is there and
+# that every installed C++ header compiles on its own, builds
+# examples/albedo_table against the installed package (CMAKE_PREFIX_PATH),
+# runs it and checks its .npy and .png files, compiles tests/consumer with
+# `pkg-config --cflags --libs ggxcl` and against the build tree's export
+# (ggxcl_DIR = the build tree), runs both, and removes the prefix.
+# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, LIBDIR, INCLUDEDIR, BINDIR,
+# GENERATOR, CXX, CXX_FLAGS, LINKER_FLAGS, SAMPLES, HAS_GGX.
+cmake_minimum_required(VERSION 3.20)
+set(prefix ${WORK_DIR}/prefix)
+separate_arguments(cxx_flags UNIX_COMMAND "${CXX_FLAGS}")
+separate_arguments(linker_flags UNIX_COMMAND "${LINKER_FLAGS}")
+set(forward_flags -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX}
+    "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
+
+function(fail message)
+  file(REMOVE_RECURSE ${WORK_DIR})
+  message(FATAL_ERROR "${message}")
+endfunction()
+
+# Runs a command; on failure removes the work directory and stops with its output.
+function(step name)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    fail("${name} failed (${status}):\n${out}\n${err}")
+  endif()
+  message(STATUS "${name}: ok")
+  set(step_output "${out}" PARENT_SCOPE)
+endfunction()
+
+function(expect_files)
+  foreach(path IN LISTS ARGN)
+    if(NOT EXISTS ${path})
+      fail("missing: ${path}")
+    endif()
+  endforeach()
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+
+# 1. Install, and what it put where.
+step("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+if(HAS_GGX)
+  expect_files(${prefix}/${BINDIR}/ggx)
+endif()
+expect_files(${prefix}/${INCLUDEDIR}/ggxcl/ggxcl.hpp
+  ${prefix}/${INCLUDEDIR}/ggxcl/cl/ggx_samplers.h ${prefix}/${INCLUDEDIR}/ggxcl/cl/ggx_math.h
+  ${prefix}/${LIBDIR}/cmake/ggxcl/ggxclConfig.cmake ${prefix}/${LIBDIR}/cmake/ggxcl/ggxclConfigVersion.cmake
+  ${prefix}/${LIBDIR}/cmake/ggxcl/ggxclTargets.cmake ${prefix}/${LIBDIR}/pkgconfig/ggxcl.pc)
+
+# 2. Each installed C++ header compiles on its own (with only ggxcl.pc's flags).
+set(ENV{PKG_CONFIG_PATH} ${prefix}/${LIBDIR}/pkgconfig)
+find_program(PKG_CONFIG NAMES pkg-config pkgconf)
+if(NOT PKG_CONFIG)
+  fail("pkg-config not found (Debian: apt-get install pkgconf)")
+endif()
+step("pkg-config --cflags --libs ggxcl" ${PKG_CONFIG} --cflags --libs ggxcl)
+separate_arguments(pc_flags UNIX_COMMAND "${step_output}")
+step("pkg-config --variable=devicedir ggxcl" ${PKG_CONFIG} --variable=devicedir ggxcl)
+string(STRIP "${step_output}" pc_devicedir)
+expect_files(${pc_devicedir}/ggx_samplers.h)
+file(GLOB headers RELATIVE ${prefix}/${INCLUDEDIR} ${prefix}/${INCLUDEDIR}/ggxcl/*.hpp)
+set(units)
+foreach(header IN LISTS headers)
+  string(MAKE_C_IDENTIFIER ${header} unit)
+  file(WRITE ${WORK_DIR}/headers/${unit}.cpp "#include <${header}>\n")
+  list(APPEND units ${WORK_DIR}/headers/${unit}.cpp)
+endforeach()
+step("installed headers standalone" ${CXX} -std=c++17 -fsyntax-only ${pc_flags} ${units})
+
+# 3. The example against the installed package.
+step("configure examples/albedo_table" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/albedo_table
+  -B ${WORK_DIR}/albedo-build -DCMAKE_PREFIX_PATH=${prefix} ${forward_flags})
+step("build examples/albedo_table" ${CMAKE_COMMAND} --build ${WORK_DIR}/albedo-build -j2)
+step("run albedo_table" ${WORK_DIR}/albedo-build/albedo_table --out ${WORK_DIR}/tables --samples ${SAMPLES})
+message(STATUS "${step_output}")
+foreach(method ndf heitz heitz2017 caps caps-iso bounded quadrature)
+  expect_files(${WORK_DIR}/tables/albedo_${method}.npy ${WORK_DIR}/tables/albedo_${method}.png)
+  file(SIZE ${WORK_DIR}/tables/albedo_${method}.npy npy_size)
+  file(READ ${WORK_DIR}/tables/albedo_${method}.png png_magic LIMIT 8 HEX)
+  if(NOT npy_size EQUAL 4224 OR NOT png_magic STREQUAL "89504e470d0a1a0a")
+    fail("albedo_${method}: .npy of ${npy_size} bytes (expected 128 + 32 x 32 x 4), PNG magic ${png_magic}")
+  endif()
+endforeach()
+
+# 4. A one-file consumer through pkg-config.
+step("compile consumer with pkg-config" ${CXX} -std=c++17 -O2 ${cxx_flags} ${SOURCE_DIR}/tests/consumer/consumer.cpp
+  ${pc_flags} ${linker_flags} -o ${WORK_DIR}/consumer-pkg-config)
+step("run consumer (pkg-config)" ${WORK_DIR}/consumer-pkg-config)
+message(STATUS "${step_output}")
+
+# 5. The same consumer against the build tree's export.
+step("configure consumer against the build tree" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer
+  -B ${WORK_DIR}/consumer-build -Dggxcl_DIR=${BUILD_DIR} ${forward_flags})
+step("build consumer against the build tree" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer-build -j2)
+step("run consumer (build tree)" ${WORK_DIR}/consumer-build/consumer)
+message(STATUS "${step_output}")
+
+file(REMOVE_RECURSE ${WORK_DIR})

@@ -1,6 +1,7 @@
 // cli_runner.hpp - what the tests of the `ggx` tool share: a scratch
-// folder per test process, running the tool (GGX_BINARY, set by CMake) with
-// its exit status and stderr, and reading a file back whole.
+// folder per test process (removed at exit), running the tool (GGX_BINARY,
+// set by CMake) with its exit status and stderr, and reading a file back
+// whole.
 #pragma once
 
 #include <cstdlib>
@@ -10,16 +11,32 @@
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace ggxtest {
 
 namespace fs = std::filesystem;
 
-// A folder under the system's temporary one, unique to this process and `tag`.
+// The scratch folders of this process, removed when it exits.
+struct ScratchFolders {
+    std::vector<fs::path> made;
+    ~ScratchFolders()
+    {
+        for (const fs::path& dir : made) {
+            std::error_code ignored;
+            fs::remove_all(dir, ignored);
+        }
+    }
+};
+
+// A folder under the system's temporary one, unique to this process and
+// `tag`, removed with everything in it when the process exits.
 inline fs::path scratch_dir(const std::string& tag)
 {
+    static ScratchFolders folders;
     fs::path dir = fs::temp_directory_path() / ("ggx-" + tag + "-test-" + std::to_string(::getpid()));
     fs::create_directories(dir);
+    folders.made.push_back(dir);
     return dir;
 }
 

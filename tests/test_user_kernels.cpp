@@ -10,13 +10,13 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <unistd.h>
 
+#include "bit_compare.hpp"
 #include "device_fixture.hpp"
 #include "device_symbols.hpp"
 #include "user_samples.hpp"
@@ -24,11 +24,7 @@
 namespace {
 
 using ggxtest::SamplePlanes;
-
-bool same_bits(const SamplePlanes& a, const SamplePlanes& b)
-{
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
+using ggxtest::same_bits;
 
 // A sampler configuration and the build options a user kernel needs to
 // match the runtime's program for it.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <exception>
 #include <mutex>
 #include <string>
 
@@ -49,11 +50,14 @@ InjectedFault parse_fault(const std::string& spec)
 }
 
 // The fault the environment asks for now, and the launches counted since it
-// was set (this call's, with count_launch, included).
+// was set (this call's, with count_launch, included).  The value is parsed
+// when it changes; a malformed one is refused on every call.
 InjectedFault current_fault(bool count_launch, std::uint64_t& launches_before)
 {
     static std::mutex mutex;
     static std::string last_spec;
+    static std::exception_ptr refused;  // the InvalidArgument of a malformed value
+    static InjectedFault fault;
     static std::uint64_t launches = 0;
     const char* env = std::getenv("GGXCL_INJECT_FAULT");
     std::string spec = env ? env : "";
@@ -61,10 +65,19 @@ InjectedFault current_fault(bool count_launch, std::uint64_t& launches_before)
     if (spec != last_spec) {
         last_spec = spec;
         launches = 0;
+        fault = {};
+        refused = nullptr;
+        try {
+            fault = parse_fault(spec);
+        } catch (const InvalidArgument&) {
+            refused = std::current_exception();
+        }
     }
+    if (refused)
+        std::rethrow_exception(refused);
     launches_before = launches;
     launches += count_launch ? 1 : 0;
-    return parse_fault(spec);
+    return fault;
 }
 
 } // namespace

@@ -66,9 +66,9 @@ void check_launch_count(std::uint64_t count, std::uint32_t stride)
         throw InvalidArgument("stride", std::to_string(stride), "0 (= count) or at least count");
 }
 
-std::size_t group_size(const cl::Device& device, std::size_t requested)
+std::size_t group_size(std::size_t device_max, std::size_t requested)
 {
-    return requested ? requested : std::min(preferred_group_size, device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>());
+    return requested ? requested : std::min(preferred_group_size, device_max);
 }
 
 cl::Event launch_split(cl::CommandQueue& queue, std::size_t group, const KernelMaker& make,

@@ -26,8 +26,8 @@ void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p
 
 void check_launch_count(std::uint64_t count, std::uint32_t stride);
 
-// The work-group size of a launch: `requested`, or 0 for the default.
-std::size_t group_size(const cl::Device& device, std::size_t requested = 0);
+// The work-group size of a launch: `requested`, or for 0 the default within the device's maximum.
+std::size_t group_size(std::size_t device_max, std::size_t requested);
 
 // One work-item per sample: kernel `name` over the whole work-groups, then
 // `name`_tail (same arguments) over the last partial one with a global

@@ -51,7 +51,11 @@ Sampler::Sampler(const DeviceInfo& device) : Sampler(translate_cl_errors([&] { r
 Sampler::Sampler(const cl::Context& context, const cl::Device& device)
     : context_(context), device_(device), programs_(std::make_shared<ProgramCache>(context))
 {
-    translate_cl_errors([&] { queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE); return 0; });
+    translate_cl_errors([&] {
+        queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
+        device_max_group_ = device_.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>();
+        return 0;
+    });
 }
 
 std::string Sampler::device_name() const
@@ -68,16 +72,15 @@ void Sampler::set_chunk_size(std::uint64_t samples)
 
 void Sampler::set_work_group_size(std::size_t items)
 {
-    std::size_t most = translate_cl_errors([&] { return device_.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>(); });
-    if (items > most)
+    if (items > device_max_group_)
         throw InvalidArgument("work-group size", std::to_string(items),
-                              "0 (automatic) or 1 .. " + std::to_string(most) + " (the device's maximum)");
+                              "0 (automatic) or 1 .. " + std::to_string(device_max_group_) + " (the device's maximum)");
     work_group_size_ = items;
 }
 
 std::size_t Sampler::work_group_size() const
 {
-    return translate_cl_errors([&] { return group_size(device_, work_group_size_); });
+    return group_size(device_max_group_, work_group_size_);
 }
 
 cl::Kernel Sampler::kernel(const std::string& file, const std::string& name, const std::string& options)

@@ -167,7 +167,8 @@ private:
     cl::CommandQueue queue_;
     std::shared_ptr<ProgramCache> programs_;
     std::uint64_t chunk_size_ = 1u << 20;
-    std::size_t work_group_size_ = 0;
+    std::size_t work_group_size_ = 0;     // 0: automatic
+    std::size_t device_max_group_ = 1;   // CL_DEVICE_MAX_WORK_GROUP_SIZE, read once
     std::uint64_t memory_retries_ = 0;
 };
 

@@ -7,6 +7,8 @@ set -euo pipefail
 packages=(
   g++ cmake make                      # toolchain
   pocl-opencl-icd ocl-icd-opencl-dev  # OpenCL: PoCL CPU device + ICD loader
+  mesa-opencl-icd                     # Mesa rusticl (llvmpipe with RUSTICL_ENABLE=llvmpipe): a second CPU implementation
+  oclgrind                            # simulated device that checks every access (test_oclgrind)
   opencl-c-headers opencl-clhpp-headers
   librandom123-dev                    # Philox reference (host)
   libboost-math-dev                   # chi-square distribution, Gauss-Legendre nodes

@@ -169,11 +169,19 @@ TEST_CASE("devices are selected by index, by name part, or by GGXCL_DEVICE")
     CHECK(error.find(devices[0].label()) != std::string::npos);  // lists what exists
     CHECK(message_of<ggxcl::DeviceError>([&] { ggxcl::select_device(std::to_string(devices.size())); })
               .find("no OpenCL device matches") != std::string::npos);
+    // GGXCL_DEVICE is changed here and restored after, so the test cases
+    // that follow run on the device the suite was started on.
+    const char* selected = std::getenv("GGXCL_DEVICE");
+    const std::string saved = selected ? selected : "";
     ::setenv("GGXCL_DEVICE", "no-such-device-xyz", 1);
     CHECK(message_of<ggxcl::DeviceError>([] { ggxcl::select_device(); }).find("GGXCL_DEVICE") != std::string::npos);
     ::setenv("GGXCL_DEVICE", std::to_string(devices.size() - 1).c_str(), 1);
     CHECK(ggxcl::select_device().label() == devices.back().label());
-    ::unsetenv("GGXCL_DEVICE");
+    if (selected)
+        ::setenv("GGXCL_DEVICE", saved.c_str(), 1);
+    else
+        ::unsetenv("GGXCL_DEVICE");
+    CHECK(ggxcl::select_device().device() == ggxtest::sampler().device()());  // restored
 }
 
 TEST_CASE("a failed build throws BuildError with the CL error name, options and build log")

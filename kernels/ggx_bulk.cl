@@ -34,9 +34,9 @@
 
 // Sample j (< count) into the requested fields.
 GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GGX_PARAM_ARGS,
-                                __global float* restrict m_out, __global float* restrict o_out,
-                                __global float* restrict pdf_m_out, __global float* restrict pdf_o_out,
-                                __global float* restrict weight_out)
+                                __global float* GGX_RESTRICT m_out, __global float* GGX_RESTRICT o_out,
+                                __global float* GGX_RESTRICT pdf_m_out, __global float* GGX_RESTRICT pdf_o_out,
+                                __global float* GGX_RESTRICT weight_out)
 {
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
     ggx_sample s = ggx_bulk_sample(seed, first + j, p);
@@ -58,9 +58,9 @@ GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GG
 }
 
 #define GGX_SAMPLE_ARGS                                                                                 \
-    ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS, __global float *restrict m_out,    \
-        __global float *restrict o_out, __global float *restrict pdf_m_out, __global float *restrict pdf_o_out, \
-        __global float *restrict weight_out
+    ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS, __global float *GGX_RESTRICT m_out,    \
+        __global float *GGX_RESTRICT o_out, __global float *GGX_RESTRICT pdf_m_out, __global float *GGX_RESTRICT pdf_o_out, \
+        __global float *GGX_RESTRICT weight_out
 #define GGX_SAMPLE_OUTPUTS m_out, o_out, pdf_m_out, pdf_o_out, weight_out
 
 // Whole work-groups of samples: every work-item is sample get_global_id(0) < count.
@@ -78,21 +78,21 @@ __kernel void ggx_sample_bulk_tail(GGX_SAMPLE_ARGS)
 }
 
 // pdf of each given direction o (planar, `stride`) for the method's sampler.
-GGX_INLINE void ggx_pdf_into(uint j, uint stride, GGX_PARAM_ARGS, __global const float* restrict o_in,
-                             __global float* restrict pdf_out)
+GGX_INLINE void ggx_pdf_into(uint j, uint stride, GGX_PARAM_ARGS, __global const float* GGX_RESTRICT o_in,
+                             __global float* GGX_RESTRICT pdf_out)
 {
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
     pdf_out[j] = ggx_bulk_pdf(p, ggx_load3(o_in, j, stride));
 }
 
-__kernel void ggx_pdf_bulk(uint count, uint stride, GGX_PARAM_ARGS, __global const float* restrict o_in,
-                           __global float* restrict pdf_out)
+__kernel void ggx_pdf_bulk(uint count, uint stride, GGX_PARAM_ARGS, __global const float* GGX_RESTRICT o_in,
+                           __global float* GGX_RESTRICT pdf_out)
 {
     ggx_pdf_into((uint)get_global_id(0), stride, GGX_PARAM_VALUES, o_in, pdf_out);
 }
 
-__kernel void ggx_pdf_bulk_tail(uint count, uint stride, GGX_PARAM_ARGS, __global const float* restrict o_in,
-                                __global float* restrict pdf_out)
+__kernel void ggx_pdf_bulk_tail(uint count, uint stride, GGX_PARAM_ARGS, __global const float* GGX_RESTRICT o_in,
+                                __global float* GGX_RESTRICT pdf_out)
 {
     ggx_pdf_into(min((uint)get_global_id(0), count - 1u), stride, GGX_PARAM_VALUES, o_in, pdf_out);
 }

@@ -47,8 +47,8 @@ typedef struct {
 // The kernel arguments that carry them: uniform values, then per-sample buffers.
 #define GGX_PARAM_ARGS                                                                      \
     float view_x, float view_y, float view_z, float alpha_x, float alpha_y, float normal_x, \
-        float normal_y, float normal_z, __global const float *restrict view_in,             \
-        __global const float *restrict alpha_in, __global const float *restrict normal_in
+        float normal_y, float normal_z, __global const float *GGX_RESTRICT view_in,             \
+        __global const float *GGX_RESTRICT alpha_in, __global const float *GGX_RESTRICT normal_in
 #define GGX_PARAM_VALUES                                                                    \
     view_x, view_y, view_z, alpha_x, alpha_y, normal_x, normal_y, normal_z, view_in, alpha_in, normal_in
 

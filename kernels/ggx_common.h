@@ -13,6 +13,18 @@
 // per-work-item code is a straight line with no calls.
 #define GGX_INLINE inline __attribute__((always_inline))
 
+// `restrict` on the bulk kernels' buffers, dropped with -DGGX_NO_RESTRICT=1:
+// the runtime sets it for devices whose compiler cannot take restrict on
+// inlined functions (Oclgrind).
+#ifndef GGX_NO_RESTRICT
+#define GGX_NO_RESTRICT 0
+#endif
+#if GGX_NO_RESTRICT
+#define GGX_RESTRICT
+#else
+#define GGX_RESTRICT restrict
+#endif
+
 #define GGX_PI 3.14159265358979323846f
 #define GGX_TWO_PI 6.28318530717958647692f
 #define GGX_INV_PI 0.31830988618379067154f

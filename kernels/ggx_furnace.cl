@@ -22,7 +22,7 @@
 #define GGX_FURNACE_PER_ITEM 8
 
 __kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS,
-                               __global float* restrict sums)
+                               __global float* GGX_RESTRICT sums)
 {
     uint item = (uint)get_global_id(0), items = (uint)get_global_size(0);
     float w_total = 0.0f, w2_total = 0.0f;

@@ -16,7 +16,7 @@
 #error "build with -DGGX_METHOD=<method id>"
 #endif
 
-__kernel void ggx_stress(uint count, __global const float* restrict in, __global float* restrict out)
+__kernel void ggx_stress(uint count, __global const float* GGX_RESTRICT in, __global float* GGX_RESTRICT out)
 {
     uint j = (uint)get_global_id(0);
     if (j >= count)

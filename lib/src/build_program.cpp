@@ -1,7 +1,9 @@
-// build_program.cpp - building a program from source with the library's
-// errors (the build log travels in BuildError).
+// build_program.cpp - building a program from source or from a cached
+// binary, with the library's errors (the build log travels in BuildError).
 #include "build_program.hpp"
 
+#include "binary_cache.hpp"
+#include "device_quirks.hpp"
 #include "ggxcl/error.hpp"
 
 namespace ggxcl::detail {
@@ -17,10 +19,8 @@ std::string build_log(const cl::Program& program, const cl::Device& device)
     }
 }
 
-} // namespace
-
-cl::Program build_program(const cl::Context& context, const cl::Device& device, const std::string& source,
-                          const std::string& options)
+cl::Program build_from_source(const cl::Context& context, const cl::Device& device, const std::string& source,
+                              const std::string& options)
 {
     cl::Program program;
     try {
@@ -33,6 +33,56 @@ cl::Program build_program(const cl::Context& context, const cl::Device& device, 
     } catch (const cl::Error& e) {
         throw BuildError(e.err(), device.getInfo<CL_DEVICE_NAME>(), options, build_log(program, device));
     }
+    return program;
+}
+
+// The program from a stored binary; a null program when there is none or
+// the driver does not take it.
+cl::Program build_from_binary(const cl::Context& context, const cl::Device& device, const std::string& key,
+                              const std::string& options)
+{
+    std::vector<unsigned char> binary;
+    if (!load_program_binary(key, binary))
+        return cl::Program();
+    try {
+        cl::Program program(context, {device}, cl::Program::Binaries{binary});
+        program.build({device}, options.c_str());
+        return program;
+    } catch (const cl::Error&) {
+        return cl::Program();
+    }
+}
+
+void keep_program_binary(const cl::Program& program, const std::string& key)
+{
+    try {
+        std::vector<std::vector<unsigned char>> binaries = program.getInfo<CL_PROGRAM_BINARIES>();
+        if (binaries.size() == 1)
+            store_program_binary(key, binaries.front());
+    } catch (const cl::Error&) {
+        // a driver without binaries: every process builds from source
+    }
+}
+
+} // namespace
+
+cl::Program build_program(const cl::Context& context, const cl::Device& device, const std::string& source,
+                          const std::string& options, bool keep_binary, bool* from_binary)
+{
+    if (from_binary)
+        *from_binary = false;
+    const std::string all_options = options + device_quirk_options(device);
+    if (!keep_binary)
+        return build_from_source(context, device, source, all_options);
+    const std::string key = binary_cache_key(device, source, all_options);
+    cl::Program program = build_from_binary(context, device, key, all_options);
+    if (program() != nullptr) {
+        if (from_binary)
+            *from_binary = true;
+        return program;
+    }
+    program = build_from_source(context, device, source, all_options);
+    keep_program_binary(program, key);
     return program;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 #include <unistd.h>
 
+#include "cache_roots.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/kernel_sources.hpp"
 #include "ggxcl/version.hpp"
@@ -60,22 +61,6 @@ std::string content_id()
     return std::string(version()) + "-" + hex;
 }
 
-// Where copies are kept: $XDG_CACHE_HOME/ggxcl or ~/.cache/ggxcl, then the
-// temporary directory (with the user id, as several users share it).
-std::vector<fs::path> cache_roots()
-{
-    std::vector<fs::path> roots;
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-        roots.push_back(fs::path(xdg) / "ggxcl");
-    else if (const char* home = std::getenv("HOME"); home && *home)
-        roots.push_back(fs::path(home) / ".cache" / "ggxcl");
-    std::error_code no_tmp;
-    fs::path tmp = fs::temp_directory_path(no_tmp);
-    if (!no_tmp)
-        roots.push_back(tmp / ("ggxcl-" + std::to_string(getuid())));
-    return roots;
-}
-
 // Writes the embedded headers into a fresh directory next to `target`, then
 // renames it to `target`; a concurrent writer that wins leaves its copy.
 void publish_embedded_headers(const fs::path& target)
@@ -97,7 +82,7 @@ std::string cached_copy()
     static std::mutex writing;  // one writer per process; rename() settles races between processes
     std::lock_guard<std::mutex> lock(writing);
     std::string failures;
-    for (const fs::path& root : cache_roots()) {
+    for (const fs::path& root : detail::cache_roots()) {
         const fs::path target = root / ("device-headers-" + content_id());
         try {
             if (!matches_embedded(target)) {

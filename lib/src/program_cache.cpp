@@ -1,4 +1,5 @@
-// program_cache.cpp - building and caching programs per (device, options).
+// program_cache.cpp - building and caching programs per (device, options),
+// in memory and (as binaries) on disk.
 #include "ggxcl/program_cache.hpp"
 
 #include "build_program.hpp"
@@ -14,9 +15,17 @@ cl::Program ProgramCache::get(const cl::Device& device, const std::string& file,
     auto found = programs_.find(key);
     if (found != programs_.end())
         return found->second;
-    cl::Program program = detail::build_program(context_, device, kernel_source(file), options);
+    bool from_disk = false;
+    cl::Program program = detail::build_program(context_, device, kernel_source(file), options, true, &from_disk);
+    loaded_from_disk_ += from_disk ? 1 : 0;
     programs_.emplace(key, program);
     return program;
+}
+
+std::size_t ProgramCache::loaded_from_disk() const
+{
+    std::lock_guard<std::mutex> lock(mutex_);
+    return loaded_from_disk_;
 }
 
 std::size_t ProgramCache::size() const

@@ -1,6 +1,9 @@
 // program_cache.hpp - OpenCL programs built from an embedded source, once
 // per (device, build options) and kept for the life of the cache.  A failed
 // build throws BuildError with the CL error name, the options and the log.
+// Binaries are also kept on disk, so later processes on the same device and
+// driver skip the compiler: GGXCL_PROGRAM_CACHE names the directory (default
+// ~/.cache/ggxcl/programs, or under $XDG_CACHE_HOME), "off" turns it off.
 #pragma once
 
 #include <map>
@@ -21,11 +24,14 @@ public:
 
     // Number of distinct programs built so far.
     std::size_t size() const;
+    // How many of them came from binaries on disk rather than the compiler.
+    std::size_t loaded_from_disk() const;
 
 private:
     cl::Context context_;
     mutable std::mutex mutex_;
     std::map<std::pair<cl_device_id, std::string>, cl::Program> programs_;
+    std::size_t loaded_from_disk_ = 0;
 };
 
 } // namespace ggxcl

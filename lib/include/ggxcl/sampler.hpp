@@ -156,6 +156,8 @@ public:
 
     // Number of distinct program variants built so far.
     std::size_t programs_built() const { return programs_->size(); }
+    // How many of them came from the on-disk binary cache (see program_cache.hpp).
+    std::size_t programs_from_disk() const { return programs_->loaded_from_disk(); }
 
 private:
     void add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,

@@ -235,7 +235,7 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
        << "- Command: `" << r.command << "`\n- Date: " << r.date << "\n- Machine: " << r.machine
        << "\n- Device: " << r.device << "\n- Speed runs: alpha " << r.alpha << ", view at " << r.theta
        << " degrees, " << r.count << " samples per run (world job: per-sample normals and views, at most 2^22), median of "
-       << r.repeats << " event-profiled runs after a warm-up; (min–max) in brackets.\n"
+       << r.repeats << " runs after a warm-up, " << r.device_clock << "; (min–max) in brackets.\n"
        << "- Native C++ baseline: " << r.native_count << " samples per run, " << r.threads
        << " threads, wall clock, median of " << r.repeats << ".\n\n";
     md << "## Targets\n\n| target | measured | met |\n|---|---|---|\n";

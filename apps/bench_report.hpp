@@ -29,6 +29,7 @@ struct StartupTiming {
 
 struct BenchReport {
     std::string command, date, machine, device;
+    std::string device_clock = "event-profiled";  // how the device rows were timed (DeviceTimer)
     std::uint32_t count = 0, native_count = 0;
     int repeats = 0, threads = 0, scene_size = 0;
     std::uint64_t samples_per_cell = 0;

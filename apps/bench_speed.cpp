@@ -1,9 +1,12 @@
-// bench_speed.cpp - event-profiled device timings of the bench jobs.
+// bench_speed.cpp - device timings of the bench jobs: event-profiled, or
+// wall clock when the profiling timestamps cannot be right.
 #include "bench_speed.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <random>
+#include <sstream>
 
 namespace ggxapp {
 
@@ -15,6 +18,32 @@ cl::Buffer device_copy(ggxcl::Sampler& sampler, std::vector<float>& host)
 {
     return cl::Buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, host.size() * sizeof(float),
                       host.data());
+}
+
+// The profiled duration of a finished command in ns; -1 when the driver gives none.
+double profiled_ns(const cl::Event& done)
+{
+    cl_ulong start = 0, end = 0;
+    if (done.getProfilingInfo(CL_PROFILING_COMMAND_START, &start) != CL_SUCCESS ||
+        done.getProfilingInfo(CL_PROFILING_COMMAND_END, &end) != CL_SUCCESS)
+        return -1.0;
+    return double(end) - double(start);
+}
+
+// Whether a profiled duration can be the kernel time of a run that took
+// `wall_ns` from launch to finish: positive, at least 1% of it (some drivers
+// return constant or zero timestamps), and not longer than it by more than
+// timer slack.
+bool plausible_profile(double event_ns, double wall_ns)
+{
+    return event_ns > 0.0 && event_ns >= 0.01 * wall_ns && event_ns <= 1.5 * wall_ns + 1e6;
+}
+
+std::string describe_implausible(double event_ns, double wall_ns)
+{
+    std::ostringstream text;
+    text << "a run profiled at " << event_ns << " ns took " << wall_ns << " ns";
+    return text.str();
 }
 
 } // namespace
@@ -111,19 +140,34 @@ std::vector<Timing> DeviceTimer::time_interleaved(const std::vector<BenchTask>& 
 {
     for (const BenchTask& task : tasks)
         launch(task.job, task.params, 1).wait();  // warm-up: build and JIT
-    std::vector<std::vector<double>> ns(tasks.size());
+    std::vector<std::vector<double>> profiled(tasks.size()), wall(tasks.size());
+    bool plausible = true;
     for (int r = 0; r < repeats; ++r)
         for (std::size_t t = 0; t < tasks.size(); ++t) {
+            auto start = std::chrono::steady_clock::now();
             cl::Event done = launch(tasks[t].job, tasks[t].params, std::uint64_t(r) + 2);
             done.wait();
-            double elapsed = double(done.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                                    done.getProfilingInfo<CL_PROFILING_COMMAND_START>());
-            ns[t].push_back(elapsed / count_of(tasks[t].job));
+            const double wall_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+            const double event_ns = profiled_ns(done);
+            if (plausible && !plausible_profile(event_ns, wall_ns)) {
+                plausible = false;
+                plausible_note_ = describe_implausible(event_ns, wall_ns);
+            }
+            profiled[t].push_back(event_ns / count_of(tasks[t].job));
+            wall[t].push_back(wall_ns / count_of(tasks[t].job));
         }
+    wall_clock_ = !plausible;
     std::vector<Timing> timings;
-    for (std::vector<double>& samples : ns)
+    for (std::vector<double>& samples : plausible ? profiled : wall)
         timings.push_back(summarize(samples));
     return timings;
+}
+
+std::string DeviceTimer::clock_description() const
+{
+    if (!wall_clock_)
+        return "event-profiled";
+    return "wall-clock (launch to finish: the device's profiling timestamps cannot be right, " + plausible_note_ + ")";
 }
 
 } // namespace ggxapp

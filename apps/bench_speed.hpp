@@ -1,6 +1,7 @@
 // bench_speed.hpp - the device timings of `ggx bench`: one job of one
-// program variant, event-profiled, the median of repeated runs after a
-// warm-up run (which builds and JIT-compiles the variant).
+// program variant, event-profiled (wall clock where the driver's timestamps
+// cannot be right), the median of repeated runs after a warm-up run (which
+// builds and JIT-compiles the variant).
 //   write   - tangent-space view, m and pdf_m written to device buffers;
 //   furnace - the fused white-furnace estimator, nothing written but sums;
 //   world   - world-space normal and view read per sample, o written in world
@@ -44,6 +45,12 @@ public:
     // ratios stay meaningful on a noisy machine.
     std::vector<Timing> time_interleaved(const std::vector<BenchTask>& tasks, int repeats);
     std::uint32_t count_of(BenchJob job) const;
+    // How the last time_interleaved() timed: by the events' profiling
+    // timestamps, or, when any of them could not be right (zero, missing, or
+    // far from the wall-clock time of the run), by wall clock around each
+    // launch and its wait, for every row alike.
+    bool wall_clock() const { return wall_clock_; }
+    std::string clock_description() const;
 
 private:
     cl::Event launch(BenchJob job, const ggxcl::SampleParams& params, std::uint64_t seed);
@@ -53,6 +60,8 @@ private:
     ggxcl::DeviceOutputs write_out_, world_out_;
     ggxcl::DeviceInputs world_in_;
     cl::Buffer sums_;
+    bool wall_clock_ = false;
+    std::string plausible_note_;
 };
 
 } // namespace ggxapp

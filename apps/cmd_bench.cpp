@@ -61,6 +61,9 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
     std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
     DeviceTimer timer(sampler, report.count);
     std::vector<Timing> timings = timer.time_interleaved(tasks, report.repeats);
+    report.device_clock = timer.clock_description();
+    if (timer.wall_clock())
+        std::cerr << "device rows timed by wall clock: " << report.device_clock << "\n";
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         const ggxcl::SampleParams& p = tasks[t].params;
         std::string precision(ggxcl::precision_name(p.precision));

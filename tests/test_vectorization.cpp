@@ -23,7 +23,8 @@ namespace {
 std::string remarks_of_run(const std::string& ggx_arguments, const fs::path& cache, const fs::path& dir)
 {
     fs::path log = dir / "remarks.txt";
-    std::string command = "POCL_VECTORIZER_REMARKS=1 POCL_CACHE_DIR=" + cache.string() + " " + GGX_BINARY + " " +
+    // GGXCL_PROGRAM_CACHE=off: a binary from an earlier run would skip the compile whose remarks are read.
+    std::string command = "GGXCL_PROGRAM_CACHE=off POCL_VECTORIZER_REMARKS=1 POCL_CACHE_DIR=" + cache.string() + " " + GGX_BINARY + " " +
                           ggx_arguments + " >" + log.string() + " 2>&1";
     int status = std::system(command.c_str());
     REQUIRE(WIFEXITED(status));

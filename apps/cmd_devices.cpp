@@ -1,6 +1,8 @@
-// cmd_devices.cpp - `ggx devices`: every OpenCL platform and device with
-// the selector to pass to --device or GGXCL_DEVICE.
+// cmd_devices.cpp - `ggx devices`: every OpenCL device with the selector to
+// pass to --device or GGXCL_DEVICE, its OpenCL version and its limits.
+#include <cstdint>
 #include <iostream>
+#include <string>
 
 #include <ggxcl/ggxcl.hpp>
 
@@ -10,11 +12,21 @@ namespace ggxapp {
 
 namespace {
 
+std::string mebibytes(std::uint64_t bytes)
+{
+    return std::to_string(bytes >> 20) + " MiB";
+}
+
 void list_devices()
 {
-    for (const ggxcl::DeviceInfo& d : ggxcl::list_devices())
+    for (const ggxcl::DeviceInfo& d : ggxcl::list_devices()) {
         std::cout << d.index << ": " << d.label() << " (" << d.type << ", " << d.compute_units
                   << " compute units)  select with --device " << d.index << " or GGXCL_DEVICE=" << d.index << "\n";
+        std::cout << "   " << d.opencl_version << ", " << d.opencl_c_version << ", driver " << d.driver_version
+                  << "; work-groups up to " << d.max_work_group_size << "; memory " << mebibytes(d.global_mem_bytes)
+                  << ", allocations up to " << mebibytes(d.max_alloc_bytes) << ", local " << d.local_mem_bytes / 1024
+                  << " KiB; fp64 " << (d.fp64 ? "yes" : "no") << "\n";
+    }
 }
 
 } // namespace

@@ -184,6 +184,21 @@ TEST_CASE("devices are selected by index, by name part, or by GGXCL_DEVICE")
     CHECK(ggxcl::select_device().device() == ggxtest::sampler().device()());  // restored
 }
 
+TEST_CASE("every device tells its OpenCL version and limits, and is selected by its vendor too")
+{
+    for (const ggxcl::DeviceInfo& d : ggxcl::list_devices()) {
+        CAPTURE(d.label());
+        CHECK(d.opencl_version.rfind("OpenCL ", 0) == 0);
+        CHECK(d.opencl_c_version.rfind("OpenCL C ", 0) == 0);
+        CHECK(d.max_work_group_size >= 1);
+        CHECK(d.max_alloc_bytes > 0);
+        CHECK(d.max_alloc_bytes <= d.global_mem_bytes);
+        CHECK(d.local_mem_bytes >= 16 * 1024);  // the minimum OpenCL 1.2 promises
+        CHECK(!d.vendor.empty());
+        CHECK(ggxcl::select_device(d.vendor).vendor == d.vendor);
+    }
+}
+
 TEST_CASE("a failed build throws BuildError with the CL error name, options and build log")
 {
     ggxcl::ProgramCache cache(ggxtest::sampler().context());

@@ -26,6 +26,16 @@ std::string lowercase(std::string text)
     return text;
 }
 
+std::string trimmed(std::string text)
+{
+    while (!text.empty() && (std::isspace(static_cast<unsigned char>(text.back())) || text.back() == '\0'))
+        text.pop_back();
+    std::size_t start = 0;
+    while (start < text.size() && std::isspace(static_cast<unsigned char>(text[start])))
+        ++start;
+    return text.substr(start);
+}
+
 bool is_index(const std::string& text)
 {
     return !text.empty() && std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); });
@@ -54,31 +64,62 @@ std::string describe_all(const std::vector<DeviceInfo>& devices)
     return text;
 }
 
+DeviceInfo describe_device(const cl::Platform& platform, const cl::Device& device, std::size_t index)
+{
+    DeviceInfo info;
+    info.index = index;
+    info.platform = platform.getInfo<CL_PLATFORM_NAME>();
+    info.vendor = platform.getInfo<CL_PLATFORM_VENDOR>();
+    info.name = trimmed(device.getInfo<CL_DEVICE_NAME>());
+    info.type = device_type_name(device.getInfo<CL_DEVICE_TYPE>());
+    info.compute_units = device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+    info.opencl_version = trimmed(device.getInfo<CL_DEVICE_VERSION>());
+    info.opencl_c_version = trimmed(device.getInfo<CL_DEVICE_OPENCL_C_VERSION>());
+    info.driver_version = trimmed(device.getInfo<CL_DRIVER_VERSION>());
+    info.max_work_group_size = device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>();
+    info.max_alloc_bytes = device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+    info.global_mem_bytes = device.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+    info.local_mem_bytes = device.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>();
+    cl_device_fp_config fp64 = 0;
+    info.fp64 = device.getInfo(CL_DEVICE_DOUBLE_FP_CONFIG, &fp64) == CL_SUCCESS && fp64 != 0;
+    info.device = device;
+    return info;
+}
+
+// The devices of one platform; none when it has none or cannot list them.
+std::vector<cl::Device> devices_of(const cl::Platform& platform)
+{
+    std::vector<cl::Device> found;
+    try {
+        platform.getDevices(CL_DEVICE_TYPE_ALL, &found);
+    } catch (const cl::Error&) {
+        found.clear();  // a platform without devices reports CL_DEVICE_NOT_FOUND
+    }
+    return found;
+}
+
 } // namespace
 
 std::vector<DeviceInfo> list_devices()
 {
     std::vector<DeviceInfo> devices;
+    std::string empty_platforms;
     for (const cl::Platform& platform : platforms_or_throw()) {
-        std::vector<cl::Device> found;
-        try {
-            platform.getDevices(CL_DEVICE_TYPE_ALL, &found);
-        } catch (const cl::Error&) {
-            continue;  // a platform without devices reports CL_DEVICE_NOT_FOUND
-        }
+        std::vector<cl::Device> found = devices_of(platform);
+        if (found.empty())
+            empty_platforms += (empty_platforms.empty() ? "" : ", ") + platform.getInfo<CL_PLATFORM_NAME>();
         for (const cl::Device& device : found) {
-            DeviceInfo info;
-            info.index = devices.size();
-            info.platform = platform.getInfo<CL_PLATFORM_NAME>();
-            info.name = device.getInfo<CL_DEVICE_NAME>();
-            info.type = device_type_name(device.getInfo<CL_DEVICE_TYPE>());
-            info.compute_units = device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
-            info.device = device;
-            devices.push_back(info);
+            try {
+                devices.push_back(describe_device(platform, device, devices.size()));
+            } catch (const cl::Error&) {
+                // a device that cannot describe itself cannot run kernels either
+            }
         }
     }
     if (devices.empty())
-        throw DeviceError("OpenCL platforms exist but none has a device");
+        throw DeviceError("no OpenCL platform has a device (platforms without one: " + empty_platforms +
+                          "); install PoCL for the CPU (apt-get install pocl-opencl-icd), or enable Mesa's "
+                          "rusticl on the CPU with RUSTICL_ENABLE=llvmpipe (apt-get install mesa-opencl-icd)");
     return devices;
 }
 
@@ -100,7 +141,7 @@ DeviceInfo select_device(const std::string& selector)
             return devices[index];
     } else {
         for (const DeviceInfo& d : devices)
-            if (lowercase(d.label()).find(lowercase(wanted)) != std::string::npos)
+            if (lowercase(d.label() + " / " + d.vendor).find(lowercase(wanted)) != std::string::npos)
                 return d;
     }
     throw NoMatchingDevice("no OpenCL device matches " + source + " '" + wanted +

@@ -6,6 +6,10 @@
 #ifndef GGX_BULK_PARAMS_H
 #define GGX_BULK_PARAMS_H
 
+// The bulk kernels are built for one method (see GGX_ONLY_METHOD in ggx_samplers.h).
+#if defined(GGX_METHOD) && !defined(GGX_ONLY_METHOD)
+#define GGX_ONLY_METHOD GGX_METHOD
+#endif
 #include "ggx_world.h"
 
 #ifndef GGX_PER_SAMPLE_VIEW

@@ -40,7 +40,7 @@ GGX_INLINE ggx_vec3 ggx_from_local(ggx_basis basis, ggx_vec3 v)
 // A sample of `method` for world-space n and i with roughness alpha; m and o in world space.
 GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
 {
-    if (method == GGX_METHOD_CAPS_ISO)
+    if (GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO))
         return ggx_sample_caps_iso(n, i, alpha, u1, u2);
     ggx_basis basis = ggx_basis_from_normal(n);
     ggx_sample s = ggx_sample_method(method, n, ggx_to_local(basis, i), alpha, alpha, u1, u2);
@@ -52,7 +52,7 @@ GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, float
 // The pdf of the world-space direction o for `method` (0 where it never samples o).
 GGX_INLINE float ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
 {
-    if (method == GGX_METHOD_CAPS_ISO)
+    if (GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO))
         return ggx_pdf_caps_iso(n, i, o, alpha);
     ggx_basis basis = ggx_basis_from_normal(n);
     return ggx_pdf_method(method, n, ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha);

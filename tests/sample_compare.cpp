@@ -57,13 +57,13 @@ void compare_samples(const ggxcl::SampleSet& d, std::uint64_t seed, const Refere
 }
 
 void check_sample_errors(const std::string& name, const SampleErrors& errors, const ErrorBound& angle,
-                         const ErrorBound& pdf)
+                         const ErrorBound& pdf, const ErrorBound& weight)
 {
     CAPTURE(errors.worst_where);
     CHECK(errors.non_finite == 0);
     check_errors(name, angle, errors.angle);
     check_errors(name, pdf, errors.pdf);
-    check_errors(name, weight_bound, errors.weight);
+    check_errors(name, weight, errors.weight);
 }
 
 } // namespace ggxtest

@@ -37,6 +37,7 @@ void compare_samples(const ggxcl::SampleSet& device, std::uint64_t seed, const R
 
 // No NaN/Inf and every error within its bounds.
 void check_sample_errors(const std::string& name, const SampleErrors& errors,
-                         const ErrorBound& angle = angle_bound, const ErrorBound& pdf = pdf_bound);
+                         const ErrorBound& angle = angle_bound, const ErrorBound& pdf = pdf_bound,
+                         const ErrorBound& weight = weight_bound);
 
 } // namespace ggxtest

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# device-check.sh - one prepared check of ggxcl on a Linux machine with an
+# NVIDIA GPU and its OpenCL driver: builds ggxcl, runs the device test
+# suites on the GPU (GGXCL_DEVICE=nvidia), then a short `ggx bench` (caps
+# and heitz, write and fused furnace jobs), in under 8 minutes.  It fails
+# with a clear message, never hangs, when there is no GPU, no OpenCL ICD
+# for it, or a missing build tool.  When the driver is installed but no ICD
+# file names it, one is written to a private vendors folder
+# (OCL_ICD_VENDORS) from the driver's libnvidia-opencl.so.1.
+# Everything it prints and writes goes to $OUT (default ./device-check-out):
+# summary.txt, the logs of each step, the bench report.
+# Usage: bash scripts/device-check.sh
+set -uo pipefail
+cd "$(dirname "$0")/.."
+out="${OUT:-$PWD/device-check-out}"
+mkdir -p "$out"
+summary="$out/summary.txt"
+: >"$summary"
+say() { echo "$*" | tee -a "$summary"; }
+fail() { say "device-check: FAILED: $*"; exit 1; }
+step_start=$(date +%s)
+elapsed() { echo "$(( $(date +%s) - step_start )) s"; }
+
+# 1. The GPU and its driver.
+if command -v nvidia-smi >/dev/null 2>&1; then
+  timeout 30 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader >"$out/gpu.txt" 2>&1 ||
+    fail "nvidia-smi did not answer within 30 s (see gpu.txt)"
+  say "GPU: $(head -1 "$out/gpu.txt")"
+else
+  say "nvidia-smi not found: looking for the OpenCL driver anyway"
+fi
+nvidia_cl=""
+for candidate in $(ldconfig -p 2>/dev/null | awk '/libnvidia-opencl\.so\.1/ {print $NF}') \
+    /usr/lib/x86_64-linux-gnu/libnvidia-opencl.so.1 /usr/lib64/libnvidia-opencl.so.1 /usr/lib/libnvidia-opencl.so.1 \
+    /usr/local/nvidia/lib64/libnvidia-opencl.so.1; do
+  [ -e "$candidate" ] && { nvidia_cl="$candidate"; break; }
+done
+if ! grep -qs nvidia /etc/OpenCL/vendors/*.icd 2>/dev/null; then
+  [ -n "$nvidia_cl" ] || fail "no NVIDIA OpenCL driver: no ICD file names it and libnvidia-opencl.so.1 is not installed"
+  vendors="$out/icd-vendors"
+  mkdir -p "$vendors"
+  echo "$nvidia_cl" >"$vendors/nvidia.icd"
+  cp /etc/OpenCL/vendors/*.icd "$vendors/" 2>/dev/null || true
+  export OCL_ICD_VENDORS="$vendors"
+  say "ICD: wrote $vendors/nvidia.icd -> $nvidia_cl (OCL_ICD_VENDORS)"
+fi
+
+# 2. Build tools and build.
+missing=""
+for tool in cmake c++ make; do command -v "$tool" >/dev/null 2>&1 || missing="$missing $tool"; done
+[ -z "$missing" ] || fail "missing build tools:$missing (Debian: bash scripts/install-deps.sh)"
+export GGXCL_PROGRAM_CACHE="$PWD/build-gpu/program-cache"
+if ! timeout 60 cmake -S . -B build-gpu -DCMAKE_BUILD_TYPE=Release >"$out/configure.log" 2>&1; then
+  tail -20 "$out/configure.log" | tee -a "$summary"
+  fail "cmake configure (see configure.log; on Debian: bash scripts/install-deps.sh)"
+fi
+if ! timeout 140 cmake --build build-gpu -j"$(nproc)" >"$out/build.log" 2>&1; then
+  tail -30 "$out/build.log" | tee -a "$summary"
+  fail "build (see build.log)"
+fi
+say "built in $(elapsed)"
+
+# 3. The GPU must be an OpenCL device.
+timeout 30 build-gpu/apps/ggx devices >"$out/devices.txt" 2>&1 || { cat "$out/devices.txt" | tee -a "$summary"; fail "ggx devices"; }
+cat "$out/devices.txt" | tee -a "$summary"
+grep -qi nvidia "$out/devices.txt" || fail "no NVIDIA OpenCL device listed (see devices.txt)"
+export GGXCL_DEVICE=nvidia
+
+# 4. The device suites on the GPU.
+timeout 180 ctest --test-dir build-gpu -L 'device|cross' -j"$(( $(nproc) < 8 ? $(nproc) : 8 ))" --timeout 170 \
+  --output-on-failure >"$out/ctest.log" 2>&1
+ctest_status=$?
+grep -E "tests passed|tests failed|\*\*\*|Passed|Failed" "$out/ctest.log" | tee -a "$summary"
+say "suites done after $(elapsed) (exit $ctest_status)"
+
+# 5. A short bench: caps and heitz, write and furnace, with accuracy.
+timeout 60 build-gpu/apps/ggx bench --methods caps,heitz --precisions precise,fast --jobs write,furnace \
+  -n 2^22 --repeats 5 --no-startup --scene 8 --csv "$out/bench.csv" --markdown "$out/BENCH.md" --charts "$out/bench" \
+  >"$out/bench.log" 2>&1
+bench_status=$?
+sed -n '/## Speed (ns per sample)/,/## Speed against statistical/p' "$out/BENCH.md" 2>/dev/null | tee -a "$summary"
+say "bench done after $(elapsed) (exit $bench_status)"
+
+[ "$ctest_status" -eq 0 ] || fail "device suites (see ctest.log)"
+[ "$bench_status" -eq 0 ] || fail "bench (see bench.log)"
+say "device-check: PASSED in $(elapsed)"

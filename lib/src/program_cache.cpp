@@ -16,7 +16,9 @@ cl::Program ProgramCache::get(const cl::Device& device, const std::string& file,
     if (found != programs_.end())
         return found->second;
     bool from_disk = false;
-    cl::Program program = detail::build_program(context_, device, kernel_source(file), options, true, &from_disk);
+    // The kernels are OpenCL C 1.2 and use no extension: every device builds them.
+    cl::Program program =
+        detail::build_program(context_, device, kernel_source(file), options + " -cl-std=CL1.2", true, &from_disk);
     loaded_from_disk_ += from_disk ? 1 : 0;
     programs_.emplace(key, program);
     return program;

@@ -3,20 +3,20 @@
 # device (PoCL on the CPU unless GGXCL_DEVICE names another) and, at the
 # same time, every suite labelled `device` again on Mesa rusticl over
 # llvmpipe (RUSTICL_ENABLE=llvmpipe GGXCL_DEVICE=rusticl), then the fuzz
-# targets for a few seconds each.  Program binaries are cached in
-# build/program-cache for this build only (GGXCL_PROGRAM_CACHE).
+# targets for a few seconds each.  rusticl's program binaries are cached in
+# build/program-cache for this build only (GGXCL_PROGRAM_CACHE); PoCL keeps
+# its own.
 # Usage: bash scripts/test.sh [ctest arguments for both passes]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
-export GGXCL_PROGRAM_CACHE="$PWD/build/program-cache"
 jobs="$(nproc)"
 
 # rusticl in the background, its report printed after PoCL's.
 rusticl_log=build/ctest-rusticl.log
-( RUSTICL_ENABLE=llvmpipe GGXCL_DEVICE=rusticl \
+( RUSTICL_ENABLE=llvmpipe GGXCL_DEVICE=rusticl GGXCL_PROGRAM_CACHE="$PWD/build/program-cache" \
     ctest --test-dir build --output-on-failure -L device -j"$jobs" "$@" >"$rusticl_log" 2>&1 ) &
 rusticl_pid=$!
 pocl_status=0

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "cache_roots.hpp"
+#include "device_quirks.hpp"
 #include "ggxcl/version.hpp"
 
 namespace ggxcl::detail {
@@ -75,6 +76,14 @@ void keep_under_limit(const fs::path& dir)
 }
 
 } // namespace
+
+bool binary_cache_applies(const cl::Device& device)
+{
+    const char* chosen = std::getenv("GGXCL_PROGRAM_CACHE");
+    if (chosen && *chosen)
+        return !cache_dir().empty();
+    return !platform_caches_programs(device);
+}
 
 std::string binary_cache_key(const cl::Device& device, const std::string& source, const std::string& options)
 {

@@ -6,9 +6,9 @@
 // library version, the platform and device with their versions and driver
 // version, the build options and the whole source; a file is used only when
 // its stored key equals the key asked for and its bytes match their stored
-// checksum.  GGXCL_PROGRAM_CACHE chooses the
-// directory ("off" turns the cache off); by default it is programs/ under
-// the library's cache root.  The directory is kept under 512 MiB by
+// checksum.  GGXCL_PROGRAM_CACHE chooses the directory (for every platform)
+// or turns the cache off ("off"); unset, the cache is programs/ under the
+// library's cache root, for platforms that keep no programs themselves.  The directory is kept under 512 MiB by
 // removing the least recently written files.
 #pragma once
 
@@ -18,6 +18,9 @@
 #include "ggxcl/opencl.hpp"
 
 namespace ggxcl::detail {
+
+// Whether programs for `device` go through the cache (see above).
+bool binary_cache_applies(const cl::Device& device);
 
 std::string binary_cache_key(const cl::Device& device, const std::string& source, const std::string& options);
 

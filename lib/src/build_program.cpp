@@ -72,7 +72,7 @@ cl::Program build_program(const cl::Context& context, const cl::Device& device, 
     if (from_binary)
         *from_binary = false;
     const std::string all_options = options + device_quirk_options(device);
-    if (!keep_binary)
+    if (!keep_binary || !binary_cache_applies(device))
         return build_from_source(context, device, source, all_options);
     const std::string key = binary_cache_key(device, source, all_options);
     cl::Program program = build_from_binary(context, device, key, all_options);

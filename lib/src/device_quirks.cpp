@@ -3,12 +3,26 @@
 
 namespace ggxcl::detail {
 
+namespace {
+
+std::string platform_name(const cl::Device& device)
+{
+    return cl::Platform(device.getInfo<CL_DEVICE_PLATFORM>()).getInfo<CL_PLATFORM_NAME>();
+}
+
+} // namespace
+
 std::string device_quirk_options(const cl::Device& device)
 {
-    cl::Platform platform(device.getInfo<CL_DEVICE_PLATFORM>());
-    if (platform.getInfo<CL_PLATFORM_NAME>().find("Oclgrind") != std::string::npos)
+    if (platform_name(device).find("Oclgrind") != std::string::npos)
         return " -DGGX_NO_RESTRICT=1";
     return "";
+}
+
+bool platform_caches_programs(const cl::Device& device)
+{
+    const std::string name = platform_name(device);
+    return name == "Portable Computing Language" || name.find("NVIDIA") != std::string::npos;
 }
 
 } // namespace ggxcl::detail

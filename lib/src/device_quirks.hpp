@@ -1,6 +1,7 @@
-// device_quirks.hpp - build options that the runtime adds for a device
-// whose compiler cannot take some portable OpenCL C construct.  Users never
-// set them; every program the library builds gets them.
+// device_quirks.hpp - what the runtime knows of particular OpenCL
+// implementations: build options for a compiler that cannot take some
+// portable OpenCL C construct (users never set them; every program the
+// library builds gets them), and which platforms cache programs themselves.
 #pragma once
 
 #include <string>
@@ -14,5 +15,12 @@ namespace ggxcl::detail {
 // function with restrict pointers is inlined, and such kernels fail to be
 // created (CL_INVALID_KERNEL_NAME).  Empty for every other device.
 std::string device_quirk_options(const cl::Device& device);
+
+// Whether the platform keeps compiled programs between processes itself
+// (PoCL in ~/.cache/pocl, NVIDIA in ~/.nv/ComputeCache): there the
+// library's own binary cache is off unless GGXCL_PROGRAM_CACHE names a
+// directory.  Asking PoCL for a binary also compiles every kernel of the
+// program, which a build from its cache does not.
+bool platform_caches_programs(const cl::Device& device);
 
 } // namespace ggxcl::detail

@@ -1,9 +1,11 @@
 // program_cache.hpp - OpenCL programs built from an embedded source, once
 // per (device, build options) and kept for the life of the cache.  A failed
 // build throws BuildError with the CL error name, the options and the log.
-// Binaries are also kept on disk, so later processes on the same device and
-// driver skip the compiler: GGXCL_PROGRAM_CACHE names the directory (default
-// ~/.cache/ggxcl/programs, or under $XDG_CACHE_HOME), "off" turns it off.
+// On platforms that keep no compiled programs themselves (Mesa rusticl,
+// Oclgrind; PoCL and NVIDIA do), binaries are also kept on disk, so later
+// processes on the same device and driver skip the compiler: in
+// ~/.cache/ggxcl/programs (or $XDG_CACHE_HOME/ggxcl/programs).
+// GGXCL_PROGRAM_CACHE=DIR uses DIR for every platform; "off" turns it off.
 #pragma once
 
 #include <map>

@@ -1,77 +1,148 @@
-// bench_native.cpp - timings and error of the native C++ baseline.
+// bench_native.cpp - timings and error of the native C++ baseline, run as
+// the child process ggx-native (bench/native/ggx_native_main.cpp has the
+// protocol): timings come back as one line of ns per sample per repeat,
+// samples as raw float32 m and pdf_m, compared here with the reference.
 #include "bench_native.hpp"
 
-#include <chrono>
+#include <array>
 #include <cmath>
-#include <functional>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <unistd.h>
 #include <vector>
 
-#include "native_baseline.hpp"
+#include "child_process.hpp"
 #include "reference_bridge.hpp"
 
 namespace ggxapp {
 
 namespace {
 
-ggxnative::Method native_method(ggxcl::Method method)
-{
-    return static_cast<ggxnative::Method>(int(reference_method(method)));  // same order as ggxref::Method
-}
+namespace fs = std::filesystem;
 
-ggxnative::Job native_job(BenchJob job)
+const char* native_job_name(BenchJob job)
 {
     switch (job) {
-    case BenchJob::write: return ggxnative::Job::write_m_pdf_m;
-    case BenchJob::furnace: return ggxnative::Job::furnace_sum;
-    case BenchJob::world: return ggxnative::Job::world_space_o;
+    case BenchJob::write: return "write_m_pdf_m";
+    case BenchJob::furnace: return "furnace_sum";
+    case BenchJob::world: return "world_space_o";
     }
-    return ggxnative::Job::write_m_pdf_m;
+    return "write_m_pdf_m";
 }
 
-// Wall-clock ns per sample of `run`, median of `repeats` after one warm-up.
-Timing wall_timing(const std::function<void(std::uint64_t seed)>& run, std::uint32_t count, int repeats)
+bool is_executable(const fs::path& path)
 {
-    run(1);
-    std::vector<double> ns;
-    for (int r = 0; r < repeats; ++r) {
-        auto start = std::chrono::steady_clock::now();
-        run(std::uint64_t(r) + 2);
-        std::chrono::duration<double, std::nano> elapsed = std::chrono::steady_clock::now() - start;
-        ns.push_back(elapsed.count() / count);
+    std::error_code ignored;
+    return fs::is_regular_file(path, ignored) && ::access(path.c_str(), X_OK) == 0;
+}
+
+// $GGX_NATIVE, else ggx-native next to this program, else ../libexec/ggxcl/ggx-native from it.
+std::string native_program()
+{
+    const char* chosen = std::getenv("GGX_NATIVE");
+    if (chosen && *chosen) {
+        if (!is_executable(chosen))
+            throw NativeBaselineError(std::string("ggx-native not found: GGX_NATIVE=") + chosen +
+                                      " is not an executable file");
+        return chosen;
     }
+    std::error_code error;
+    fs::path self = fs::read_symlink("/proc/self/exe", error);
+    if (error)
+        throw NativeBaselineError("ggx-native not found: set GGX_NATIVE (/proc/self/exe: " + error.message() + ")");
+    const fs::path folder = self.parent_path();
+    const fs::path places[] = {folder / "ggx-native", (folder / ".." / "libexec" / "ggxcl" / "ggx-native").lexically_normal()};
+    for (const fs::path& place : places)
+        if (is_executable(place))
+            return place.string();
+    throw NativeBaselineError("ggx-native not found: set GGX_NATIVE (looked for " + places[0].string() + " and " +
+                              places[1].string() + ")");
+}
+
+// Enough digits that ggx-native reads back the same float.
+std::string text_of(float value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    return text;
+}
+
+std::string text_of(std::uint64_t value)
+{
+    return std::to_string(value);
+}
+
+struct NativeRun {
+    std::string command;
+    std::string out;
+};
+
+// Runs ggx-native with `arguments`; throws NativeBaselineError naming the command unless it succeeds.
+NativeRun run_native(const std::vector<std::string>& arguments)
+{
+    const std::string program = native_program();
+    NativeRun run{command_text(program, arguments), {}};
+    ChildOutput child;
+    try {
+        child = run_child(program, arguments);
+    } catch (const std::exception& e) {
+        throw NativeBaselineError(e.what());
+    }
+    if (!exited_ok(child.status)) {
+        std::string said = child.err.substr(0, child.err.find('\n'));
+        throw NativeBaselineError("`" + run.command + "` " + describe_exit(child.status) +
+                                  (said.empty() ? "" : ": " + said));
+    }
+    run.out = std::move(child.out);
+    return run;
+}
+
+// `repeats` lines of positive, finite ns per sample.
+Timing timing_of(const NativeRun& run, int repeats)
+{
+    std::istringstream lines(run.out);
+    std::vector<double> ns;
+    std::string line;
+    while (std::getline(lines, line)) {
+        char* end = nullptr;
+        double value = std::strtod(line.c_str(), &end);
+        if (line.empty() || end != line.c_str() + line.size() || !std::isfinite(value) || !(value > 0))
+            throw NativeBaselineError("`" + run.command + "` printed '" + line.substr(0, 80) +
+                                      "' where a time in ns per sample belongs");
+        ns.push_back(value);
+    }
+    if (ns.size() != std::size_t(repeats))
+        throw NativeBaselineError("`" + run.command + "` printed " + std::to_string(ns.size()) + " timings, not " +
+                                  std::to_string(repeats));
     return summarize(ns);
+}
+
+std::vector<std::string> timed_arguments(const NativeSetup& setup)
+{
+    return {text_of(std::uint64_t(setup.count)), std::to_string(setup.threads), std::to_string(setup.repeats),
+            text_of(setup.alpha), text_of(setup.view.x), text_of(setup.view.y), text_of(setup.view.z)};
 }
 
 } // namespace
 
 Timing native_timing(ggxcl::Method method, BenchJob job, const NativeSetup& setup)
 {
-    const std::size_t n = setup.count;
-    std::vector<float> m, pdf_m, o, normals, views;
-    if (job == BenchJob::write) {
-        m.resize(3 * n);
-        pdf_m.resize(n);
-    }
-    if (job == BenchJob::world) {
-        o.resize(3 * n);
-        random_world_inputs(setup.count, normals, views);
-    }
-    ggxnative::Buffers buffers{m.data(), pdf_m.data(), o.data(), normals.data(), views.data()};
-    auto run = [&](std::uint64_t seed) {
-        ggxnative::Setup s{native_method(method), native_job(job), setup.alpha, setup.alpha,
-                           {setup.view.x, setup.view.y, setup.view.z}, seed, n, setup.threads};
-        ggxnative::run(s, buffers);
-    };
-    return wall_timing(run, setup.count, setup.repeats);
+    std::vector<std::string> arguments = {"time", std::string(ggxcl::method_name(method)), native_job_name(job)};
+    for (std::string& a : timed_arguments(setup))
+        arguments.push_back(std::move(a));
+    return timing_of(run_native(arguments), setup.repeats);
 }
 
 Timing native_ceiling_timing(const NativeSetup& setup)
 {
-    float view[3] = {setup.view.x, setup.view.y, setup.view.z};
-    auto run = [&](std::uint64_t seed) {
-        ggxnative::furnace_caps_vectorized(seed, setup.count, setup.alpha, view, setup.threads);
-    };
-    return wall_timing(run, setup.count, setup.repeats);
+    std::vector<std::string> arguments = {"ceiling"};
+    for (std::string& a : timed_arguments(setup))
+        arguments.push_back(std::move(a));
+    return timing_of(run_native(arguments), setup.repeats);
 }
 
 NumericalError native_numerical_error(ggxcl::Method method)
@@ -80,10 +151,16 @@ NumericalError native_numerical_error(ggxcl::Method method)
     std::vector<double> angles, pdfs;
     NumericalError error;
     for (const ggxcl::SampleParams& p : accuracy_configs(method, ggxcl::Precision::precise)) {
+        NativeRun run = run_native({"write", std::string(ggxcl::method_name(method)), text_of(p.alpha_x),
+                                    text_of(p.alpha_y), text_of(p.view.x), text_of(p.view.y), text_of(p.view.z),
+                                    text_of(accuracy_seed), text_of(count)});
+        if (run.out.size() != 4 * count * sizeof(float))
+            throw NativeBaselineError("`" + run.command + "` wrote " + std::to_string(run.out.size()) +
+                                      " bytes, not " + std::to_string(4 * count * sizeof(float)) +
+                                      " (m and pdf_m as float32)");
         std::vector<float> m(3 * count), pdf_m(count);
-        ggxnative::run({native_method(method), ggxnative::Job::write_m_pdf_m, p.alpha_x, p.alpha_y,
-                        {p.view.x, p.view.y, p.view.z}, accuracy_seed, count, 1},
-                       {m.data(), pdf_m.data()});
+        std::memcpy(m.data(), run.out.data(), m.size() * sizeof(float));
+        std::memcpy(pdf_m.data(), run.out.data() + m.size() * sizeof(float), pdf_m.size() * sizeof(float));
         ggxref::Params ref = reference_params(p);
         for (std::uint64_t j = 0; j < count; ++j) {
             std::array<double, 2> u = ggxref::uniforms(accuracy_seed, j);

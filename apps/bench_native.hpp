@@ -4,9 +4,16 @@
 // timed by wall clock (median of repeats after a warm-up), its numerical
 // error against the reference (m and pdf_m, the fields it writes), and the
 // hand-vectorized ceiling of the fused caps estimator.
+//
+// The baseline runs in the child process ggx-native, so that no
+// -march=native code is linked into `ggx`: found through $GGX_NATIVE, else
+// next to the running `ggx`, else in ../libexec/ggxcl relative to it.  When
+// it is missing or fails, these functions throw NativeBaselineError, and
+// the bench goes on without its native rows.
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 
 #include <ggxcl/ggxcl.hpp>
 
@@ -14,6 +21,13 @@
 #include "bench_speed.hpp"
 
 namespace ggxapp {
+
+// ggx-native not found, not startable, failed or printed something unexpected;
+// what() says which ("ggx-native not found: set GGX_NATIVE (...)", or the
+// command and what went wrong).
+struct NativeBaselineError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 struct NativeSetup {
     std::uint32_t count = 1u << 22;

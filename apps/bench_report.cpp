@@ -236,8 +236,12 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
        << "\n- Device: " << r.device << "\n- Speed runs: alpha " << r.alpha << ", view at " << r.theta
        << " degrees, " << r.count << " samples per run (world job: per-sample normals and views, at most 2^22), median of "
        << r.repeats << " runs after a warm-up, " << r.device_clock << "; (min–max) in brackets.\n"
-       << "- Native C++ baseline: " << r.native_count << " samples per run, " << r.threads
-       << " threads, wall clock, median of " << r.repeats << ".\n\n";
+       << "- Native C++ baseline: ";
+    if (r.native_unavailable.empty())
+        md << r.native_count << " samples per run, " << r.threads << " threads, wall clock, median of " << r.repeats
+           << " (the child process ggx-native).\n\n";
+    else
+        md << "not available (" << r.native_unavailable << "); no native rows.\n\n";
     md << "## Targets\n\n| target | measured | met |\n|---|---|---|\n";
     for (const Target& t : speed_targets(r))
         md << "| " << t.what << " | " << t.measured << " | " << (t.met ? "yes" : "**no**") << " |\n";

@@ -38,6 +38,7 @@ struct BenchReport {
     std::vector<BenchRow> rows;
     bool has_ceiling = false;
     Timing ceiling;               // hand-vectorized native fused caps
+    std::string native_unavailable;  // why the native baseline is missing (empty: measured or --no-native)
     StartupTiming startup;
 };
 

@@ -88,10 +88,12 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
 }
 
 // The native rows; their albedo variance is the device's precise one for the
-// same method (the same samples, drawn from the same uniforms).
+// same method (the same samples, drawn from the same uniforms).  All or none:
+// they join the report only once the ceiling is timed too.
 void measure_native(const BenchPlan& plan, BenchReport& report)
 {
     NativeSetup setup{report.native_count, report.threads, report.repeats, plan.base.alpha_x, plan.base.view};
+    std::vector<BenchRow> rows;
     for (const std::string& name : plan.methods) {
         ggxcl::Method method = ggxcl::parse_method(name);
         for (const std::string& job_text : plan.jobs) {
@@ -106,11 +108,24 @@ void measure_native(const BenchPlan& plan, BenchReport& report)
                     device.job == "furnace")
                     row.variance = device.variance, row.mean_albedo = device.mean_albedo;
             std::cerr << "  " << name << " native " << job_text << ": " << row.timing.median << " ns\n";
-            report.rows.push_back(row);
+            rows.push_back(row);
         }
     }
-    report.has_ceiling = true;
     report.ceiling = native_ceiling_timing(setup);
+    report.has_ceiling = true;
+    report.rows.insert(report.rows.end(), rows.begin(), rows.end());
+}
+
+// The native baseline, or, where ggx-native is missing or fails (built for
+// another CPU, say), a note in its place and no native rows, as --no-native.
+void measure_native_if_available(const BenchPlan& plan, BenchReport& report)
+{
+    try {
+        measure_native(plan, report);
+    } catch (const NativeBaselineError& e) {
+        report.native_unavailable = e.what();
+        std::cerr << "native baseline not available (" << e.what() << "); skipping the native rows\n";
+    }
 }
 
 std::string relative_to(const std::string& path, const std::string& markdown)
@@ -155,7 +170,7 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
     report.device = sampler.device_name();
     measure_device(sampler, plan, cmd, report);
     if (!cmd.no_native)
-        measure_native(plan, report);
+        measure_native_if_available(plan, report);
     if (!cmd.no_startup)
         report.startup = measure_startup(cmd.device, 5);
     write_outputs(cmd, report);

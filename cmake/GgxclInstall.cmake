@@ -1,6 +1,7 @@
 # GgxclInstall.cmake - what `cmake --install` puts where (GNUInstallDirs):
 # libggxcl, its C++ headers, the OpenCL C device headers for user kernels
-# (GGXCL_INSTALL_DEVICE_DIR) and the `ggx` tool; the CMake package
+# (GGXCL_INSTALL_DEVICE_DIR) and the `ggx` tool with its native baseline
+# ggx-native (libexec/ggxcl); the CMake package
 # (find_package(ggxcl CONFIG) -> ggxcl::ggxcl, with a version file), the
 # pkg-config file ggxcl.pc, and the same package for the build tree.
 include(CMakePackageConfigHelpers)
@@ -20,6 +21,8 @@ install(FILES ${GGXCL_DEVICE_HEADERS} ${PROJECT_SOURCE_DIR}/kernels/ggx_bulk.cl
   DESTINATION ${GGXCL_INSTALL_DEVICE_DIR})
 if(TARGET ggx)
   install(TARGETS ggx RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # The -march=native baseline `ggx bench` runs as a child process; ggx looks in ../libexec/ggxcl.
+  install(TARGETS ggx-native RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/ggxcl)
 endif()
 
 # The CMake package, installed: GGXCL_DEVICE_INCLUDE_DIR relative to the prefix.

@@ -305,3 +305,64 @@ TEST_CASE("shards with consecutive --first ranges merge to exactly the one-run f
         }
     }
 }
+
+TEST_CASE("ggx bench without its native baseline still finishes and says the baseline is not available")
+{
+    fs::path dir = scratch() / "no-native";
+    fs::create_directories(dir);
+    const fs::path missing = dir / "nowhere" / "ggx-native";
+    Run run = ggxtest::run_ggx("GGX_NATIVE=" + missing.string() + " " + GGX_BINARY +
+                                   " bench --methods caps --precisions fast --jobs write,furnace -n 2^12 --repeats 5 "
+                                   "--no-accuracy --no-startup --csv " + (dir / "b.csv").string() + " --markdown " +
+                                   (dir / "B.md").string(),
+                               scratch() / "stderr.txt", false);
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    CHECK(run.err.find("native baseline not available") != std::string::npos);
+    CHECK(run.err.find("GGX_NATIVE=" + missing.string()) != std::string::npos);
+    std::string csv = read_all(dir / "b.csv");
+    CHECK(csv.find("caps,fast,write,") != std::string::npos);
+    CHECK(csv.find(",native") == std::string::npos);  // neither native rows nor the ceiling
+    CHECK(read_all(dir / "B.md").find("Native C++ baseline: not available (ggx-native not found") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("ggx links no -march=native code: its baseline is the separate program ggx-native beside it")
+{
+    const fs::path native = fs::path(GGX_BINARY).parent_path() / "ggx-native";
+    REQUIRE(fs::is_regular_file(native));
+    fs::path symbols = scratch() / "nm.txt";
+    Run nm = ggxtest::run_ggx("{ nm -C " + std::string(GGX_BINARY) + " >" + symbols.string() + "; }",
+                              scratch() / "stderr.txt", false);
+    CAPTURE(nm.err);
+    REQUIRE(nm.status == 0);
+    std::string table = read_all(symbols);
+    CHECK(table.find("ggxapp::") != std::string::npos);  // the table is there ...
+    CHECK(table.find("ggxnative::") == std::string::npos);  // ... without the baseline
+    fs::remove(symbols);
+}
+
+TEST_CASE("ggx-native prints one timing per repeat and refuses a bad argument with status 2")
+{
+    const std::string native = (fs::path(GGX_BINARY).parent_path() / "ggx-native").string();
+    fs::path out = scratch() / "native.txt";
+    Run run = ggxtest::run_ggx("{ " + native + " time caps-iso furnace_sum 4096 2 5 0.3 0.5 0 0.866025388 >" +
+                                   out.string() + "; }",
+                               scratch() / "stderr.txt", false);
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    std::istringstream lines(read_all(out));
+    std::string line;
+    int timings = 0;
+    while (std::getline(lines, line)) {
+        CAPTURE(line);
+        CHECK(std::stod(line) > 0.0);
+        ++timings;
+    }
+    CHECK(timings == 5);
+    Run bad = ggxtest::run_ggx(native + " time caps furnace_sum 4096 2 5 0.3 0.5 0 0.5", scratch() / "stderr.txt",
+                               false);
+    CHECK(bad.status == 2);
+    CHECK(bad.err.find("VX VY VZ") != std::string::npos);
+    fs::remove(out);
+}

@@ -96,11 +96,19 @@ GGX_INLINE ggx_sample ggx_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, f
     float key = ggx_inv_iz_plus_t(i.z, ggx_t(i, alpha, alpha), alpha, alpha, i);
     return ggx_guard(ggx_draw_caps_iso_z(i, alpha, u1, u2), key, alpha, alpha);
 #else
-    float iz = ggx_dot(i, n);
-    float key = ggx_inv_iz_plus_t_about(i, n, alpha, iz, ggx_t_about(i, n, alpha)) / (n.z + 1.0f);
+    float iz = ggx_dot(i, n), ti = ggx_t_about(i, n, alpha);
     ggx_sample s = ggx_draw_caps_iso(n, i, alpha, u1, u2);
-    // + m.z: a view within rounding of -n about a tilted n makes h = c + v vanish, and m NaN.
-    return ggx_guard_about(s, key + s.m.z, n, alpha, alpha);
+    // key = (2 + m.z) / ((iz + t) (1 + nz)), between 1 and 3 times the reciprocal of the visible
+    // area times 1 + nz.  The factor 2 + m.z: a view within rounding of -n about a tilted n makes
+    // h = c + v vanish and m NaN, which the key carries to the guard; and the division after m
+    // keeps LLVM's SLP vectorizer from pairing it with the reciprocal in normalize(), a pair
+    // that stopped PoCL from vectorizing the work-items on 8-wide (AVX2) targets.
+#if GGX_BELOW_HORIZON
+    float key = (2.0f + s.m.z) * ggx_inv_iz_plus_t_about(i, n, alpha, iz, ti) / (n.z + 1.0f);
+#else
+    float key = (2.0f + s.m.z) / ((iz + ti) * (n.z + 1.0f));
+#endif
+    return ggx_guard_about(s, key, n, alpha, alpha);
 #endif
 }
 

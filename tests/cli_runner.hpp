@@ -1,7 +1,7 @@
 // cli_runner.hpp - what the tests of the `ggx` tool share: a scratch
 // folder per test process (removed at exit), running the tool (GGX_BINARY,
-// set by CMake) with its exit status and stderr, and reading a file back
-// whole.
+// set by CMake) with its exit status and stderr, reading a file back whole,
+// and the rows of a `ggx bench` CSV.
 #pragma once
 
 #include <cstdlib>
@@ -61,6 +61,33 @@ inline Run run_ggx(const std::string& args, const fs::path& err_file, bool prefi
                           err_file.string();
     int raw = std::system(command.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_all(err_file)};
+}
+
+// The first four columns of each row of a `ggx bench` CSV (after its header).
+struct BenchCsvRow {
+    std::string method, precision, job, line;
+    double ns_median = 0;
+};
+
+inline std::vector<BenchCsvRow> bench_csv_rows(const std::string& csv_text)
+{
+    std::stringstream csv(csv_text);
+    std::string line;
+    std::getline(csv, line);  // the header
+    std::vector<BenchCsvRow> rows;
+    while (std::getline(csv, line)) {
+        std::stringstream fields(line);
+        BenchCsvRow row;
+        std::string ns;
+        std::getline(fields, row.method, ',');
+        std::getline(fields, row.precision, ',');
+        std::getline(fields, row.job, ',');
+        std::getline(fields, ns, ',');
+        row.ns_median = std::stod(ns);
+        row.line = line;
+        rows.push_back(row);
+    }
+    return rows;
 }
 
 } // namespace ggxtest

@@ -171,23 +171,15 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
                   (dir / "B.md").string());
     CAPTURE(run.err);
     REQUIRE(run.status == 0);
-    std::stringstream csv(read_all(dir / "b.csv"));
-    std::string line;
-    std::getline(csv, line);
-    CHECK(line.rfind("method,precision,job,ns_median", 0) == 0);
+    const std::string csv = read_all(dir / "b.csv");
+    CHECK(csv.rfind("method,precision,job,ns_median", 0) == 0);
     int device_rows = 0, native_rows = 0, ceiling_rows = 0;
-    while (std::getline(csv, line)) {
-        std::stringstream fields(line);
-        std::string method, precision, job, ns;
-        std::getline(fields, method, ',');
-        std::getline(fields, precision, ',');
-        std::getline(fields, job, ',');
-        std::getline(fields, ns, ',');
-        CAPTURE(line);
-        CHECK(std::stod(ns) > 0.0);
-        device_rows += precision == "fast";
-        native_rows += precision == "native";
-        ceiling_rows += precision == "native-vectorized";
+    for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(csv)) {
+        CAPTURE(row.line);
+        CHECK(row.ns_median > 0.0);
+        device_rows += row.precision == "fast";
+        native_rows += row.precision == "native";
+        ceiling_rows += row.precision == "native-vectorized";
     }
     CHECK(device_rows == 6);  // 2 methods x 3 jobs
     CHECK(native_rows == 6);

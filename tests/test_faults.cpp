@@ -3,7 +3,8 @@
 // and leaves no file behind, neither under the final name nor as a
 // temporary:
 //  - no OpenCL platform at all (the ICD loader pointed at an empty folder):
-//    the message says how to install PoCL;
+//    the message says how to install PoCL; platforms without a device
+//    (Mesa's alone): how to enable rusticl or install PoCL;
 //  - the disk fills up (a file-size limit, RLIMIT_FSIZE, below the output):
 //    "File too large", no partial file;
 //  - an interrupted run (SIGINT while sampling): no file, temporary removed;
@@ -41,6 +42,43 @@ bool folder_empty(const fs::path& dir)
 }
 
 } // namespace
+
+TEST_CASE("platforms without a device are skipped; with none that has one, the message says what to do")
+{
+    // Mesa's two platforms alone: Clover lists no device without an AMD GPU,
+    // rusticl none without RUSTICL_ENABLE.
+    fs::path vendors = scratch() / "mesa-only";
+    fs::create_directories(vendors);
+    int found = 0;
+    for (const char* icd : {"mesa.icd", "rusticl.icd"})
+        if (fs::exists(fs::path("/etc/OpenCL/vendors") / icd)) {
+            fs::copy_file(fs::path("/etc/OpenCL/vendors") / icd, vendors / icd, fs::copy_options::overwrite_existing);
+            ++found;
+        }
+    REQUIRE_MESSAGE(found > 0, "needs Mesa's OpenCL ICDs (apt-get install mesa-opencl-icd)");
+    ggxtest::Run none = ggxtest::run_ggx("env -u RUSTICL_ENABLE OCL_ICD_VENDORS=" + vendors.string() + " " +
+                                             GGX_BINARY + " devices",
+                                         scratch() / "stderr.txt", false);
+    CAPTURE(none.err);
+    CHECK(none.status == 1);
+    CHECK(none.err.find("no OpenCL platform has a device") != std::string::npos);
+    CHECK(none.err.find("RUSTICL_ENABLE=llvmpipe") != std::string::npos);
+    CHECK(none.err.find("pocl-opencl-icd") != std::string::npos);
+    // With PoCL beside them the empty platforms are skipped without a word.
+    fs::copy_file("/etc/OpenCL/vendors/pocl.icd", vendors / "pocl.icd", fs::copy_options::overwrite_existing);
+    fs::path listing = scratch() / "devices.txt";
+    ggxtest::Run some = ggxtest::run_ggx("{ env -u RUSTICL_ENABLE OCL_ICD_VENDORS=" + vendors.string() + " " +
+                                             GGX_BINARY + " devices >" + listing.string() + "; }",
+                                         scratch() / "stderr.txt", false);
+    CAPTURE(some.err);
+    CHECK(some.status == 0);
+    CHECK(some.err.empty());
+    const std::string text = ggxtest::read_all(listing);
+    CHECK(text.find("Portable Computing Language") != std::string::npos);
+    CHECK(text.find("OpenCL C 1.2") != std::string::npos);  // the versions and limits line
+    CHECK(text.find("work-groups up to") != std::string::npos);
+    fs::remove_all(vendors);
+}
 
 TEST_CASE("no OpenCL platform: exit 1 and a message that says how to install PoCL")
 {

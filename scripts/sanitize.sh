@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # sanitize.sh - builds the host code (library, reference, tool, tests) with
 # AddressSanitizer and UndefinedBehaviorSanitizer in build-asan/ and runs the
-# test suite there.  Leak reports from the OpenCL stack (PoCL, its LLVM, the
-# ICD loader), which we cannot fix, are suppressed by
+# test suite there on PoCL.  Leak reports from the OpenCL stack (PoCL, its
+# LLVM, the ICD loader), which we cannot fix, are suppressed by
 # scripts/lsan-suppressions.txt; every other report fails the run.
 # Usage: bash scripts/sanitize.sh [ctest arguments]
 set -euo pipefail
@@ -11,7 +11,16 @@ flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-fr
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 cmake --build build-asan -j"$(nproc)"
+# PoCL alone: Mesa's OpenCL libraries (rusticl, Clover) leak when the ICD
+# loader merely loads them, partly in frames LeakSanitizer cannot name (no
+# module to suppress), and the host code under test is the same whatever the
+# device.  test_cross_device, which needs a second implementation, runs in
+# test.sh only.
+icd_dir="$PWD/build-asan/icd-pocl-only"
+mkdir -p "$icd_dir"
+cp /etc/OpenCL/vendors/pocl.icd "$icd_dir/"
+export OCL_ICD_VENDORS="$icd_dir"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_odr_violation=0"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-ctest --test-dir build-asan --output-on-failure -j"$(nproc)" "$@"
+ctest --test-dir build-asan --output-on-failure -LE cross -j"$(nproc)" "$@"

@@ -12,7 +12,7 @@ namespace ggxtest {
 
 inline bool same_bits(const std::vector<float>& a, const std::vector<float>& b)
 {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
 }
 
 inline bool same_bits(const ggxcl::SampleSet& a, const ggxcl::SampleSet& b)

@@ -77,6 +77,7 @@ TEST_CASE("platforms without a device are skipped; with none that has one, the m
     CHECK(text.find("Portable Computing Language") != std::string::npos);
     CHECK(text.find("OpenCL C 1.2") != std::string::npos);  // the versions and limits line
     CHECK(text.find("work-groups up to") != std::string::npos);
+    fs::remove(listing);
     fs::remove_all(vendors);
 }
 

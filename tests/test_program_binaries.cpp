@@ -20,24 +20,29 @@ namespace {
 
 using ggxtest::same_bits;
 
-// GGXCL_PROGRAM_CACHE set to `value` for the life of the object.
-struct CacheSetting {
-    explicit CacheSetting(const std::string& value)
+// Environment variable `name` set to `value` for the life of the object.
+struct ScopedEnv {
+    ScopedEnv(const char* name, const std::string& value) : name(name)
     {
-        const char* old = std::getenv("GGXCL_PROGRAM_CACHE");
+        const char* old = std::getenv(name);
         had_old = old != nullptr;
         saved = old ? old : "";
-        ::setenv("GGXCL_PROGRAM_CACHE", value.c_str(), 1);
+        ::setenv(name, value.c_str(), 1);
     }
-    ~CacheSetting()
+    ~ScopedEnv()
     {
         if (had_old)
-            ::setenv("GGXCL_PROGRAM_CACHE", saved.c_str(), 1);
+            ::setenv(name, saved.c_str(), 1);
         else
-            ::unsetenv("GGXCL_PROGRAM_CACHE");
+            ::unsetenv(name);
     }
+    const char* name;
     bool had_old = false;
     std::string saved;
+};
+
+struct CacheSetting : ScopedEnv {
+    explicit CacheSetting(const std::string& value) : ScopedEnv("GGXCL_PROGRAM_CACHE", value) {}
 };
 
 fs::path fresh_dir(const std::string& tag)
@@ -139,9 +144,7 @@ TEST_CASE("a damaged or foreign cache file is not used; the program is rebuilt f
 TEST_CASE("by default the cache is under XDG_CACHE_HOME for platforms without their own; off keeps it out")
 {
     fs::path root = fresh_dir("default");
-    const char* old_xdg = std::getenv("XDG_CACHE_HOME");
-    const std::string saved_xdg = old_xdg ? old_xdg : "";
-    ::setenv("XDG_CACHE_HOME", root.c_str(), 1);
+    ScopedEnv xdg("XDG_CACHE_HOME", root.string());
     {
         CacheSetting unset("");  // an empty value means the default: platforms without a cache of their own
         ggxcl::Sampler warm;
@@ -160,9 +163,5 @@ TEST_CASE("by default the cache is under XDG_CACHE_HOME for platforms without th
         draw(sampler);
         CHECK(sampler.programs_from_disk() == 0);
     }
-    if (old_xdg)
-        ::setenv("XDG_CACHE_HOME", saved_xdg.c_str(), 1);
-    else
-        ::unsetenv("XDG_CACHE_HOME");
     fs::remove_all(root);
 }

@@ -35,15 +35,6 @@ fs::path cache_dir()
     return roots.empty() ? fs::path() : roots.front() / "programs";
 }
 
-template <typename Bytes>
-std::uint64_t fnv1a(const Bytes& bytes)
-{
-    std::uint64_t hash = 14695981039346656037ull;
-    for (unsigned char c : bytes)
-        hash = (hash ^ c) * 1099511628211ull;
-    return hash;
-}
-
 std::string file_name(const std::string& key)
 {
     char name[32];

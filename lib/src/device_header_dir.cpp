@@ -51,11 +51,10 @@ bool matches_embedded(const fs::path& dir)
 // every embedded file's name and text.
 std::string content_id()
 {
-    std::uint64_t hash = 14695981039346656037ull;
+    std::uint64_t hash = detail::fnv1a(std::string());
     for (const std::string& name : kernel_files())
         for (const std::string* part : {&name, &kernel_source(name)})
-            for (unsigned char c : *part + '\0')
-                hash = (hash ^ c) * 1099511628211ull;
+            hash = detail::fnv1a(*part + '\0', hash);
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
     return std::string(version()) + "-" + hex;

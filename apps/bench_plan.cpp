@@ -39,7 +39,7 @@ BenchJob job_named(const std::string& name)
 BenchPlan plan_bench(const BenchCommand& cmd)
 {
     BenchPlan plan{parse_name_list("--methods", cmd.methods, method_names()),
-                   parse_name_list("--precisions", cmd.precisions, {"precise", "fast", "relaxed"}),
+                   parse_name_list("--precisions", cmd.precisions, {"precise", "relaxed"}),
                    parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world"}), {}, {}};
     plan_settings(cmd, plan.settings);
     std::array<float, 2> alpha = parse_alpha("--alpha", cmd.alpha);

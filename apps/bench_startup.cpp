@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 // Wall-clock milliseconds of `ggx sample -n 1` with the kernel cache in `cache`.
 double run_once(const fs::path& dir, const fs::path& cache, const std::string& device)
 {
-    std::vector<std::string> words = {"/proc/self/exe", "sample", "--method", "caps", "--precision", "fast",
+    std::vector<std::string> words = {"/proc/self/exe", "sample", "--method", "caps",
                                       "-n",             "1",      "--out",    (dir / "one.npy").string()};
     if (!device.empty()) {
         words.push_back("--device");

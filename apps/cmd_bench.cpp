@@ -53,7 +53,7 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
                 p.method = ggxcl::parse_method(name);
                 p.precision = ggxcl::parse_precision(mode);
                 tasks.push_back({job_named(job_text), p});
-                if (mode == "fast" && job_text == "write") {  // the guards' cost, side by side
+                if (mode == "precise" && job_text == "write") {  // the guards' cost, side by side
                     p.guards = false;
                     tasks.push_back({BenchJob::write, p});
                 }

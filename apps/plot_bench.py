@@ -19,7 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 METHODS = ["ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"]
 COLORS = dict(zip(METHODS, ["#7f7f7f", "#1f77b4", "#17becf", "#d62728", "#ff7f0e", "#2ca02c"]))
-MARKERS = {"precise": "o", "fast": "s", "relaxed": "^", "native": "x"}
+MARKERS = {"precise": "o", "relaxed": "^", "native": "x"}
 
 
 def rows_of(path):

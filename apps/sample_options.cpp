@@ -14,8 +14,8 @@ void SampleOptions::add_view_options(CLI::App& cmd)
         ->capture_default_str();
     cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360")->capture_default_str();
     cmd.add_option("--seed", seed, "seed of the Philox stream, 0..2^64-1")->capture_default_str();
-    cmd.add_option("--precision", precision, "precise (built-in sin/cos), fast (polynomial sincos) or relaxed "
-                                             "(fast and -cl-fast-relaxed-math)")
+    cmd.add_option("--precision", precision, "precise (IEEE arithmetic, sincos within 0.86 ulp) or relaxed "
+                                             "(precise and -cl-fast-relaxed-math)")
         ->capture_default_str();
     cmd.add_option("--device", device, "device index or name part (see `ggx devices`); default GGXCL_DEVICE, else the first");
 }

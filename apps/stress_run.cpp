@@ -55,9 +55,7 @@ void count(StressMap& map, const StressAxes& axes, const StressCase& c, const St
 
 std::string stress_options(ggxcl::Method method, ggxcl::Precision precision, bool guards)
 {
-    std::string options = "-DGGX_METHOD=" + std::to_string(int(method)) +
-                          " -DGGX_FAST_SINCOS=" + (precision == ggxcl::Precision::precise ? "0" : "1") +
-                          " -DGGX_GUARDS=" + (guards ? "1" : "0");
+    std::string options = "-DGGX_METHOD=" + std::to_string(int(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0");
     return precision == ggxcl::Precision::relaxed ? options + " -cl-fast-relaxed-math" : options;
 }
 

@@ -1,7 +1,7 @@
 // probe_kernel.cpp - times small probe kernels that isolate one cost of a
 // bulk kernel (stores, Philox, one sampler's math): each .cl file defines
 // `k(__global float* out, uint count)` and is built after ggx_samplers.h
-// with the fast sincos. Prints the median ns per work-item over 7 runs of
+// with the default (precise) build. Prints the median ns per work-item over 7 runs of
 // 2^24 work-items (after one warm-up run), each probe in the same process.
 // Usage: probe_kernel FILE.cl...
 #include <algorithm>
@@ -16,7 +16,7 @@ namespace {
 double median_ns(ggxcl::Sampler& s, const std::string& source, cl::Buffer& out, cl_uint n)
 {
     cl::Program program(s.context(), ggxcl::kernel_source("ggx_samplers.h") + source);
-    program.build({s.device()}, "-DGGX_FAST_SINCOS=1");
+    program.build({s.device()});
     cl::Kernel k(program, "k");
     k.setArg(0, out);
     k.setArg(1, n);

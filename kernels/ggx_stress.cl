@@ -5,8 +5,8 @@
 // user kernel would (ggx_sample_<method> through ggx_sample_method, and
 // ggx_pdf_method on the returned direction).
 //
-// Build options: GGX_METHOD=<id>, GGX_FAST_SINCOS=0|1 (and optionally
-// -cl-fast-relaxed-math).  Layout: case j reads in[k * count + j] for
+// Build options: GGX_METHOD=<id> (and -cl-fast-relaxed-math in relaxed
+// mode).  Layout: case j reads in[k * count + j] for
 // k = ax, ay, view x, y, z, normal x, y, z, u1, u2 and writes
 // out[k * count + j] for k = m x, y, z, o x, y, z, pdf_m, pdf_o, weight,
 // pdf of o recomputed from (i, o).

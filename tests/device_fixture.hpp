@@ -21,8 +21,7 @@ ggxcl::Method to_library(ggxref::Method method);
 ggxcl::SampleParams to_library(ggxref::Method method, const ggxref::Params& params,
                                ggxcl::Precision precision = ggxcl::Precision::precise);
 
-inline constexpr ggxcl::Precision all_precisions[] = {ggxcl::Precision::precise, ggxcl::Precision::fast,
-                                                      ggxcl::Precision::relaxed};
+inline constexpr ggxcl::Precision all_precisions[] = {ggxcl::Precision::precise, ggxcl::Precision::relaxed};
 
 // The reference parameters of a view at (theta, phi) degrees, normal +z.
 ggxref::Params make_params(double ax, double ay, double theta_degrees, double phi_degrees = 35.0);

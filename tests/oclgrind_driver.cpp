@@ -48,7 +48,7 @@ void check(bool ok, const std::string& what)
         std::cerr << "FAIL " << what << "\n";
 }
 
-const Precision modes[] = {Precision::precise, Precision::fast};
+const Precision modes[] = {Precision::precise, Precision::relaxed};
 
 std::string label(Method method, Precision precision)
 {
@@ -161,7 +161,7 @@ ggxcl::SampleParams params_of(Method method, Precision precision)
 
 // generate with per-sample views and alphas (caps-iso: and normals), all
 // fields, then the pdf kernel with the same per-sample inputs: in precise
-// mode the general program (views to 120 degrees, anisotropic), in fast
+// mode the general program (views to 120 degrees, anisotropic), in relaxed
 // mode the specialized one (views above the horizon, isotropic).  (Every
 // program variant is a compile under Oclgrind, about half a second.)
 void run_per_sample(ggxcl::Sampler& sampler, std::uint64_t count)
@@ -255,7 +255,7 @@ bool close_sums(double a, double b) { return std::fabs(a - b) <= 1e-4 * std::fab
 // (126 work-items of 8 samples, the last one partial) spans two groups:
 // with uniform parameters unguarded (Sampler::furnace) and guarded
 // (enqueue_furnace with params.guards), whose sums agree, in precise and
-// fast mode; with per-sample buffers (fast mode), guarded, whose sum
+// relaxed mode; with per-sample buffers (relaxed mode), guarded, whose sum
 // equals that of the stored weights of the same samples.
 void run_furnace(ggxcl::Sampler& sampler, std::uint64_t count)
 {
@@ -274,8 +274,8 @@ void run_furnace(ggxcl::Sampler& sampler, std::uint64_t count)
                       std::to_string(sums.sum));
             std::cout << "ok " << what << " (" << sampler.furnace_items(count) << " work-items)\n";
         }
-        ggxcl::SampleParams p = params_of(method, Precision::fast);
-        const std::string what = "furnace " + label(method, Precision::fast) + " per-sample";
+        ggxcl::SampleParams p = params_of(method, Precision::relaxed);
+        const std::string what = "furnace " + label(method, Precision::relaxed) + " per-sample";
         ggxcl::PerSampleInputs in =
             per_sample_inputs(count, 85.0, method == Method::caps_iso, method == Method::caps_iso, 5);
         ggxcl::SampleSet s = sampler.generate(p, range, {ggxcl::Field::weight}, in);
@@ -292,7 +292,7 @@ void run_furnace(ggxcl::Sampler& sampler, std::uint64_t count)
 
 // World space (SampleParams::world_space) for every method: in precise
 // mode a uniform tilted normal and view (o above the normal's horizon for
-// most samples), in fast mode per-sample normals and views; the
+// most samples), in relaxed mode per-sample normals and views; the
 // world-space pdf kernel gives back pdf_o.
 void run_world(ggxcl::Sampler& sampler, std::uint64_t count)
 {
@@ -305,7 +305,7 @@ void run_world(ggxcl::Sampler& sampler, std::uint64_t count)
             std::mt19937 rng(1);
             p.view = around(p.normal, 50.0, rng);
             ggxcl::PerSampleInputs in;
-            if (precision == Precision::fast)
+            if (precision == Precision::relaxed)
                 in = per_sample_inputs(count, 85.0, true, true, 13);
             const std::string what =
                 "world " + label(method, precision) + (in.views.empty() ? " uniform" : " per-sample");
@@ -324,7 +324,7 @@ void run_world(ggxcl::Sampler& sampler, std::uint64_t count)
 
 // A user kernel that includes ggx_samplers.h (build_user_program) and calls
 // ggx_uniforms + ggx_sample_method gives the bits of Sampler::enqueue:
-// every method, half of them in precise and half in fast mode.
+// every method, half of them in precise and half in relaxed mode.
 void run_user(ggxcl::Sampler& sampler, std::uint64_t count)
 {
     const ggxcl::SampleRange range{0x1234abcd5678ull, (1ull << 33) + 17, count};
@@ -336,7 +336,7 @@ void run_user(ggxcl::Sampler& sampler, std::uint64_t count)
             ggxcl::SampleParams p{method, 0.2f, method == Method::caps_iso ? 0.2f : 0.45f,
                                   ggxcl::view_from_angles(63, 30)};
             p.precision = precision;
-            std::string options = precision == Precision::fast ? "-DGGX_FAST_SINCOS=1" : "";
+            std::string options = precision == Precision::relaxed ? "-cl-fast-relaxed-math" : "";
             if (method == Method::caps_iso) {
                 p.normal = {0.0f, 0.6f, 0.8f};  // tilted: the general form (n = z would need GGX_NORMAL_IS_Z)
                 p.view = {0.3f, -0.2f, 0.9f};
@@ -356,14 +356,14 @@ void run_user(ggxcl::Sampler& sampler, std::uint64_t count)
 }
 
 // kernels/ggx_stress.cl through device_stress_map (what `ggx stress` runs),
-// on every `stride`-th case of the stress grid, fast and relaxed mode (the
+// on every `stride`-th case of the stress grid, relaxed mode (the
 // command line's run covers precise mode on the whole grid): no NaN or Inf,
 // and every case counted.
 void run_stress(ggxcl::Sampler& sampler, std::uint64_t stride)
 {
     ggxapp::StressAxes axes = ggxapp::stress_axes();
     for (Method method : ggxcl::all_methods)
-        for (Precision precision : {Precision::fast, Precision::relaxed}) {
+        for (Precision precision : {Precision::relaxed}) {
             std::vector<ggxapp::StressCase> all = ggxapp::stress_cases(method, axes), cases;
             for (std::size_t j = 0; j < all.size(); j += stride)
                 cases.push_back(all[j]);

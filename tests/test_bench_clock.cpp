@@ -28,7 +28,7 @@ TEST_CASE("ggx bench times device rows by a clock that can be right, and says wh
 {
     fs::path dir = ggxtest::scratch_dir("bench-clock");
     const std::uint64_t count = 1u << 16;
-    ggxtest::Run run = ggxtest::run_ggx("bench --methods caps,heitz --precisions fast --jobs write,furnace -n 2^16 "
+    ggxtest::Run run = ggxtest::run_ggx("bench --methods caps,heitz --precisions precise --jobs write,furnace -n 2^16 "
                                         "--repeats 5 --no-native --no-accuracy --no-startup --csv " +
                                             (dir / "b.csv").string() + " --markdown " + (dir / "B.md").string(),
                                         dir / "stderr.txt");

@@ -39,7 +39,7 @@ double fit_o(Method method, const ggxref::Params& params)
 double fit_standard_space(Method method, const ggxref::Params& params, Method against)
 {
     ggxcl::SampleSet s = ggxtest::device_samples(method, params, next_seed(), ggxtest::chi_square_samples,
-                                                 {ggxcl::Field::m}, ggxcl::Precision::fast);
+                                                 {ggxcl::Field::m}, ggxcl::Precision::precise);
     std::vector<float> x(s.count), y(s.count), z(s.count);
     for (std::size_t j = 0; j < s.count; ++j) {
         double mx = s.m[j] / params.ax, my = s.m[s.count + j] / params.ay, mz = s.m[2 * s.count + j];

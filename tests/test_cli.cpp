@@ -165,7 +165,7 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
 {
     fs::path dir = scratch() / "bench";
     fs::create_directories(dir);
-    Run run = ggx("bench --methods caps,heitz --precisions fast --jobs write,furnace,world -n 2^16 "
+    Run run = ggx("bench --methods caps,heitz --precisions precise --jobs write,furnace,world -n 2^16 "
                   "--native-count 2^14 --repeats 5 --scene 2 --cell-samples 2^10 --no-startup --csv " +
                   (dir / "b.csv").string() + " --charts " + (dir / "b").string() + " --markdown " +
                   (dir / "B.md").string());
@@ -177,7 +177,7 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
     for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(csv)) {
         CAPTURE(row.line);
         CHECK(row.ns_median > 0.0);
-        device_rows += row.precision == "fast";
+        device_rows += row.precision == "precise";
         native_rows += row.precision == "native";
         ceiling_rows += row.precision == "native-vectorized";
     }
@@ -186,7 +186,7 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
     CHECK(ceiling_rows == 1);
     std::string md = read_all(dir / "B.md");
     for (const char* part : {"## Targets", "## Speed (ns per sample)", "b-speed-error.png", "b-speed-rmse.png",
-                             "| caps | fast |", "| heitz | native |", "ggx bench --methods caps,heitz"})
+                             "| caps | precise |", "| heitz | native |", "ggx bench --methods caps,heitz"})
         CHECK(md.find(part) != std::string::npos);
     for (const char* png : {"b-speed-error.png", "b-speed-rmse.png"})
         CHECK(read_all(dir / png).substr(1, 3) == "PNG");
@@ -304,7 +304,7 @@ TEST_CASE("ggx bench without its native baseline still finishes and says the bas
     fs::create_directories(dir);
     const fs::path missing = dir / "nowhere" / "ggx-native";
     Run run = ggxtest::run_ggx("GGX_NATIVE=" + missing.string() + " " + GGX_BINARY +
-                                   " bench --methods caps --precisions fast --jobs write,furnace -n 2^12 --repeats 5 "
+                                   " bench --methods caps --precisions precise --jobs write,furnace -n 2^12 --repeats 5 "
                                    "--no-accuracy --no-startup --csv " + (dir / "b.csv").string() + " --markdown " +
                                    (dir / "B.md").string(),
                                scratch() / "stderr.txt", false);
@@ -313,7 +313,7 @@ TEST_CASE("ggx bench without its native baseline still finishes and says the bas
     CHECK(run.err.find("native baseline not available") != std::string::npos);
     CHECK(run.err.find("GGX_NATIVE=" + missing.string()) != std::string::npos);
     std::string csv = read_all(dir / "b.csv");
-    CHECK(csv.find("caps,fast,write,") != std::string::npos);
+    CHECK(csv.find("caps,precise,write,") != std::string::npos);
     CHECK(csv.find(",native") == std::string::npos);  // neither native rows nor the ceiling
     CHECK(read_all(dir / "B.md").find("Native C++ baseline: not available (ggx-native not found") != std::string::npos);
     fs::remove_all(dir);

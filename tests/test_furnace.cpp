@@ -46,7 +46,7 @@ TEST_CASE("fused sums equal the sums of the stored weights, for any count")
             CAPTURE(ggxref::method_name(method));
             CAPTURE(count);
             ggxcl::SampleParams p =
-                ggxtest::to_library(method, ggxtest::make_params(0.4, 0.4, 70.0), ggxcl::Precision::fast);
+                ggxtest::to_library(method, ggxtest::make_params(0.4, 0.4, 70.0), ggxcl::Precision::precise);
             ggxcl::FurnaceSums fused = ggxtest::sampler().furnace(p, {5, 123, count});
             CHECK(fused.count == count);
             CHECK(same_sums(fused, stored_weight_sums(p, {5, 123, count})));
@@ -76,7 +76,7 @@ TEST_CASE("fused mean is the reference albedo in every precision mode")
 TEST_CASE("a view exactly opposite the normal sees nothing: the fallback weights sum to 0, not NaN")
 {
     for (Method method : {Method::heitz, Method::caps, Method::bounded}) {
-        ggxcl::SampleParams p = ggxtest::to_library(method, ggxtest::make_params(0.3, 0.3, 0.0), ggxcl::Precision::fast);
+        ggxcl::SampleParams p = ggxtest::to_library(method, ggxtest::make_params(0.3, 0.3, 0.0), ggxcl::Precision::precise);
         p.view = {0.0f, 0.0f, -1.0f};
         ggxcl::FurnaceSums fused = ggxtest::sampler().furnace(p, {5, 0, 5000});
         CAPTURE(ggxref::method_name(method));

@@ -16,7 +16,7 @@
 // a write-write race, an API error) show that this detection catches each
 // kind, and a correct kernel that it reports nothing.
 //
-// What runs: `ggx sample` for every method in precise and fast mode with
+// What runs: `ggx sample` for every method in precise and relaxed mode with
 // every field (1000 samples: three whole work-groups of 256 and a partial
 // one, so the `_tail` kernels run too; plus a view below the horizon, a
 // tilted caps-iso normal and an exact multiple of 256), `ggx histogram
@@ -25,7 +25,7 @@
 // oclgrind_driver the kernels the command line does not reach: per-sample
 // views, alphas and normals, the pdf kernel, the fused furnace (guarded and
 // unguarded), world space, a user kernel built with build_user_program, and
-// the stress kernel in fast and relaxed mode on a subset of its grid.
+// the stress kernel in relaxed mode on a subset of its grid.
 // GGXCL_PROGRAM_CACHE and XDG_CACHE_HOME point at a fresh folder per run,
 // so no binary cached by another test (or another device) is used.
 //
@@ -323,7 +323,7 @@ TEST_CASE("Oclgrind's bug: atomic_add to a buffer zeroed by clEnqueueFillBuffer 
 
 TEST_SUITE("cli")
 {
-TEST_CASE("ggx sample under Oclgrind: every method, precise and fast, every field")
+TEST_CASE("ggx sample under Oclgrind: every method, precise and relaxed, every field")
 {
     const char* methods[] = {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"};
     struct Extra {
@@ -332,9 +332,9 @@ TEST_CASE("ggx sample under Oclgrind: every method, precise and fast, every fiel
     };
     std::vector<Extra> runs;
     for (const char* method : methods)
-        for (const char* precision : {"precise", "fast"}) {
+        for (const char* precision : {"precise", "relaxed"}) {
             // Fast mode anisotropic (caps-iso is isotropic only): the general program; precise the isotropic one.
-            std::string alpha = std::string(precision) == "fast" && std::string(method) != "caps-iso" ? "0.2,0.4" : "0.3";
+            std::string alpha = std::string(precision) == "relaxed" && std::string(method) != "caps-iso" ? "0.2,0.4" : "0.3";
             runs.push_back({{"--method", method, "--precision", precision, "--alpha", alpha, "--theta", "60"}, 1000});
         }
     runs.push_back({{"--method", "caps-iso", "--normal", "0,0.6,0.8", "--theta", "30"}, 1000});  // tilted normal
@@ -358,7 +358,7 @@ TEST_CASE("ggx sample under Oclgrind: every method, precise and fast, every fiel
 TEST_CASE("ggx histogram --no-png under Oclgrind: o and m, two work-groups")
 {
     for (std::vector<std::string> extra : {std::vector<std::string>{"--method", "caps"},
-                                           std::vector<std::string>{"--method", "ndf", "--of", "m", "--precision", "fast"},
+                                           std::vector<std::string>{"--method", "ndf", "--of", "m", "--precision", "relaxed"},
                                            std::vector<std::string>{"--method", "bounded", "--alpha", "0.2,0.5"}}) {
         const fs::path prefix = scratch() / ("histogram-" + extra[1]);
         std::vector<std::string> args = {"histogram", "-n", "20000", "--bins-z", "16", "--bins-phi", "32",
@@ -443,7 +443,7 @@ TEST_CASE("a user kernel including ggx_samplers.h gives Sampler::enqueue's bits"
     check_driver("user", "1000", 6);
 }
 
-TEST_CASE("the stress kernel in fast and relaxed mode on every 16th case of the grid")
+TEST_CASE("the stress kernel in relaxed mode on every 16th case of the grid")
 {
     check_driver("stress", "16", 6 * 2);
 }

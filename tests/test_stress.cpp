@@ -72,7 +72,7 @@ bool is_vndf(ggxcl::Method method)
     return method != ggxcl::Method::ndf;
 }
 
-// Device (fast mode) and host maps of `cases`, with a label for failures.
+// Device (precise mode) and host maps of `cases`, with a label for failures.
 struct BothSides {
     ggxapp::StressMap device, host;
 };
@@ -80,7 +80,7 @@ struct BothSides {
 BothSides both_sides(ggxcl::Method method, const std::vector<ggxapp::StressCase>& cases,
                      const ggxapp::StressAxes& axes)
 {
-    return {ggxapp::device_stress_map(sampler(), method, ggxcl::Precision::fast, cases, axes),
+    return {ggxapp::device_stress_map(sampler(), method, ggxcl::Precision::precise, cases, axes),
             ggxapp::host_stress_map(method, cases, axes)};
 }
 
@@ -177,7 +177,7 @@ TEST_CASE("no NaN or Inf anywhere on the stress grid: every method, device in ev
         std::vector<ggxapp::StressCase> cases = ggxapp::stress_cases(method, axes);
         CAPTURE(ggxcl::method_name(method));
         for (ggxcl::Precision precision :
-             {ggxcl::Precision::precise, ggxcl::Precision::fast, ggxcl::Precision::relaxed}) {
+             {ggxcl::Precision::precise, ggxcl::Precision::relaxed}) {
             CAPTURE(ggxcl::precision_name(precision));
             CHECK(total(ggxapp::device_stress_map(sampler(), method, precision, cases, axes), ggxapp::nan_inf) == 0);
         }
@@ -191,7 +191,7 @@ TEST_CASE("negative control: without the guards the same grid has NaN and Inf")
     for (ggxcl::Method method : {ggxcl::Method::caps, ggxcl::Method::caps_iso}) {
         std::vector<ggxapp::StressCase> cases = ggxapp::stress_cases(method, axes);
         CAPTURE(ggxcl::method_name(method));
-        CHECK(total(ggxapp::device_stress_map(sampler(), method, ggxcl::Precision::fast, cases, axes, false),
+        CHECK(total(ggxapp::device_stress_map(sampler(), method, ggxcl::Precision::precise, cases, axes, false),
                     ggxapp::nan_inf) > 1000);
     }
 }

@@ -22,7 +22,7 @@ ggxcl::SampleParams params_of(ggxcl::Method method)
     p.alpha_x = 0.3f;
     p.alpha_y = method == ggxcl::Method::caps_iso ? 0.3f : 0.7f;
     p.view = ggxcl::view_from_angles(70, 40);
-    p.precision = ggxcl::Precision::fast;
+    p.precision = ggxcl::Precision::precise;
     return p;
 }
 

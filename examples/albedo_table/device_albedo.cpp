@@ -18,12 +18,12 @@ cl::Buffer float_buffer(const cl::Context& context, std::size_t floats)
 }
 
 // The build options that make our in-kernel sampler the runtime's program
-// for these inputs: the method, fast sincos, and for caps-iso the form for
+// for these inputs: the method, and for caps-iso the form for
 // the normal +z (the general form samples the same distribution, rounded
 // differently).
 std::string options_for(ggxcl::Method method)
 {
-    std::string options = "-DALBEDO_METHOD=" + std::to_string(static_cast<int>(method)) + " -DGGX_FAST_SINCOS=1";
+    std::string options = "-DALBEDO_METHOD=" + std::to_string(static_cast<int>(method));
     if (method == ggxcl::Method::caps_iso)
         options += " -DGGX_NORMAL_IS_Z=1";
     return options;
@@ -81,7 +81,7 @@ void DeviceAlbedo::enqueue_row(const cl::Program& program, ggxcl::Method method,
     // 2. The runtime's sampler reads them and writes the weights into our buffer, on our queue.
     ggxcl::SampleParams params;
     params.method = method;
-    params.precision = ggxcl::Precision::fast;
+    params.precision = ggxcl::Precision::precise;
     ggxcl::DeviceInputs per_sample{row_.views, row_.alphas, cl::Buffer(), true, true};
     ggxcl::DeviceOutputs outputs;
     outputs.weight = row_.weights;

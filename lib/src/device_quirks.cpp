@@ -14,9 +14,12 @@ std::string platform_name(const cl::Device& device)
 
 std::string device_quirk_options(const cl::Device& device)
 {
+    std::string options;
     if (platform_name(device).find("Oclgrind") != std::string::npos)
-        return " -DGGX_NO_RESTRICT=1";
-    return "";
+        options += " -DGGX_NO_RESTRICT=1";
+    if (!(device.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>() & CL_FP_FMA))
+        options += " -DGGX_NO_FMA=1";
+    return options;
 }
 
 bool platform_caches_programs(const cl::Device& device)

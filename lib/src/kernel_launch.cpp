@@ -16,7 +16,6 @@ std::string build_options(const SampleParams& params, unsigned write_mask, const
 {
     auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
     std::string options = "-DGGX_METHOD=" + std::to_string(static_cast<int>(params.method));
-    options += flag("GGX_FAST_SINCOS", params.precision != Precision::precise);
     if (params.precision == Precision::relaxed)
         options += " -cl-fast-relaxed-math";
     options += flag("GGX_WRITE_M", write_mask & 1u) + flag("GGX_WRITE_O", write_mask & 2u) +

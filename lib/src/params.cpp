@@ -57,7 +57,6 @@ std::string_view precision_name(Precision precision)
 {
     switch (precision) {
     case Precision::precise: return "precise";
-    case Precision::fast: return "fast";
     case Precision::relaxed: return "relaxed";
     }
     return "unknown";
@@ -65,10 +64,10 @@ std::string_view precision_name(Precision precision)
 
 Precision parse_precision(std::string_view name)
 {
-    for (Precision p : {Precision::precise, Precision::fast, Precision::relaxed})
+    for (Precision p : {Precision::precise, Precision::relaxed})
         if (precision_name(p) == name)
             return p;
-    throw InvalidArgument("precision", std::string(name), "one of precise, fast, relaxed");
+    throw InvalidArgument("precision", std::string(name), "one of precise, relaxed");
 }
 
 Vec3 unit_vector(const Vec3& v)

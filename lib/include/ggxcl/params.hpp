@@ -17,12 +17,13 @@ struct Vec3 {
 };
 
 // How the kernels compute (a build option of the program):
-//   precise - built-in sin, cos and sqrt;
-//   fast    - a short polynomial sincos of the sampling angle (max error 6.4e-7), which vectorizes;
-//   relaxed - fast plus -cl-fast-relaxed-math.
-enum class Precision { precise = 0, fast = 1, relaxed = 2 };
+//   precise - IEEE float arithmetic, sqrt and division, and the sampling
+//             angle's sine and cosine within 0.86 ulp over the whole 24-bit
+//             grid of uniforms (kernels/ggx_sincos.h); vectorizes on CPUs;
+//   relaxed - precise plus -cl-fast-relaxed-math.
+enum class Precision { precise = 0, relaxed = 1 };
 
-std::string_view precision_name(Precision precision);   // "precise", "fast", "relaxed"
+std::string_view precision_name(Precision precision);   // "precise", "relaxed"
 Precision parse_precision(std::string_view name);       // throws InvalidArgument naming the modes
 
 // Parameters shared by every sample of a batch.

@@ -157,6 +157,13 @@ std::vector<Target> speed_targets(const BenchReport& r)
                        fixed(r.startup.warm_ms.median, 0) + " ms", r.startup.warm_ms.median <= 100});
         out.push_back({"cold build <= 1.5 s per variant", fixed(r.startup.cold_ms, 0) + " ms", r.startup.cold_ms <= 1500});
     }
+    if (r.enqueue.measured)
+        out.push_back({"host time of one enqueue of " + std::to_string(r.enqueue.count) +
+                           " samples < 20 us (warm, median of " + std::to_string(r.enqueue.calls) + ")",
+                       fixed(r.enqueue.host_us.median, 1) + " us (" + fixed(r.enqueue.host_us.low, 1) + "–" +
+                           fixed(r.enqueue.host_us.high, 1) + "); a second Sampler's first: " +
+                           fixed(r.enqueue.second_sampler_first_us, 0) + " us",
+                       r.enqueue.host_us.median < 20.0});
     return out;
 }
 

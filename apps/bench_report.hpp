@@ -27,6 +27,14 @@ struct StartupTiming {
     Timing warm_ms;               // cache warm, median of runs
 };
 
+struct EnqueueTiming {
+    bool measured = false;
+    std::uint32_t count = 4096;   // samples per enqueue
+    int calls = 1000;
+    Timing host_us;               // microseconds per call, warm caches
+    double second_sampler_first_us = 0;  // first call of another Sampler on the same context
+};
+
 struct BenchReport {
     std::string command, date, machine, device;
     std::string device_clock = "event-profiled";  // how the device rows were timed (DeviceTimer)
@@ -40,6 +48,7 @@ struct BenchReport {
     Timing ceiling;               // hand-vectorized native fused caps
     std::string native_unavailable;  // why the native baseline is missing (empty: measured or --no-native)
     StartupTiming startup;
+    EnqueueTiming enqueue;
 };
 
 // 1 / (variance x seconds per sample), and the RMSE of each cell of the table

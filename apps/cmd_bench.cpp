@@ -17,6 +17,7 @@
 #include "bench_plan.hpp"
 #include "bench_report.hpp"
 #include "bench_startup.hpp"
+#include "bench_enqueue.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "plot.hpp"
@@ -171,8 +172,10 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
     measure_device(sampler, plan, cmd, report);
     if (!cmd.no_native)
         measure_native_if_available(plan, report);
-    if (!cmd.no_startup)
+    if (!cmd.no_startup) {
         report.startup = measure_startup(cmd.device, 5);
+        report.enqueue = measure_enqueue(sampler, plan.base);
+    }
     write_outputs(cmd, report);
 }
 

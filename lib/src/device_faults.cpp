@@ -3,6 +3,7 @@
 #include "device_faults.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <exception>
 #include <mutex>
@@ -51,15 +52,22 @@ InjectedFault parse_fault(const std::string& spec)
 
 // The fault the environment asks for now, and the launches counted since it
 // was set (this call's, with count_launch, included).  The value is parsed
-// when it changes; a malformed one is refused on every call.
+// when it changes; a malformed one is refused on every call.  While the
+// variable has never been set, a launch costs one getenv and no lock.
 InjectedFault current_fault(bool count_launch, std::uint64_t& launches_before)
 {
     static std::mutex mutex;
+    static std::atomic<bool> ever_set{false};
     static std::string last_spec;
     static std::exception_ptr refused;  // the InvalidArgument of a malformed value
     static InjectedFault fault;
     static std::uint64_t launches = 0;
     const char* env = std::getenv("GGXCL_INJECT_FAULT");
+    if (env == nullptr && !ever_set.load(std::memory_order_acquire)) {
+        launches_before = 0;
+        return {};
+    }
+    ever_set.store(true, std::memory_order_release);
     std::string spec = env ? env : "";
     std::lock_guard<std::mutex> lock(mutex);
     if (spec != last_spec) {

@@ -64,7 +64,8 @@ cl::Event Sampler::enqueue_furnace(cl::CommandQueue& queue, const SampleParams& 
         throw InvalidArgument("count", std::to_string(range.count), "1 .. 2^31 per enqueue_furnace");
     SampleParams unit = normalized(params);
     return detail::translate_cl_errors([&] {
-        cl::Kernel k = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, 16u, inputs));
+        KernelLease lease = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, 16u, inputs));
+        cl::Kernel& k = *lease;
         k.setArg(0, cl_ulong(range.seed));
         k.setArg(1, cl_ulong(range.first));
         k.setArg(2, cl_uint(range.count));

@@ -50,7 +50,8 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
         check_bins(bins_z, bins_phi, direction, device_.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>());
         const std::size_t bins = std::size_t(bins_z) * bins_phi;
         Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0};
-        cl::Kernel k = kernel("ggx_histogram.cl", "ggx_histogram", histogram_options(unit, bins_z, bins_phi, direction));
+        KernelLease lease = kernel("ggx_histogram.cl", "ggx_histogram", histogram_options(unit, bins_z, bins_phi, direction));
+        cl::Kernel& k = *lease;
         cl::Buffer counts = detail::device_buffer(context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
         std::vector<cl_uint> launch_counts(bins + 1);
         const std::vector<cl_uint> zeros(bins + 1, 0u);

@@ -78,13 +78,13 @@ cl::Event launch_split(cl::CommandQueue& queue, std::size_t group, const KernelM
     std::vector<cl::Event> launched;
     if (full > 0) {
         launched.emplace_back();
-        cl::Kernel whole = make(name);
-        queue.enqueueNDRangeKernel(whole, cl::NullRange, cl::NDRange(full), cl::NDRange(group), wait, &launched.back());
+        KernelLease whole = make(name);
+        queue.enqueueNDRangeKernel(*whole, cl::NullRange, cl::NDRange(full), cl::NDRange(group), wait, &launched.back());
     }
     if (full < count) {
         launched.emplace_back();
-        cl::Kernel tail = make(name + "_tail");
-        queue.enqueueNDRangeKernel(tail, cl::NDRange(full), cl::NDRange(group), cl::NDRange(group), wait,
+        KernelLease tail = make(name + "_tail");
+        queue.enqueueNDRangeKernel(*tail, cl::NDRange(full), cl::NDRange(group), cl::NDRange(group), wait,
                                    &launched.back());
     }
     if (launched.size() == 1)

@@ -31,10 +31,10 @@ std::size_t group_size(std::size_t device_max, std::size_t requested);
 
 // One work-item per sample: kernel `name` over the whole work-groups, then
 // `name`_tail (same arguments) over the last partial one with a global
-// offset; `make` creates a kernel by name with its arguments set, and only
-// the kernels a count needs are created.  Returns the event of the launch,
+// offset; `make` leases a kernel by name with its arguments set, and only
+// the kernels a count needs are leased.  Returns the event of the launch,
 // or a marker on both.
-using KernelMaker = std::function<cl::Kernel(const std::string& name)>;
+using KernelMaker = std::function<KernelLease(const std::string& name)>;
 cl::Event launch_split(cl::CommandQueue& queue, std::size_t group, const KernelMaker& make,
                        const std::string& name, std::uint32_t count, const std::vector<cl::Event>* wait);
 

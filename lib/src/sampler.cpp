@@ -49,7 +49,7 @@ Sampler::Sampler(const std::string& selector) : Sampler(select_device(selector))
 Sampler::Sampler(const DeviceInfo& device) : Sampler(translate_cl_errors([&] { return cl::Context(device.device); }), device.device) {}
 
 Sampler::Sampler(const cl::Context& context, const cl::Device& device)
-    : context_(context), device_(device), programs_(std::make_shared<ProgramCache>(context))
+    : context_(context), device_(device), programs_(ProgramCache::for_context(context))
 {
     translate_cl_errors([&] {
         queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
@@ -83,9 +83,9 @@ std::size_t Sampler::work_group_size() const
     return group_size(device_max_group_, work_group_size_);
 }
 
-cl::Kernel Sampler::kernel(const std::string& file, const std::string& name, const std::string& options)
+KernelLease Sampler::kernel(const std::string& file, const std::string& name, const std::string& options)
 {
-    return cl::Kernel(programs_->get(device_, file, options), name.c_str());
+    return programs_->kernel(device_, file, options, name);
 }
 
 cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
@@ -102,7 +102,8 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
     return translate_cl_errors([&] {
         std::string options = build_options(unit, mask, inputs);
         auto make = [&](const std::string& name) {
-            cl::Kernel k = kernel(bulk_file, name, options);
+            KernelLease lease = kernel(bulk_file, name, options);
+            cl::Kernel& k = *lease;
             k.setArg(0, cl_ulong(range.seed));
             k.setArg(1, cl_ulong(range.first));
             k.setArg(2, cl_uint(range.count));
@@ -111,9 +112,38 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
             const cl::Buffer* buffers[] = {&outputs.m, &outputs.o, &outputs.pdf_m, &outputs.pdf_o, &outputs.weight};
             for (cl_uint b = 0; b < 5; ++b)
                 k.setArg(15 + b, *buffers[b]);
-            return k;
+            return lease;
         };
         return launch_split(queue, work_group_size(), make, "ggx_sample_bulk", cl_uint(range.count), wait);
+    });
+}
+
+void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceInputs& inputs)
+{
+    if (fields.empty())
+        throw InvalidArgument("fields", "none", "at least one field to warm up (m, o, pdf_m, pdf_o or weight)");
+    // One whole work-group and a tail: both kernels of launch_split.
+    const std::uint32_t count = std::uint32_t(work_group_size() + 1);
+    translate_cl_errors([&] {
+        auto floats = [&](std::size_t planes, const float* fill) {
+            std::vector<float> values(planes * count);
+            for (std::size_t j = 0; j < values.size(); ++j)
+                values[j] = fill[j / count];
+            return cl::Buffer(context_, values.begin(), values.end(), false);
+        };
+        const float unit_z[] = {0.0f, 0.0f, 1.0f}, half[] = {0.5f, 0.5f}, zero[] = {0.0f, 0.0f, 0.0f};
+        DeviceInputs scratch_inputs = inputs;
+        if (inputs.view() != nullptr) scratch_inputs.view = floats(3, unit_z);
+        if (inputs.alpha() != nullptr) scratch_inputs.alpha = floats(2, half);
+        if (inputs.normal() != nullptr) scratch_inputs.normal = floats(3, unit_z);
+        DeviceOutputs outputs;
+        cl::Buffer* targets[] = {&outputs.m, &outputs.o, &outputs.pdf_m, &outputs.pdf_o, &outputs.weight};
+        const Field order[] = {Field::m, Field::o, Field::pdf_m, Field::pdf_o, Field::weight};
+        for (int f = 0; f < 5; ++f)
+            if (fields.has(order[f]))
+                *targets[f] = floats(f < 2 ? 3 : 1, zero);
+        enqueue(queue_, params, {0, 0, count}, outputs, 0, scratch_inputs).wait();
+        return 0;
     });
 }
 
@@ -127,13 +157,14 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
     return translate_cl_errors([&] {
         std::string options = build_options(unit, 0, inputs);
         auto make = [&](const std::string& name) {
-            cl::Kernel k = kernel(bulk_file, name, options);
+            KernelLease lease = kernel(bulk_file, name, options);
+            cl::Kernel& k = *lease;
             k.setArg(0, cl_uint(count));
             k.setArg(1, cl_uint(stride ? stride : count));
             set_param_args(k, 2, unit, inputs);
             k.setArg(13, directions);
             k.setArg(14, pdf_out);
-            return k;
+            return lease;
         };
         return launch_split(queue, work_group_size(), make, "ggx_pdf_bulk", count, wait);
     });

@@ -127,6 +127,15 @@ public:
                       const DeviceOutputs& outputs, std::uint32_t stride = 0,
                       const DeviceInputs& inputs = {}, const std::vector<cl::Event>* wait = nullptr);
 
+    // Builds the program variant that generate() and enqueue() use for
+    // `params` with `fields` written (and per-sample inputs of the kinds and
+    // promises `inputs` has; their contents are not read) and runs its
+    // kernels once on a few samples into scratch buffers, so that a driver
+    // that compiles at first launch (PoCL) is done too: the first frame then
+    // pays no build.  Variants are shared by every Sampler on this context;
+    // repeated calls cost one tiny launch.
+    void warm_up(const SampleParams& params, FieldSet fields, const DeviceInputs& inputs = {});
+
     // Enqueues pdf evaluation of `count` directions (planar, 3 planes) into `pdf_out`.
     cl::Event enqueue_pdf(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
                           const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride = 0,
@@ -162,7 +171,7 @@ public:
 private:
     void add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,
                             std::vector<float>& host, FurnaceSums& total);
-    cl::Kernel kernel(const std::string& file, const std::string& name, const std::string& options);
+    KernelLease kernel(const std::string& file, const std::string& name, const std::string& options);
 
     cl::Context context_;
     cl::Device device_;

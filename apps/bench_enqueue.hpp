@@ -1,0 +1,16 @@
+// bench_enqueue.hpp - the host cost of a small batch: one Sampler::enqueue
+// of 4096 caps samples (m and pdf_m into the caller's buffers) with every
+// cache warm, timed from call to return, the median of 1000 calls; the
+// queue is drained between calls, outside the timing.  Also the first
+// enqueue on a second Sampler of the same context (its programs shared).
+#pragma once
+
+#include <ggxcl/ggxcl.hpp>
+
+#include "bench_report.hpp"
+
+namespace ggxapp {
+
+EnqueueTiming measure_enqueue(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params);
+
+} // namespace ggxapp

@@ -65,7 +65,7 @@ nlohmann::json describe_sampling(const ggxcl::SampleParams& p, double theta_degr
     doc["seed"] = range.seed;
     doc["first"] = range.first;
     doc["count"] = range.count;
-    doc["generator"] = "Philox4x32-10, key (seed lo, seed hi), counter (index lo, index hi, 0, 0)";
+    doc["generator"] = "Philox2x32-10, key seed, counter (index lo, index hi); u1 word 0, u2 word 1";
     doc["ggxcl_version"] = ggxcl::version();
     return doc;
 }

@@ -13,7 +13,7 @@ void SampleOptions::add_view_options(CLI::App& cmd)
     cmd.add_option("--theta", theta, "view polar angle in degrees, 0..180 (above 90: below the horizon)")
         ->capture_default_str();
     cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360")->capture_default_str();
-    cmd.add_option("--seed", seed, "seed of the Philox stream, 0..2^64-1")->capture_default_str();
+    cmd.add_option("--seed", seed, "seed of the Philox stream, 0..2^32-1")->capture_default_str();
     cmd.add_option("--precision", precision, "precise (IEEE arithmetic, sincos within 0.86 ulp) or relaxed "
                                              "(precise and -cl-fast-relaxed-math)")
         ->capture_default_str();
@@ -43,7 +43,7 @@ ggxcl::Method SampleOptions::parsed_method() const
     }
 }
 
-std::uint64_t SampleOptions::parsed_seed() const { return parse_uint64("--seed", seed); }
+std::uint64_t SampleOptions::parsed_seed() const { return parse_whole("--seed", seed, 0, ggxcl::max_seed); }
 ggxcl::SampleRange SampleOptions::parsed_range(const std::string& first, const std::string& count) const
 {
     ggxcl::SampleRange range{parsed_seed(), parse_uint64("--first", first), parse_count("-n", count)};

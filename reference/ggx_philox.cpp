@@ -1,4 +1,4 @@
-// ggx_philox.cpp - the counter-based uniforms shared by host and device: Random123 Philox4x32-10
+// ggx_philox.cpp - the counter-based uniforms shared by host and device: Random123 Philox2x32-10
 // keyed by the seed and counting the sample index, top 24 bits of a word as a float-exact uniform.
 #include <Random123/philox.h>
 
@@ -6,25 +6,25 @@
 
 namespace ggxref {
 
-std::array<uint32_t, 4> philox4x32_10(const std::array<uint32_t, 4>& counter, const std::array<uint32_t, 2>& key)
+std::array<uint32_t, 2> philox2x32_10(const std::array<uint32_t, 2>& counter, uint32_t key)
 {
-    r123::Philox4x32_R<10> rng;
-    const r123::Philox4x32_R<10>::ctr_type c = {{counter[0], counter[1], counter[2], counter[3]}};
-    const r123::Philox4x32_R<10>::key_type k = {{key[0], key[1]}};
+    r123::Philox2x32_R<10> rng;
+    const r123::Philox2x32_R<10>::ctr_type c = {{counter[0], counter[1]}};
+    const r123::Philox2x32_R<10>::key_type k = {{key}};
     const auto r = rng(c, k);
-    return {r[0], r[1], r[2], r[3]};
+    return {r[0], r[1]};
 }
 
-std::array<uint32_t, 4> philox_words(uint64_t seed, uint64_t index)
+std::array<uint32_t, 2> philox_words(uint32_t seed, uint64_t index)
 {
-    return philox4x32_10({uint32_t(index), uint32_t(index >> 32), 0u, 0u}, {uint32_t(seed), uint32_t(seed >> 32)});
+    return philox2x32_10({uint32_t(index), uint32_t(index >> 32)}, seed);
 }
 
 // u = (w >> 8) 2^-24: exact in float, in [0, 1 - 2^-24].
 std::array<double, 2> uniforms(uint64_t seed, uint64_t index)
 {
     constexpr double scale = 1.0 / 16777216.0;
-    const auto w = philox_words(seed, index);
+    const auto w = philox_words(uint32_t(seed), index);
     return {double(w[0] >> 8) * scale, double(w[1] >> 8) * scale};
 }
 

@@ -53,10 +53,11 @@ double D_iso(const Vec3& m, const Vec3& n, double alpha);
 double t_iso(const Vec3& w, const Vec3& n, double alpha);
 double G2_height_correlated_iso(const Vec3& i, const Vec3& o, const Vec3& n, double alpha);
 
-// Uniforms: Random123 Philox4x32-10, key = {seed lo, seed hi}, counter = {index lo, index hi, 0, 0};
-// u1 = (w0 >> 8) 2^-24, u2 = (w1 >> 8) 2^-24.
-std::array<uint32_t, 4> philox4x32_10(const std::array<uint32_t, 4>& counter, const std::array<uint32_t, 2>& key);
-std::array<uint32_t, 4> philox_words(uint64_t seed, uint64_t index);
+// Uniforms: Random123 Philox2x32-10, key = seed, counter = {index lo, index hi};
+// u1 = (w0 >> 8) 2^-24, u2 = (w1 >> 8) 2^-24.  Seeds are 32-bit (the library refuses larger
+// ones); uniforms() uses the low 32 bits of its seed.
+std::array<uint32_t, 2> philox2x32_10(const std::array<uint32_t, 2>& counter, uint32_t key);
+std::array<uint32_t, 2> philox_words(uint32_t seed, uint64_t index);
 std::array<double, 2> uniforms(uint64_t seed, uint64_t index);
 
 }  // namespace ggxref

@@ -112,6 +112,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"sample --method caps -n 0" + out, "-n"},
         {"sample --method caps -n -5" + out, "-n"},
         {"sample --method caps -n ten" + out, "-n"},
+        {"sample --method caps -n 10 --seed 4294967296" + out, "--seed"},  // the 32-bit key of Philox2x32
         {"sample --method caps -n 2^63 --first 18446744073709551615" + out, "-n"},  // found by fuzz_cli
         {"sample --method caps -n 10 --fields m,x" + out, "--fields"},
         {"sample --method caps --normal 0,0,1 -n 10" + out, "--normal"},

@@ -56,7 +56,7 @@ std::string label(const Case& c)
            std::to_string(c.params.normal.z) + " options '" + c.user_options + "'";
 }
 
-const ggxcl::SampleRange test_range{0x1234abcd5678ull, (1ull << 33) + 17, 3001};
+const ggxcl::SampleRange test_range{0xabcd5678ull, (1ull << 33) + 17, 3001};
 
 } // namespace
 
@@ -177,7 +177,7 @@ TEST_CASE("the name check sees the headers' real names")
 {
     const std::vector<std::string> names = ggxtest::defined_names(ggxcl::kernel_source("ggx_world.h"));
     auto has = [&](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
-    for (const char* expected : {"GGX_INLINE", "GGX_METHOD_CAPS", "GGX_PHILOX_M0", "ggx_vec3", "ggx_sample",
+    for (const char* expected : {"GGX_INLINE", "GGX_METHOD_CAPS", "GGX_PHILOX_M", "ggx_vec3", "ggx_sample",
                                  "ggx_basis", "ggx_uniforms", "ggx_sample_caps", "ggx_pdf_method", "ggx_G2",
                                  "ggx_sample_world"})
         CHECK_MESSAGE(has(expected), expected);

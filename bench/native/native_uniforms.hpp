@@ -1,5 +1,5 @@
 // native_uniforms.hpp - the two uniforms of sample `index` in stream `seed`: Random123
-// Philox4x32-10 with key = {seed lo, seed hi} and counter = {index lo, index hi, 0, 0}; each
+// Philox2x32-10 with key = seed (32 bits) and counter = {index lo, index hi}; each
 // uniform is the top 24 bits of a word times 2^-24 (exact in float, in [0, 1)).  The same stream
 // as the kernels (ggx_philox.h) and the reference (ggxref::uniforms).
 #pragma once
@@ -18,10 +18,10 @@ inline float word_to_unit(std::uint32_t word) { return float(word >> 8) * 5.9604
 
 inline Uniforms uniforms(std::uint64_t seed, std::uint64_t index)
 {
-    using Philox = r123::Philox4x32_R<10>;
+    using Philox = r123::Philox2x32_R<10>;
     Philox philox;
-    Philox::ctr_type counter = {{std::uint32_t(index), std::uint32_t(index >> 32), 0u, 0u}};
-    Philox::key_type key = {{std::uint32_t(seed), std::uint32_t(seed >> 32)}};
+    Philox::ctr_type counter = {{std::uint32_t(index), std::uint32_t(index >> 32)}};
+    Philox::key_type key = {{std::uint32_t(seed)}};
     Philox::ctr_type words = philox(counter, key);
     return {word_to_unit(words[0]), word_to_unit(words[1])};
 }

@@ -1,6 +1,6 @@
 // native_vectorized.cpp - the hand-vectorized "ceiling" of the native baseline: the white-furnace
 // weight sum of isotropic caps sampling (Dupuy & Benyoub 2023) with 16-lane GCC vector extensions
-// (AVX-512 when the target has it), Philox4x32-10 on vectors, the minimax sincos of
+// (AVX-512 when the target has it), Philox2x32-10 on vectors, the reduced sincos of
 // kernels/ggx_sincos.h, nothing written.  Same uniforms and weights as the scalar
 // run(caps, furnace_sum), up to float rounding.
 #include <cmath>
@@ -48,21 +48,15 @@ void mulhilo(vuint a, std::uint32_t m, vuint& lo, vuint& hi)
     hi = (vuint)((even >> 32) | (odd & 0xffffffff00000000ull));
 }
 
-// Philox4x32-10 (Salmon et al. 2011) on 16 counters {c0, c1, 0, 0} with one key; returns the
-// first two output words.
-void philox_words(vuint c0, vuint c1, std::uint32_t k0, std::uint32_t k1, vuint& w0, vuint& w1)
+// Philox2x32-10 (Salmon et al. 2011) on 16 counters {c0, c1} with one key; returns both words.
+void philox_words(vuint c0, vuint c1, std::uint32_t key, vuint& w0, vuint& w1)
 {
-    vuint c2 = vuint{}, c3 = vuint{};
     for (int round = 0; round < 10; ++round) {
-        vuint lo0, hi0, lo1, hi1;
-        mulhilo(c0, 0xD2511F53u, lo0, hi0);
-        mulhilo(c2, 0xCD9E8D57u, lo1, hi1);
-        c0 = hi1 ^ c1 ^ k0;
-        c2 = hi0 ^ c3 ^ k1;
-        c1 = lo1;
-        c3 = lo0;
-        k0 += 0x9E3779B9u;
-        k1 += 0xBB67AE85u;
+        vuint lo, hi;
+        mulhilo(c0, 0xD256D193u, lo, hi);
+        c0 = hi ^ c1 ^ key;
+        c1 = lo;
+        key += 0x9E3779B9u;
     }
     w0 = c0;
     w1 = c1;
@@ -71,25 +65,26 @@ void philox_words(vuint c0, vuint c1, std::uint32_t k0, std::uint32_t k1, vuint&
 // The top 24 bits of each word times 2^-24.
 vfloat word_to_unit(vuint w) { return __builtin_convertvector((vint)(w >> 8), vfloat) * 5.9604644775390625e-8f; }
 
-// sin(2 pi u), cos(2 pi u) for u in [0, 1): x = 2 pi (u - 1/2), sin = -x S(x^2), cos = -C(x^2)
-// (the fast form of kernels/ggx_sincos.h, same coefficients).
+// sin(2 pi u), cos(2 pi u) for u in [0, 1] as kernels/ggx_sincos.h computes them (same
+// reduction and coefficients): q = 4u, j = rint(q), f = q - j exact; polynomials in f^2 for the
+// quarter turn (pi/2) f, then the pair swapped and negated by j mod 4.
 void sincos_2pi(vfloat u, vfloat& s, vfloat& c)
 {
-    const vfloat x = 6.28318530717958647692f * (u - 0.5f);
-    const vfloat t = x * x;
-    vfloat ps = 2.708831159e-06f + t * -2.069813466e-08f;
-    ps = -1.981763099e-04f + t * ps;
-    ps = 8.332791503e-03f + t * ps;
-    ps = -1.666662111e-01f + t * ps;
-    ps = 9.999999378e-01f + t * ps;
-    vfloat pc = -2.707903082e-07f + t * 1.724509174e-09f;
-    pc = 2.476988356e-05f + t * pc;
-    pc = -1.388780360e-03f + t * pc;
-    pc = 4.166648922e-02f + t * pc;
-    pc = -4.999998910e-01f + t * pc;
-    pc = 9.999999891e-01f + t * pc;
-    s = -x * ps;
-    c = -pc;
+    const vfloat q = 4.0f * u;
+    vfloat j;
+    for (int l = 0; l < lanes; ++l)
+        j[l] = std::nearbyint(q[l]);
+    const vfloat f = q - j, x = f * f;
+    vfloat ps = (-4.602149129e-03f * x + 7.968020439e-02f) * x - 6.459634900e-01f;
+    ps = x * ps - 4.371138829e-08f;
+    const vfloat sf = f * 1.570796371e+00f + f * ps;
+    const vfloat pc = ((9.067399078e-04f * x - 2.086152695e-02f) * x + 2.536692619e-01f) * x - 1.233700514e+00f;
+    const vfloat cf = pc * x + 1.0f;
+    const vint quarter = __builtin_convertvector(j, vint);
+    const vint odd = (quarter & 1) != 0, negate_s = (quarter & 2) != 0, negate_c = ((quarter + 1) & 2) != 0;
+    const vfloat s_turned = odd ? cf : sf, c_turned = odd ? sf : cf;
+    s = negate_s ? -s_turned : s_turned;
+    c = negate_c ? -c_turned : c_turned;
 }
 
 // What every sample of one view shares: alpha, i, t(i), the stretched view v and the weight
@@ -138,7 +133,7 @@ double block_sum(std::uint64_t seed, const View& w, std::uint64_t begin, std::ui
         const vuint c0 = std::uint32_t(base) + iota;
         const vuint c1 = std::uint32_t(base >> 32) - (vuint)(c0 < std::uint32_t(base));  // carry
         vuint w0, w1;
-        philox_words(c0, c1, std::uint32_t(seed), std::uint32_t(seed >> 32), w0, w1);
+        philox_words(c0, c1, std::uint32_t(seed), w0, w1);
         const vfloat weights = caps_weights(w, word_to_unit(w0), word_to_unit(w1));
         const vint inside = (vint)iota < vint{} + int(end - base < lanes ? end - base : lanes);
         sum += inside ? weights : splat(0.0f);

@@ -139,6 +139,9 @@ SampleParams normalized(const SampleParams& params)
 
 void validate(const SampleRange& range)
 {
+    if (range.seed > max_seed)
+        throw InvalidArgument("seed", std::to_string(range.seed),
+                              "0 .. 2^32 - 1 = " + std::to_string(max_seed) + " (the 32-bit key of Philox2x32-10)");
     if (range.count == 0)
         throw InvalidArgument("count", "0", "at least 1 sample");
     if (range.count > std::numeric_limits<std::uint64_t>::max() - range.first)

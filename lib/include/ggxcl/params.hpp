@@ -51,7 +51,11 @@ struct SampleParams {
 bool uses_normal(const SampleParams& params);
 
 // Samples first .. first+count-1 of the stream `seed`.  Sample k depends on
-// (seed, k) alone, so any split into ranges gives the same values.
+// (seed, k) alone, so any split into ranges gives the same values: its
+// uniforms are the two words of Philox2x32-10 with key seed and counter k
+// (u1 from word 0, u2 from word 1, each its top 24 bits times 2^-24).
+// Seeds are 0 .. max_seed (the generator's key is one 32-bit word).
+inline constexpr std::uint64_t max_seed = 0xffffffffull;
 struct SampleRange {
     std::uint64_t seed = 0;
     std::uint64_t first = 0;

@@ -2,29 +2,40 @@
 // writes the JSON sidecar.
 #include "sample_job.hpp"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
 #include "cli_values.hpp"
 #include "progress.hpp"
+#include "writer_thread.hpp"
 
 namespace ggxapp {
 
 namespace {
 
-// The chunk's requested fields as rows (count x columns), in `fields` order.
-std::vector<float> interleave(const ggxcl::SampleSet& chunk, const std::vector<ggxcl::Field>& fields,
-                              std::size_t columns)
+// The chunk's requested fields as rows (count x columns), in `fields` order,
+// into `rows`: block by block of rows, so that the rows being filled and the
+// plane segments read stay in cache.
+void interleave(const ggxcl::SampleView& chunk, const std::vector<ggxcl::Field>& fields, std::size_t columns,
+                std::vector<float>& rows)
 {
-    std::vector<float> rows(chunk.count * columns);
-    std::size_t column = 0;
-    for (ggxcl::Field field : fields) {
-        const std::vector<float>& planes = chunk.column_source(field);
-        for (int c = 0; c < ggxcl::field_columns(field); ++c, ++column)
-            for (std::size_t j = 0; j < chunk.count; ++j)
-                rows[j * columns + column] = planes[c * chunk.count + j];
+    constexpr std::size_t block = 2048;
+    rows.resize(chunk.count * columns);
+    std::vector<const float*> planes;
+    for (ggxcl::Field field : fields)
+        for (int c = 0; c < ggxcl::field_columns(field); ++c)
+            planes.push_back(chunk.column_source(field) + c * chunk.stride);
+    for (std::size_t first = 0; first < chunk.count; first += block) {
+        const std::size_t last = std::min<std::size_t>(chunk.count, first + block);
+        for (std::size_t column = 0; column < columns; ++column) {
+            const float* plane = planes[column];
+            float* out = rows.data() + column;
+            for (std::size_t j = first; j < last; ++j)
+                out[j * columns] = plane[j];
+        }
     }
-    return rows;
 }
 
 std::string device_names(const std::vector<ggxcl::Sampler*>& samplers)
@@ -113,14 +124,22 @@ void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJo
     std::unique_ptr<SampleWriter> writer = make_writer(job.format, job.out, job.range.count, column_names(job.fields));
     AtomicFile json_file(sidecar_path(job.out));  // opened now: fail before sampling if unwritable
     Progress progress(job.out, job.range.count);
-    auto write_chunk = [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
-        writer->append(interleave(chunk, job.fields, columns));
+    WriterThread writing(*writer);  // the file is written while the next chunk is drawn
+    auto write_chunk = [&](const ggxcl::SampleView& chunk, std::uint64_t offset) {
+        std::vector<float> rows = writing.take_buffer();
+        interleave(chunk, job.fields, columns, rows);
+        writing.append(std::move(rows));
         progress.advance(offset + chunk.count);
     };
+    const ggxcl::FieldSet fields(job.fields);
     if (samplers.size() == 1)
-        samplers.front()->generate_chunks(job.params, job.range, ggxcl::FieldSet(job.fields), write_chunk);
+        samplers.front()->generate_chunk_views(job.params, job.range, fields, write_chunk);
     else
-        ggxcl::generate_split(samplers, job.params, job.range, ggxcl::FieldSet(job.fields), write_chunk);
+        ggxcl::generate_split(samplers, job.params, job.range, fields,
+                              [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
+                                  write_chunk(ggxcl::view_of(chunk), offset);
+                              });
+    writing.finish();
     std::string text = sidecar(samplers, job).dump(2) + "\n";
     json_file.write(text.data(), text.size());
     writer->commit();

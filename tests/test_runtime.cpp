@@ -45,6 +45,35 @@ TEST_CASE("results are bit-identical whatever the chunk size")
     s.set_chunk_size(saved);
 }
 
+TEST_CASE("chunk views (mapped on CPU devices) give generate's samples, chunk by chunk in order")
+{
+    ggxcl::Sampler& s = ggxtest::sampler();
+    const std::uint64_t saved = s.chunk_size(), count = 10007;
+    ggxcl::SampleParams p = test_params(ggxcl::Method::bounded);
+    ggxcl::SampleSet whole = s.generate(p, {5, 123, count}, ggxcl::FieldSet::all());
+    s.set_chunk_size(4099);
+    ggxcl::SampleSet gathered;
+    gathered.count = count;
+    std::vector<float>* parts[] = {&gathered.m, &gathered.o, &gathered.pdf_m, &gathered.pdf_o, &gathered.weight};
+    std::uint64_t expected_offset = 0;
+    int chunks = 0;
+    s.generate_chunk_views(p, {5, 123, count}, ggxcl::FieldSet::all(), [&](const ggxcl::SampleView& v, std::uint64_t offset) {
+        CHECK(offset == expected_offset);
+        CHECK(v.stride >= v.count);
+        for (ggxcl::Field f : ggxcl::all_fields) {
+            parts[int(f)]->resize(ggxcl::field_columns(f) * count);
+            for (int c = 0; c < ggxcl::field_columns(f); ++c)
+                std::copy_n(v.column_source(f) + c * v.stride, v.count, parts[int(f)]->data() + c * count + offset);
+        }
+        expected_offset += v.count;
+        ++chunks;
+    });
+    s.set_chunk_size(saved);
+    CHECK(chunks == 3);
+    CHECK(expected_offset == count);
+    CHECK(same_bits(whole, gathered));
+}
+
 TEST_CASE("consecutive ranges concatenate to the whole range")
 {
     ggxcl::SampleParams p = test_params();

@@ -88,6 +88,101 @@ void read_planes(cl::CommandQueue& queue, const cl::Buffer& buffer, int planes, 
         queue.enqueueReadBuffer(buffer, CL_FALSE, bytes(c * capacity), bytes(n), host.data() + c * n);
 }
 
+// Waits for everything on the queue when it goes out of scope, so that no
+// copy into a host vector is in flight when the vector is freed (a sink or
+// a launch that throws leaves commands behind).
+struct QueueDrain {
+    cl::CommandQueue& queue;
+    ~QueueDrain()
+    {
+        try {
+            queue.finish();
+        } catch (...) {  // a lost device: nothing more will run
+        }
+    }
+};
+
+// One of the two chunk slots of run_chunks: device outputs, and either
+// their host copies or (mapped) pointers into them, with the marker that
+// says the copies or maps are complete.
+class ChunkSlot {
+public:
+    ChunkSlot(const cl::Context& context, FieldSet fields, std::uint64_t capacity, bool map)
+        : fields_(fields), capacity_(capacity), map_(map)
+    {
+        for (Field f : all_fields)
+            if (fields.has(f))
+                buffer(f) = detail::device_buffer(context, map ? CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR : CL_MEM_WRITE_ONLY,
+                                                  bytes(field_columns(f) * capacity));
+    }
+
+    DeviceOutputs& outputs() { return out_; }
+    const SampleSet& host_copy() const { return host_; }
+    std::uint64_t start = 0;
+
+    // Enqueues the copy (or map) of the first n samples after the kernel.
+    void fetch(cl::CommandQueue& queue, std::uint64_t n)
+    {
+        count_ = n;
+        host_.count = n;
+        for (Field f : all_fields) {
+            if (!fields_.has(f))
+                continue;
+            if (map_)
+                mapped_[int(f)] = static_cast<float*>(
+                    queue.enqueueMapBuffer(buffer(f), CL_FALSE, CL_MAP_READ, 0, bytes(field_columns(f) * capacity_)));
+            else
+                read_planes(queue, buffer(f), field_columns(f), n, capacity_, host(f));
+        }
+        queue.enqueueMarkerWithWaitList(nullptr, &ready_);
+        queue.flush();
+    }
+
+    // Waits for the fetch and describes the chunk.
+    SampleView view()
+    {
+        ready_.wait();
+        SampleView v;
+        v.count = count_;
+        v.stride = map_ ? capacity_ : count_;
+        const float** fields[] = {&v.m, &v.o, &v.pdf_m, &v.pdf_o, &v.weight};
+        for (Field f : all_fields)
+            if (fields_.has(f))
+                *fields[int(f)] = map_ ? mapped_[int(f)] : host(f).data();
+        return v;
+    }
+
+    // After the sink: the maps are given back before the buffers are written again.
+    void release(cl::CommandQueue& queue)
+    {
+        if (!map_)
+            return;
+        for (Field f : all_fields)
+            if (fields_.has(f))
+                queue.enqueueUnmapMemObject(buffer(f), mapped_[int(f)]);
+    }
+
+private:
+    cl::Buffer& buffer(Field f)
+    {
+        cl::Buffer* buffers[] = {&out_.m, &out_.o, &out_.pdf_m, &out_.pdf_o, &out_.weight};
+        return *buffers[int(f)];
+    }
+    std::vector<float>& host(Field f)
+    {
+        std::vector<float>* hosts[] = {&host_.m, &host_.o, &host_.pdf_m, &host_.pdf_o, &host_.weight};
+        return *hosts[int(f)];
+    }
+
+    FieldSet fields_;
+    std::uint64_t capacity_, count_ = 0;
+    bool map_;
+    DeviceOutputs out_;
+    SampleSet host_;
+    float* mapped_[5] = {};
+    cl::Event ready_;
+};
+
 // The chunk capacity: the requested one, within the count, and small enough
 // that a buffer of `planes` planes fits the device's largest allocation.
 std::uint64_t fitted_capacity(const cl::Device& device, std::uint64_t requested, std::uint64_t count, int planes)
@@ -98,8 +193,25 @@ std::uint64_t fitted_capacity(const cl::Device& device, std::uint64_t requested,
 
 } // namespace
 
-void Sampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
-                              const ChunkSink& sink, const PerSampleInputs& per_sample)
+const float* SampleView::column_source(Field field) const
+{
+    const float* fields[] = {m, o, pdf_m, pdf_o, weight};
+    return fields[int(field)];
+}
+
+SampleView view_of(const SampleSet& set)
+{
+    SampleView v;
+    v.count = set.count;
+    v.stride = set.count;
+    const float** fields[] = {&v.m, &v.o, &v.pdf_m, &v.pdf_o, &v.weight};
+    for (Field f : all_fields)
+        *fields[int(f)] = set.column_source(f).empty() ? nullptr : set.column_source(f).data();
+    return v;
+}
+
+void Sampler::run_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                         const PerSampleInputs& per_sample, bool map, const ChunkDelivery& deliver)
 {
     validate(params);
     validate(range);
@@ -109,30 +221,51 @@ void Sampler::generate_chunks(const SampleParams& params, const SampleRange& ran
     translate_cl_errors([&] {
         std::uint64_t start = 0, chunk = fitted_capacity(device_, chunk_size_, range.count, 3);
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
-            DeviceOutputs out;
-            cl::Buffer* buffers[] = {&out.m, &out.o, &out.pdf_m, &out.pdf_o, &out.weight};
-            for (Field f : all_fields)
-                if (fields.has(f))
-                    *buffers[int(f)] =
-                        detail::device_buffer(context_, CL_MEM_WRITE_ONLY, bytes(field_columns(f) * capacity));
+            // Two slots: the device draws and fetches chunk k + 1 while the sink takes chunk k.
+            ChunkSlot slots[2] = {ChunkSlot(context_, fields, capacity, map), ChunkSlot(context_, fields, capacity, map)};
             ChunkInputs inputs(context_, per_sample, params, capacity);
-            SampleSet chunk;
-            std::vector<float>* hosts[] = {&chunk.m, &chunk.o, &chunk.pdf_m, &chunk.pdf_o, &chunk.weight};
-            for (; start < range.count; start += chunk.count) {  // start: the first sample not delivered
-                std::uint64_t n = std::min(capacity, range.count - start);
-                inputs.upload(queue_, per_sample, start, n, capacity);
-                enqueue(queue_, params, {range.seed, range.first + start, n}, out, std::uint32_t(capacity),
-                        inputs.buffers);
-                chunk.count = n;
-                for (Field f : all_fields)
-                    if (fields.has(f))
-                        read_planes(queue_, *buffers[int(f)], field_columns(f), n, capacity, *hosts[int(f)]);
-                queue_.finish();
-                sink(chunk, start);
+            QueueDrain drain{queue_};      // before the slots go, whatever ends the pass
+            std::uint64_t next = start;    // the first sample not yet enqueued
+            ChunkSlot* pending = nullptr;  // enqueued, not yet delivered
+            for (int k = 0; start < range.count; ++k) {  // start: the first sample not delivered
+                ChunkSlot* slot = nullptr;
+                if (next < range.count) {
+                    slot = &slots[k % 2];  // its previous chunk was delivered and released in the last round
+                    std::uint64_t n = std::min(capacity, range.count - next);
+                    // Blocking, on the in-order queue: after the previous chunk's kernel has read them.
+                    inputs.upload(queue_, per_sample, next, n, capacity);
+                    enqueue(queue_, params, {range.seed, range.first + next, n}, slot->outputs(),
+                            std::uint32_t(capacity), inputs.buffers);
+                    slot->start = next;
+                    slot->fetch(queue_, n);
+                    next += n;
+                }
+                if (pending) {
+                    SampleView view = pending->view();
+                    deliver(view, map ? nullptr : &pending->host_copy(), pending->start);
+                    pending->release(queue_);
+                    start = pending->start + view.count;
+                }
+                pending = slot;
             }
         });
         return 0;
     });
+}
+
+void Sampler::generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                                   const ChunkViewSink& sink, const PerSampleInputs& per_sample)
+{
+    const bool shared = translate_cl_errors([&] { return device_.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>() == CL_TRUE; });
+    run_chunks(params, range, fields, per_sample, shared,
+               [&](const SampleView& view, const SampleSet*, std::uint64_t offset) { sink(view, offset); });
+}
+
+void Sampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                              const ChunkSink& sink, const PerSampleInputs& per_sample)
+{
+    run_chunks(params, range, fields, per_sample, false,
+               [&](const SampleView&, const SampleSet* copy, std::uint64_t offset) { sink(*copy, offset); });
 }
 
 SampleSet Sampler::generate(const SampleParams& params, const SampleRange& range, FieldSet fields,

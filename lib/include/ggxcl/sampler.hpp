@@ -33,6 +33,17 @@ struct SampleSet {
     const std::vector<float>& column_source(Field field) const;
 };
 
+// A chunk of samples in memory the Sampler owns, valid only during the call
+// that receives it: planar like SampleSet but with planes `stride` floats
+// apart (m[c * stride + j] is component c of sample j); fields not
+// requested are null.
+struct SampleView {
+    std::uint64_t count = 0, stride = 0;
+    const float *m = nullptr, *o = nullptr, *pdf_m = nullptr, *pdf_o = nullptr, *weight = nullptr;
+    const float* column_source(Field field) const;
+};
+SampleView view_of(const SampleSet& set);  // its fields, stride = count
+
 // Per-sample parameters in the caller's buffers, planar with the stride of
 // the call: view and normal 3 planes (unit vectors), alpha 2 planes
 // (alpha_x, alpha_y).  A default-constructed buffer means "uniform".
@@ -116,6 +127,15 @@ public:
     void generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
                          const ChunkSink& sink, const PerSampleInputs& per_sample = {});
 
+    // The same without a copy where the device shares host memory (CPU
+    // devices: CL_DEVICE_HOST_UNIFIED_MEMORY): each chunk is the device
+    // buffers themselves, mapped for reading; elsewhere it is read into
+    // host memory first.  Either way the next chunk is drawn while `sink`
+    // runs.  Same values as generate_chunks.
+    using ChunkViewSink = std::function<void(const SampleView& chunk, std::uint64_t offset)>;
+    void generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                              const ChunkViewSink& sink, const PerSampleInputs& per_sample = {});
+
     // The pdf of each direction o (per steradian) for the sampler of params.method.
     std::vector<float> pdf(const SampleParams& params, const std::vector<Vec3>& directions,
                            const PerSampleInputs& per_sample = {});
@@ -172,6 +192,10 @@ private:
     void add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,
                             std::vector<float>& host, FurnaceSums& total);
     KernelLease kernel(const std::string& file, const std::string& name, const std::string& options);
+    // Each chunk as a view, and (when not mapped) the host copy it points into.
+    using ChunkDelivery = std::function<void(const SampleView& view, const SampleSet* copy, std::uint64_t offset)>;
+    void run_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                    const PerSampleInputs& per_sample, bool map, const ChunkDelivery& deliver);
 
     cl::Context context_;
     cl::Device device_;

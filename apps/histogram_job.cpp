@@ -45,9 +45,11 @@ nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, c
 
 HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job)
 {
-    // A small warm-up run builds and JIT-compiles the kernel, so the timing
-    // below measures sampling and binning alone.
-    sampler.histogram(job.params, {job.range.seed, job.range.first, 1}, job.bins_z, job.bins_phi, job.direction);
+    // A small warm-up run (a whole work-group and a tail) builds and
+    // JIT-compiles the kernels, so the timing below measures sampling and
+    // binning alone.
+    sampler.histogram(job.params, {job.range.seed, job.range.first, sampler.work_group_size() + 1}, job.bins_z,
+                      job.bins_phi, job.direction);
     auto start = std::chrono::steady_clock::now();
     ggxcl::Histogram counts = sampler.histogram(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -14,7 +14,8 @@ namespace ggxcl {
 namespace {
 
 constexpr std::uint32_t samples_per_item = 64;
-constexpr std::uint64_t samples_per_launch = 1u << 30;  // keeps every 32-bit bin count below 2^32
+constexpr std::uint64_t samples_per_launch = 1u << 30;      // keeps every 32-bit bin count below 2^32
+constexpr std::uint64_t samples_per_index_pass = 1u << 22;  // the bin indices of one pass: 16 MiB
 
 std::string histogram_options(const SampleParams& params, int bins_z, int bins_phi, Field direction)
 {
@@ -35,6 +36,81 @@ void check_bins(int bins_z, int bins_phi, Field direction, std::size_t local_byt
 
 } // namespace
 
+// One histogram request: its program and the launches of
+// either strategy of kernels/ggx_histogram.cl.
+struct Sampler::HistogramRun {
+    Sampler& sampler;
+    const SampleParams& params;
+    const SampleRange& range;
+    std::size_t bins;
+    std::string options;
+
+    void set_sample_args(cl::Kernel& k, std::uint64_t start, std::uint64_t n) const
+    {
+        k.setArg(0, cl_ulong(range.seed));
+        k.setArg(1, cl_ulong(range.first + start));
+        k.setArg(2, cl_uint(n));
+        k.setArg(3, cl_uint(samples_per_item));
+        detail::set_param_args(k, 4, params, {});
+    }
+
+    cl::Buffer zeroed_counts() const
+    {
+        cl::Buffer counts = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
+        // Zeroed by a write, not clEnqueueFillBuffer: Oclgrind's checker takes
+        // filled memory as uninitialized (shown by a minimal kernel in test_oclgrind).
+        const std::vector<cl_uint> zeros(bins + 1, 0u);
+        sampler.queue_.enqueueWriteBuffer(counts, CL_TRUE, 0, (bins + 1) * sizeof(cl_uint), zeros.data());
+        return counts;
+    }
+
+    std::vector<cl_uint> read(const cl::Buffer& counts) const
+    {
+        std::vector<cl_uint> host(bins + 1);
+        sampler.queue_.enqueueReadBuffer(counts, CL_TRUE, 0, (bins + 1) * sizeof(cl_uint), host.data());
+        return host;
+    }
+
+    // Local-memory atomics per work-group (GPUs).
+    std::vector<cl_uint> count_in_groups(std::uint64_t start, std::uint64_t n) const
+    {
+        KernelLease lease = sampler.kernel("ggx_histogram.cl", "ggx_histogram", options);
+        cl::Buffer counts = zeroed_counts();
+        set_sample_args(*lease, start, n);
+        lease->setArg(15, counts);
+        const std::size_t group = sampler.work_group_size();
+        std::size_t groups = (n + group * samples_per_item - 1) / (group * samples_per_item);
+        detail::before_launch();
+        sampler.queue_.enqueueNDRangeKernel(*lease, cl::NullRange, cl::NDRange(groups * group), cl::NDRange(group));
+        return read(counts);
+    }
+
+    // Bin indices by a vectorizable kernel, then counted without atomics (CPUs).
+    std::vector<cl_uint> count_by_indices(std::uint64_t start, std::uint64_t n) const
+    {
+        cl::Buffer indices = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, n * sizeof(cl_uint));
+        cl::Buffer counts = zeroed_counts();
+        auto make = [&](const std::string& name) {
+            KernelLease lease = sampler.kernel("ggx_histogram.cl", name, options);
+            set_sample_args(*lease, start, n);
+            lease->setArg(15, indices);
+            return lease;
+        };
+        detail::launch_split(sampler.queue_, sampler.work_group_size(), make, "ggx_histogram_bins", cl_uint(n), nullptr);
+        const std::uint32_t counters = std::uint32_t(4 * sampler.device_.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());
+        const std::uint32_t per_counter = std::uint32_t((n + counters - 1) / counters);
+        KernelLease count = sampler.kernel("ggx_histogram.cl", "ggx_histogram_count", options);
+        count->setArg(0, indices);
+        count->setArg(1, cl_uint(n));
+        count->setArg(2, cl_uint(per_counter));
+        count->setArg(3, counts);
+        detail::before_launch();
+        sampler.queue_.enqueueNDRangeKernel(*count, cl::NullRange, cl::NDRange((n + per_counter - 1) / per_counter),
+                                            cl::NDRange(1));
+        return read(counts);
+    }
+};
+
 std::uint64_t Histogram::total() const
 {
     return std::accumulate(counts.begin(), counts.end(), non_finite);
@@ -48,32 +124,17 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
     SampleParams unit = normalized(params);
     return detail::translate_cl_errors([&] {
         check_bins(bins_z, bins_phi, direction, device_.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>());
-        const std::size_t bins = std::size_t(bins_z) * bins_phi;
-        Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0};
-        KernelLease lease = kernel("ggx_histogram.cl", "ggx_histogram", histogram_options(unit, bins_z, bins_phi, direction));
-        cl::Kernel& k = *lease;
-        cl::Buffer counts = detail::device_buffer(context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
-        std::vector<cl_uint> launch_counts(bins + 1);
-        const std::vector<cl_uint> zeros(bins + 1, 0u);
-        const std::size_t group = work_group_size();
-        for (std::uint64_t start = 0; start < range.count; start += samples_per_launch) {
-            std::uint64_t n = std::min(samples_per_launch, range.count - start);
-            // Zeroed by a write, not clEnqueueFillBuffer: Oclgrind's checker takes
-            // filled memory as uninitialized (shown by a minimal kernel in test_oclgrind).
-            queue_.enqueueWriteBuffer(counts, CL_FALSE, 0, (bins + 1) * sizeof(cl_uint), zeros.data());
-            k.setArg(0, cl_ulong(range.seed));
-            k.setArg(1, cl_ulong(range.first + start));
-            k.setArg(2, cl_uint(n));
-            k.setArg(3, cl_uint(samples_per_item));
-            detail::set_param_args(k, 4, unit, {});
-            k.setArg(15, counts);
-            std::size_t groups = (n + group * samples_per_item - 1) / (group * samples_per_item);
-            detail::before_launch();
-            queue_.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(groups * group), cl::NDRange(group));
-            queue_.enqueueReadBuffer(counts, CL_TRUE, 0, (bins + 1) * sizeof(cl_uint), launch_counts.data());
-            for (std::size_t b = 0; b < bins; ++b)
-                result.counts[b] += launch_counts[b];
-            result.non_finite += launch_counts[bins];
+        HistogramRun run{*this, unit, range, std::size_t(bins_z) * bins_phi,
+                         histogram_options(unit, bins_z, bins_phi, direction)};
+        Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(run.bins, 0), 0};
+        const bool cpu = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
+        for (std::uint64_t start = 0; start < range.count;) {
+            std::uint64_t n = std::min(cpu ? samples_per_index_pass : samples_per_launch, range.count - start);
+            std::vector<cl_uint> counts = cpu ? run.count_by_indices(start, n) : run.count_in_groups(start, n);
+            for (std::size_t b = 0; b < run.bins; ++b)
+                result.counts[b] += counts[b];
+            result.non_finite += counts[run.bins];
+            start += n;
         }
         return result;
     });

@@ -192,6 +192,7 @@ private:
     void add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,
                             std::vector<float>& host, FurnaceSums& total);
     KernelLease kernel(const std::string& file, const std::string& name, const std::string& options);
+    struct HistogramRun;
     // Each chunk as a view, and (when not mapped) the host copy it points into.
     using ChunkDelivery = std::function<void(const SampleView& view, const SampleSet* copy, std::uint64_t offset)>;
     void run_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,

@@ -157,6 +157,15 @@ std::vector<Target> speed_targets(const BenchReport& r)
                        fixed(r.startup.warm_ms.median, 0) + " ms", r.startup.warm_ms.median <= 100});
         out.push_back({"cold build <= 1.5 s per variant", fixed(r.startup.cold_ms, 0) + " ms", r.startup.cold_ms <= 1500});
     }
+    const BenchRow* write = default_row(r, "caps", "write");
+    if (r.apps.measured && write) {
+        const double file = r.apps.sample_npy.median / write->timing.median;
+        const double bins = r.apps.histogram.median / write->timing.median;
+        out.push_back({"`ggx sample` into .npy within 3x of the write job per sample, whole process",
+                       fixed(r.apps.sample_npy.median, 2) + " ns: " + fixed(file, 1) + "x", file <= 3.0});
+        out.push_back({"`ggx histogram` within 3x of the write job per sample, whole process",
+                       fixed(r.apps.histogram.median, 2) + " ns: " + fixed(bins, 1) + "x", bins <= 3.0});
+    }
     if (r.enqueue.measured)
         out.push_back({"host time of one enqueue of " + std::to_string(r.enqueue.count) +
                            " samples < 20 us (warm, median of " + std::to_string(r.enqueue.calls) + ")",
@@ -301,6 +310,21 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
         md << "\n## Start-up\n\nProcess start to first result (`ggx sample -n 1`): " << fixed(r.startup.cold_ms, 0)
            << " ms with an empty kernel cache, " << fixed(r.startup.warm_ms.median, 0) << " ms warm (median; "
            << fixed(r.startup.warm_ms.low, 0) << "–" << fixed(r.startup.warm_ms.high, 0) << ").\n";
+    if (r.enqueue.measured)
+        md << "\n## Small batches\n\nHost time of one `Sampler::enqueue` of " << r.enqueue.count
+           << " caps samples (m and pdf_m into the caller's buffers), caches warm, median of " << r.enqueue.calls
+           << " calls: " << fixed(r.enqueue.host_us.median, 1) << " us (" << fixed(r.enqueue.host_us.low, 1) << "–"
+           << fixed(r.enqueue.host_us.high, 1) << "); the first call of a second Sampler on the same context, whose "
+           << "programs are shared: " << fixed(r.enqueue.second_sampler_first_us, 0) << " us.\n";
+    if (r.apps.measured)
+        md << "\n## The commands, whole process\n\nWall clock from process start to exit, ns per sample, caps, files "
+              "in "
+           << r.apps.folder << ": `ggx sample --fields m,pdf_m` into .npy " << fixed(r.apps.sample_npy.median, 2)
+           << " (" << fixed(r.apps.sample_npy.low, 2) << "–" << fixed(r.apps.sample_npy.high, 2) << ") and `ggx "
+           << "histogram --no-png` (its expected counts by quadrature included) " << fixed(r.apps.histogram.median, 2)
+           << " (" << fixed(r.apps.histogram.low, 2) << "–" << fixed(r.apps.histogram.high, 2) << "), " << r.apps.count
+           << " samples, median of 5 runs; at " << r.apps.text_count << " samples, one run each: .csv "
+           << fixed(r.apps.sample_csv, 1) << ", .ply (m) " << fixed(r.apps.sample_ply, 1) << ".\n";
     return md.str();
 }
 

@@ -35,6 +35,14 @@ struct EnqueueTiming {
     double second_sampler_first_us = 0;  // first call of another Sampler on the same context
 };
 
+struct AppTimings {
+    bool measured = false;
+    std::uint32_t count = 0, text_count = 0;  // samples per run (text formats: text_count)
+    std::string folder;                       // where the files went
+    Timing sample_npy, histogram;             // ns per sample, whole process, median of 5
+    double sample_csv = 0, sample_ply = 0;    // ns per sample, one run each
+};
+
 struct BenchReport {
     std::string command, date, machine, device;
     std::string device_clock = "event-profiled";  // how the device rows were timed (DeviceTimer)
@@ -49,6 +57,7 @@ struct BenchReport {
     std::string native_unavailable;  // why the native baseline is missing (empty: measured or --no-native)
     StartupTiming startup;
     EnqueueTiming enqueue;
+    AppTimings apps;
 };
 
 // 1 / (variance x seconds per sample), and the RMSE of each cell of the table

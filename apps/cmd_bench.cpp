@@ -17,6 +17,7 @@
 #include "bench_plan.hpp"
 #include "bench_report.hpp"
 #include "bench_startup.hpp"
+#include "bench_apps.hpp"
 #include "bench_enqueue.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
@@ -175,6 +176,7 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
     if (!cmd.no_startup) {
         report.startup = measure_startup(cmd.device, 5);
         report.enqueue = measure_enqueue(sampler, plan.base);
+        report.apps = measure_apps(cmd.device, plan.settings.count);
     }
     write_outputs(cmd, report);
 }

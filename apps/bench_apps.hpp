@@ -1,0 +1,17 @@
+// bench_apps.hpp - the commands as a user runs them, whole process (start,
+// build from a warm cache, sampling, conversion, file): `ggx sample` of caps
+// m and pdf_m into an .npy file in RAM (/dev/shm where there is one) and
+// `ggx histogram --no-png`, each the median of 5 runs in ns per sample, set
+// beside the write job of the same fields; .csv and .ply once each, for
+// what those formats cost.
+#pragma once
+
+#include <string>
+
+#include "bench_report.hpp"
+
+namespace ggxapp {
+
+AppTimings measure_apps(const std::string& device, std::uint32_t count);
+
+} // namespace ggxapp

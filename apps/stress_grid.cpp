@@ -54,6 +54,29 @@ std::vector<std::array<float, 2>> uniform_pairs()
     return pairs;
 }
 
+// The uniforms that put the cap point c of caps, bounded and caps-iso nearest -v: u2 = 1 - 2^-24
+// (the cap's lowest row) and u1 = phi / (2 pi) for the azimuth phi of -v in the cap's frame, on
+// the 2^-24 grid of the uniforms. There h = c + v cancels (docs/MATH.md "i.m of a cap sample").
+// The tangent-space cap is about +z with v = normalize(ax ix, ay iy, iz); caps-iso draws c' about
+// +z and carries it onto n by the half-turn H(x) = (w.x) w / wz - x, w = n + z, so c' = H(-v)
+// there, with v the view's tangential part scaled by alpha (the other methods get the
+// tangent-space pair).
+std::array<float, 2> rim_pair(ggxcl::Method method, const std::array<float, 2>& alpha, const ggxcl::Vec3& view,
+                              const ggxref::Vec3& n)
+{
+    const ggxref::Vec3 i{view.x, view.y, view.z};
+    ggxref::Vec3 c{-alpha[0] * i.x, -alpha[1] * i.y, -i.z};
+    if (method == ggxcl::Method::caps_iso && n.z > -1.0) {
+        const ggxref::Vec3 w = n + ggxref::Vec3{0.0, 0.0, 1.0};
+        const double iz = ggxref::dot(i, n);
+        const ggxref::Vec3 minus_v = -(alpha[0] * (i - iz * n) + iz * n);
+        c = (ggxref::dot(w, minus_v) / w.z) * w - minus_v;
+    }
+    double u = std::atan2(c.y, c.x) / (2.0 * 3.14159265358979323846);
+    u = std::round((u - std::floor(u)) * 16777216.0) / 16777216.0;
+    return {float(u < 1.0 ? u : 0.0), one_below};
+}
+
 } // namespace
 
 StressAxes stress_axes()
@@ -76,10 +99,14 @@ std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axe
     for (int row = 0; row < int(axes.alphas.size()); ++row)
         for (int column = 0; column < int(axes.cos_theta.size()); ++column) {
             for (const ggxref::Vec3& n : normals_for(method))
-                for (const auto& alpha : roughness_pairs(method, axes.alphas[row]))
-                    for (const auto& u : uniforms)
-                        cases.push_back({alpha[0], alpha[1], view_about(n, axes.cos_theta[column]),
-                                         {float(n.x), float(n.y), float(n.z)}, u[0], u[1], row, column});
+                for (const auto& alpha : roughness_pairs(method, axes.alphas[row])) {
+                    const ggxcl::Vec3 view = view_about(n, axes.cos_theta[column]);
+                    std::vector<std::array<float, 2>> pairs = uniforms;
+                    pairs.push_back(rim_pair(method, alpha, view, n));
+                    for (const auto& u : pairs)
+                        cases.push_back({alpha[0], alpha[1], view, {float(n.x), float(n.y), float(n.z)}, u[0], u[1],
+                                         row, column});
+                }
         }
     return cases;
 }

@@ -4,7 +4,9 @@
 // 1e-7), cases with roughness pairs (alpha, alpha), anisotropy 1:1000 both
 // ways and one axis exactly 0 (caps-iso: isotropic, but normals over the
 // sphere including exactly (0, 0, -1)), each with uniforms at the edges of
-// [0, 1) (0, 1/2, 1 - 2^-24 and their pairs) and random ones.
+// [0, 1) (0, 1/2, 1 - 2^-24 and their pairs), random ones, and the pair
+// that puts the caps family's cap point nearest -v (u2 = 1 - 2^-24, u1 at
+// the azimuth of -v), where h = c + v cancels.
 #pragma once
 
 #include <string>

@@ -81,6 +81,7 @@ std::array<bool, failure_kinds> classify(const StressOutcome& s, const ggxcl::Ve
     kinds[not_unit] = std::fabs(length3(s.m) - 1.0) > 1e-5 || std::fabs(length3(s.o) - 1.0) > 1e-5;
     kinds[m_below] = dot3(s.m, normal) <= 0.0;
     kinds[wasted] = dot3(s.o, normal) <= 0.0;
+    kinds[pdf_nonpositive] = s.pdf_o < 0.0 || s.pdf_m < 0.0;  // no density is negative, wasted or not
     if (!kinds[wasted]) {
         kinds[pdf_nonpositive] = !(s.pdf_o > 0.0) || !(s.pdf_m > 0.0);
         kinds[pdf_mismatch] = s.pdf_o > 0.0 && (!std::isfinite(s.pdf_again) ||

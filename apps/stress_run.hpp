@@ -22,7 +22,8 @@ namespace ggxapp {
 //   not_unit         m or o off unit length by more than 1e-5;
 //   m_below          the microfacet normal at or below the surface (m.n <= 0);
 //   wasted           o at or below the surface (o.n <= 0): not a failure, counted;
-//   pdf_nonpositive  a usable sample (o above the surface) with pdf_o or pdf_m <= 0;
+//   pdf_nonpositive  a usable sample (o above the surface) with pdf_o or pdf_m <= 0, or any
+//                    sample with a negative pdf_o or pdf_m;
 //   pdf_mismatch     its pdf recomputed from (i, o) differs from pdf_o by more than 1e-3 (relative) or is not finite.
 enum FailureKind { nan_inf, fallback, not_unit, m_below, wasted, pdf_nonpositive, pdf_mismatch, failure_kinds };
 const char* failure_name(int kind);

@@ -1,20 +1,31 @@
 // ggx_sample_bounded.h - method `bounded`: the spherical cap of `caps` cut
 // tighter so that fewer reflections land below the horizon (Eto & Tokuyoshi
-// 2023, "Bounded VNDF Sampling for Smith-GGX Reflections", and supplement).
+// 2023, "Bounded VNDF Sampling for Smith-GGX Reflections", and supplement),
+// with the bound carried to roughness a > 1 (docs/MATH.md "bounded").
 #ifndef GGX_SAMPLE_BOUNDED_H
 #define GGX_SAMPLE_BOUNDED_H
 
 #include "ggx_sample_caps.h"
 
-// The bound k of the cap: a = clamp(min(ax, ay), 0, 1), s = 1 + |(ix, iy)|,
-// k = (1 - a^2) s^2 / (s^2 + a^2 iz^2); views below the horizon keep k = 1.
+// a = min(ax, ay), the roughness the bound is taken for, kept below 1e18 so that a^2 stays
+// finite (k has reached its limit -iz^2/w^2 to float precision long before).
+GGX_INLINE float ggx_bounded_a(float ax, float ay)
+{
+    return fmin(fmin(ax, ay), 1e18f);
+}
+
+// The bound k of the cap, with w = 1 + |(ix, iy)| (supplement eq. 1 bounded below over its
+// azimuth; docs/MATH.md "bounded"): k = (1 - a^2) w^2 / (w^2 + a^2 iz^2) for a <= 1 (the paper's
+// k, in [0, 1]) and k = (1 - a^2) iz^2 / (iz^2 + a^2 w^2) for a > 1 (in (-1, 0]: the cap stops
+// above the stretched horizon); views below the horizon keep k = 1.
 GGX_INLINE float ggx_bounded_k(ggx_vec3 i, float ax, float ay)
 {
-    float a = clamp(fmin(ax, ay), 0.0f, 1.0f);
-    float a2 = a * a;
-    float s = 1.0f + sqrt(i.x * i.x + i.y * i.y);
-    float s2 = s * s;
-    float k = (1.0f - a2) * s2 / (s2 + a2 * i.z * i.z);
+    float a = ggx_bounded_a(ax, ay), a2 = a * a;
+    float w = 1.0f + sqrt(i.x * i.x + i.y * i.y);
+    float w2 = w * w, iz2 = i.z * i.z;
+    int rough = a > 1.0f;
+    float p = rough ? iz2 : w2, q = rough ? w2 : iz2;  // scalar selects: both forms are (1 - a^2) p / (p + a^2 q)
+    float k = (1.0f - a2) * p / (p + a2 * q);
 #if GGX_BELOW_HORIZON
     return i.z > 0.0f ? k : 1.0f;
 #else
@@ -22,22 +33,44 @@ GGX_INLINE float ggx_bounded_k(ggx_vec3 i, float ax, float ay)
 #endif
 }
 
-// 1/(k iz + t(i)): plain for iz > 0 (k >= 0, t > 0), cancellation-free otherwise.
+// k iz + t(i) for iz >= 0, which is > 0. Plain for a <= 1 (k >= 0); for a > 1 (k < 0, and the plain
+// sum cancels as a grows near the pole) the same sum of non-negative terms,
+// (iz^2 (t + iz) + a^2 w (q w / (t + iz) + 2 iz |ih|)) / (iz^2 + a^2 w^2) with q = t^2 - iz^2,
+// ih = (ix, iy) and w^2 - iz^2 = 2 |ih| w (a unit view).
+GGX_INLINE float ggx_bounded_sum(ggx_vec3 i, float k, float ti, float ax, float ay)
+{
+    float a = ggx_bounded_a(ax, ay), a2 = a * a;
+    float ih = sqrt(i.x * i.x + i.y * i.y), w = 1.0f + ih;
+    float sx = ax * i.x, sy = ay * i.y, q = sx * sx + sy * sy;
+    float tz = ti + i.z;
+    float rough_sum = (i.z * i.z * tz + a2 * w * (q * w / tz + 2.0f * i.z * ih)) / (i.z * i.z + a2 * w * w);
+    return a > 1.0f ? rough_sum : k * i.z + ti;
+}
+
+// 1/(k iz + t(i)): from ggx_bounded_sum for iz > 0, cancellation-free for iz < 0 (k = 1).
 GGX_INLINE float ggx_bounded_inv_sum(ggx_vec3 i, float k, float ti, float ax, float ay)
 {
+    float inv = 1.0f / ggx_bounded_sum(i, k, ti, ax, ay);
 #if GGX_BELOW_HORIZON
-    return i.z > 0.0f ? 1.0f / (k * i.z + ti) : ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
+    return i.z > 0.0f ? inv : ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
 #else
-    return 1.0f / (k * i.z + ti);
+    return inv;
 #endif
 }
 
 GGX_INLINE ggx_sample ggx_draw_bounded(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
-    float ti = ggx_t(i, ax, ay);
-    ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);
+    float ti = ggx_t(i, ax, ay), inv_ti = 1.0f / ti;
+    ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), inv_ti);
     float k = ggx_bounded_k(i, ax, ay);
-    ggx_vec3 c = ggx_sample_cap(k * v.z, u1, u2);                 // the cap z in (-k vz, 1]
+    float lower = k * v.z;
+    // The cap z in (-k vz, 1] (supplement sec. 2, q_our), of height 1 + k vz = (k iz + t) / t.
+#if GGX_BELOW_HORIZON
+    float height = i.z > 0.0f ? ggx_bounded_sum(i, k, ti, ax, ay) * inv_ti : 1.0f + lower;
+#else
+    float height = ggx_bounded_sum(i, k, ti, ax, ay) * inv_ti;
+#endif
+    ggx_vec3 c = ggx_sample_cap_of_height(lower, height, u1, u2);
     ggx_vec3 h = ggx_add(c, v);
     float inv_sum = ggx_bounded_inv_sum(i, k, ti, ax, ay);        // supplement sec. 2: D / (2 (k iz + t))
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);

@@ -8,15 +8,22 @@
 #include "ggx_sincos.h"
 #include "ggx_vndf.h"
 
-// A direction drawn uniformly from the spherical cap z in (-lower, 1] around +z:
-// phi = 2 pi u1, z = (1 - u2)(1 + lower) - lower (Dupuy & Benyoub, Listing 3).
-GGX_INLINE ggx_vec3 ggx_sample_cap(float lower, float u1, float u2)
+// A direction drawn uniformly from the spherical cap z in (-lower, 1] around +z, whose
+// height 1 + lower the caller gives (bounded has it without cancellation where lower nears -1):
+// phi = 2 pi u1, z = (1 - u2) height - lower (Dupuy & Benyoub, Listing 3).
+GGX_INLINE ggx_vec3 ggx_sample_cap_of_height(float lower, float height, float u1, float u2)
 {
-    float z = (1.0f - u2) * (1.0f + lower) - lower;
+    float z = (1.0f - u2) * height - lower;
     float sin_theta = sqrt(clamp(1.0f - z * z, 0.0f, 1.0f));
     float sin_phi, cos_phi;
     ggx_sincos_2pi(u1, &sin_phi, &cos_phi);
     return ggx_vec3_make(sin_theta * cos_phi, sin_theta * sin_phi, z);
+}
+
+// The same with the height 1 + lower.
+GGX_INLINE ggx_vec3 ggx_sample_cap(float lower, float u1, float u2)
+{
+    return ggx_sample_cap_of_height(lower, 1.0f + lower, u1, u2);
 }
 
 GGX_INLINE ggx_sample ggx_draw_caps(ggx_vec3 i, float ax, float ay, float u1, float u2)

@@ -81,7 +81,7 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, flo
     out.m = ggx_normalize(a);
     out.o = ggx_reflect(i, out.m);
     out.pdf_o = 0.5f * ratio * ratio / (GGX_PI * alpha * alpha) * inv_sum;
-    out.pdf_m = 4.0f * ggx_dot(i, out.m) * out.pdf_o;
+    out.pdf_m = 4.0f * fmax(0.0f, ggx_dot(i, out.m)) * out.pdf_o;  // the VNDF's max(0, i.m), as ggx_vndf.h
     float oz = ggx_dot(out.o, n);
     float g2 = ggx_G2_from_t(iz, oz, ti, ggx_t_about(out.o, n, alpha));
     out.weight = iz > 0.0f ? g2 / (2.0f * iz * inv_sum) : 0.0f;

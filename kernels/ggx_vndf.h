@@ -26,7 +26,11 @@ GGX_INLINE float ggx_vndf_weight(ggx_vec3 i, ggx_vec3 o, float ax, float ay, flo
 // The sample whose standard-space normal is h: m, o, densities and weight;
 // ti = t(i) and inv_sum = 1 / (k iz + t(i)) with k = 1 for the plain VNDF.
 // pdf(o) = D(m) / (2 (k iz + t)) (Dupuy & Benyoub 2023 eq. 20; Eto & Tokuyoshi supplement sec. 2),
-// pdf(m) = pdf(o) 4 (i.m).
+// pdf(m) = pdf(o) 4 max(0, i.m), the max of the VNDF (Heitz 2018 eq. 1), as the m returned has it.
+// i.m >= 0 in exact arithmetic, but where the cap point c nears -v, h = c + v cancels, the rounded
+// m turns by ~6e-8 / |h| and i.m can come out below 0. (The exact i.m = t (v.h) / |A h| with
+// v.h = |h|^2 / 2 is never negative, but it is that of the unrounded sample: on random uniforms it
+// differs from the i.m of the m returned by up to 1e-2, relative; docs/MATH.md "i.m of a cap sample".)
 GGX_INLINE ggx_sample ggx_finish_vndf_sample(ggx_vec3 i, ggx_vec3 h, float ax, float ay, float ti, float inv_sum)
 {
     // Keep h above the horizon (pbrt-v4 floors at 1e-6; views below the horizon need all of
@@ -37,7 +41,7 @@ GGX_INLINE ggx_sample ggx_finish_vndf_sample(ggx_vec3 i, ggx_vec3 h, float ax, f
     out.m = ggx_normalize(ggx_stretch(h, ax, ay));
     out.o = ggx_reflect(i, out.m);
     out.pdf_o = 0.5f * ggx_D_from_standard(h, ax, ay) * inv_sum;
-    out.pdf_m = 4.0f * ggx_dot(i, out.m) * out.pdf_o;
+    out.pdf_m = 4.0f * fmax(0.0f, ggx_dot(i, out.m)) * out.pdf_o;
     out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
     return out;
 }

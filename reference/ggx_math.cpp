@@ -70,13 +70,17 @@ double vndf_pdf(const Vec3& m, const Vec3& i, double ax, double ay)
     return std::max(0.0, dot(i, m)) * D(m, ax, ay) / projected_area(i, ax, ay);
 }
 
-// k = (1 - a^2) s^2 / (s^2 + a^2 iz^2), a = clamp(min(ax, ay), 0, 1), s = 1 + |i_xy|
-// (Eto & Tokuyoshi 2023, SPEC method 5).
+// k = (1 - a^2) s^2 / (s^2 + a^2 iz^2), a = min(ax, ay), the bound of supplement Eq. 1 over its
+// azimuth at the extreme P = s^2 (docs/MATH.md "bounded"): s = 1 + |i_xy| for a <= 1 (Eto &
+// Tokuyoshi 2023), s = 1 - |i_xy| = iz^2 / (1 + |i_xy|) for a > 1, where k < 0; dividing by s^2 / iz^2
+// there leaves (1 - a^2) iz^2 / (iz^2 + a^2 (1 + |i_xy|)^2), free of 0/0 at grazing views.
 double bounded_k(const Vec3& i, double ax, double ay)
 {
-    const double a = std::clamp(std::min(ax, ay), 0.0, 1.0);
-    const double s = 1.0 + std::sqrt(sq(i.x) + sq(i.y));
-    return (1.0 - a * a) * s * s / (s * s + a * a * i.z * i.z);
+    const double a2 = sq(std::min(ax, ay));
+    const double w2 = sq(1.0 + std::sqrt(sq(i.x) + sq(i.y))), iz2 = sq(i.z);
+    if (a2 <= 1.0)
+        return (1.0 - a2) * w2 / (w2 + a2 * iz2);
+    return (1.0 - a2) * iz2 / (iz2 + a2 * w2);
 }
 
 // f(i, o) oz = D(h) G2(i, o) / (4 iz) with h = normalize(i + o) (Cook-Torrance, Fresnel = 1).

@@ -44,7 +44,7 @@ double G2_height_correlated(const Vec3& i, const Vec3& o, double ax, double ay);
 double G2_separable(const Vec3& i, const Vec3& o, double ax, double ay);          // G1(i) G1(o)
 double projected_area(const Vec3& i, double ax, double ay);           // (iz + t)/2, cancellation-free for iz < 0
 double vndf_pdf(const Vec3& m, const Vec3& i, double ax, double ay);  // Dv(m; i)
-double bounded_k(const Vec3& i, double ax, double ay);                // Eto-Tokuyoshi k
+double bounded_k(const Vec3& i, double ax, double ay);                // Eto-Tokuyoshi k, k < 0 for a > 1
 double brdf_cos(const Vec3& i, const Vec3& o, double ax, double ay);  // D(h) G2hc / (4 iz), 0 unless iz, oz > 0
 
 // The same for an isotropic surface with world-space normal n (caps_iso): z components are dot

@@ -20,11 +20,11 @@ inline Vec3 direction(double theta_deg, double phi)
     return {std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)};
 }
 
-// GGX alphas 0.01 .. 2 with anisotropy up to 1:10.
+// GGX alphas 0.01 .. 2 with anisotropy up to 1:10, and both alphas above 1 (bounded's k < 0).
 inline std::vector<std::pair<double, double>> alpha_grid()
 {
     return {{0.01, 0.01}, {0.01, 0.1}, {0.1, 0.01}, {0.3, 0.3}, {1.0, 1.0},
-            {2.0, 0.2},   {0.2, 2.0},  {2.0, 2.0},  {0.7, 1.3}};
+            {2.0, 0.2},   {0.2, 2.0},  {2.0, 2.0},  {0.7, 1.3}, {1.3, 2.0}};
 }
 
 inline std::vector<double> view_grid() { return {0.0, 30.0, 60.0, 85.0}; }
@@ -78,8 +78,9 @@ inline Params rotated(double alpha, double theta, const Vec3& n)
 }
 
 // The hard cases of the bin tests: small alpha, anisotropy, grazing and normal views (o = -i on a
-// bin edge at phi = 0), views below the horizon, rotated normals, and a bounded cap whose edge just
-// dips into a neighbouring latitude band (alpha (1.5, 0.7), 30 deg).
+// bin edge at phi = 0), views below the horizon, rotated normals, a bounded cap whose edge just
+// dips into a neighbouring latitude band (alpha (1.5, 0.7), 30 deg), and bounded caps cut above the
+// stretched horizon (k < 0: alpha 1.5 at 52 deg, (1.3, 2.0) at 88 deg).
 inline std::vector<BinCase> hard_bin_cases()
 {
     return {{Method::ndf, params(Method::ndf, 0.05, 0.05, 60.0, 0.0)},
@@ -93,7 +94,9 @@ inline std::vector<BinCase> hard_bin_cases()
             {Method::bounded, params(Method::bounded, 0.05, 0.5, 30.0)},
             {Method::bounded, params(Method::bounded, 1.0, 1.0, 0.0)},
             {Method::bounded, params(Method::bounded, 1.5, 0.7, 30.0)},
-            {Method::bounded, params(Method::bounded, 0.9, 0.4, 80.0, 0.0)}};
+            {Method::bounded, params(Method::bounded, 0.9, 0.4, 80.0, 0.0)},
+            {Method::bounded, params(Method::bounded, 1.5, 1.5, 52.0)},
+            {Method::bounded, params(Method::bounded, 1.3, 2.0, 88.0)}};
 }
 
 // Histogram of `count` reference samples (their o, or their m when `normals`) of stream `seed`.

@@ -88,7 +88,7 @@ TEST_CASE("m-bins agree with an integration over the standard space, per bin to 
 {
     const int nz = 16, nphi = 32;
     double worst = 0.0;
-    for (const int index : {0, 1, 2, 3, 5, 8, 9}) {
+    for (const int index : {0, 1, 2, 3, 5, 8, 9, 12}) {
         const BinCase c = hard_bin_cases()[index];
         const std::vector<double> bins = bin_probabilities_m(c.method, c.p, nz, nphi);
         CAPTURE(std::string(method_name(c.method)));

@@ -91,7 +91,6 @@ TEST_CASE("bounded k oracles")
 {
     const Vec3 i = direction(40.0, 0.3);
     CHECK(bounded_k(i, 1.0, 1.0) == 0.0);         // a = 1
-    CHECK(bounded_k(i, 1.5, 2.0) == 0.0);         // a clamped to 1
     CHECK(bounded_k(i, 1e-4, 0.5) > 1.0 - 1e-7);  // k -> 1 as alpha -> 0
     CHECK(bounded_k(i, 1e-4, 0.5) <= 1.0);
     for (double a : {0.05, 0.3, 0.7, 0.99}) {
@@ -99,6 +98,57 @@ TEST_CASE("bounded k oracles")
         CHECK(k > 0.0);
         CHECK(k < 1.0);
     }
-    // k decreases with roughness.
+    // k < 0 for a > 1, and k > -1: the cap z > -k vz is never empty and k iz + t > 0.
+    for (double a : {1.01, 1.5, 3.0, 100.0, 1e6})
+        for (double theta : {0.0, 40.0, 89.9}) {
+            const Vec3 v = direction(theta, 0.3);
+            const double k = bounded_k(v, a, 1.5 * a), t = t_of(v, a, 1.5 * a);
+            CAPTURE(a);
+            CAPTURE(theta);
+            CHECK(k < 0.0);
+            CHECK(k > -1.0);
+            CHECK(-k * v.z / t < 1.0);
+            CHECK(k * v.z + t > 0.0);
+        }
+    CHECK(bounded_k(i, 1.5, 2.0) == bounded_k(i, 2.0, 1.5));  // a = min(ax, ay)
+    // k decreases with roughness, through 0 at a = 1.
     CHECK(bounded_k(i, 0.2, 0.2) > bounded_k(i, 0.5, 0.5));
+    CHECK(bounded_k(i, 0.9, 0.9) > bounded_k(i, 1.5, 1.5));
+    CHECK(bounded_k(i, 1.5, 1.5) > bounded_k(i, 3.0, 3.0));
+    // a > 1: (1 - a^2)/(1 + a^2) at normal incidence, -> 0 at grazing views (no 0/0 at iz = 0).
+    CHECK(bounded_k({0.0, 0.0, 1.0}, 2.0, 3.0) == doctest::Approx(-3.0 / 5.0).epsilon(1e-15));
+    CHECK(bounded_k({1.0, 0.0, 0.0}, 2.0, 3.0) == 0.0);
+    CHECK(std::fabs(bounded_k(direction(90.0 - 1e-6, 0.3), 2.0, 3.0)) < 1e-15);
+}
+
+TEST_CASE("bounded k is exact: 1 - k <= R(phi) on the projected horizon (supplement Eq. 1), with equality "
+          "for isotropic alpha")
+{
+    // ohat_z of the horizon direction at azimuth phi is (R(phi) - 1) ih.z; the cap holds it iff
+    // R(phi) >= 1 - k. R is written here from Eq. 1, apart from bounded_k's closed form.
+    auto R = [](const Vec3& i, double ax, double ay, double phi) {
+        const double cx = i.x + std::cos(phi), cy = i.y + std::sin(phi);
+        return (cx * cx + cy * cy + i.z * i.z) / (cx * cx / (ax * ax) + cy * cy / (ay * ay) + i.z * i.z);
+    };
+    const std::pair<double, double> alphas[] = {{1.5, 1.5}, {3.0, 3.0}, {1.3, 2.0}, {2.0, 1.3},
+                                                {0.3, 0.3}, {0.5, 1.7}, {1.0, 4.0}};
+    for (auto [ax, ay] : alphas)
+        for (double theta : {0.0, 20.0, 52.0, 80.0, 89.0, 89.99})
+            for (double azimuth : {0.3, 2.0, 4.0}) {
+                const Vec3 i = direction(theta, azimuth);
+                const double k = bounded_k(i, ax, ay);
+                double least = 1e300;
+                for (int j = 0; j < 3600; ++j)
+                    least = std::min(least, R(i, ax, ay, 2.0 * pi * (j + 0.5) / 3600.0));
+                CAPTURE(ax);
+                CAPTURE(ay);
+                CAPTURE(theta);
+                CAPTURE(azimuth);
+                CHECK(1.0 - k <= least * (1.0 + 1e-14));
+                if (ax == ay && theta > 0.0) {
+                    // attained at the azimuth of ih (a <= 1) or of -ih (a > 1)
+                    const double at = ax <= 1.0 ? azimuth : azimuth + pi;
+                    CHECK(R(i, ax, ay, at) == doctest::Approx(1.0 - k).epsilon(1e-12));
+                }
+            }
 }

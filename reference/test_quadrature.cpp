@@ -40,6 +40,24 @@ TEST_CASE("accepted mass: alpha = 1 at normal incidence, caps wastes half and bo
     CHECK(integrate_pdf_o_upper(Method::bounded, p) == doctest::Approx(1.0).epsilon(1e-10));
 }
 
+TEST_CASE("accepted mass for alpha > 1 (k < 0): bounded wastes less than with k = 0, nothing at normal incidence")
+{
+    // alpha 1.5: k = 0 (a clamped to 1) kept t / (iz + t) of the caps pdf, the bound keeps
+    // 1 - (1 - k) iz / (iz + t); the wasted fractions are 1 - upper(caps) / kept.
+    const Params p = params(Method::bounded, 1.5, 1.5, 52.0);
+    const double t = t_of(p.i, p.ax, p.ay), upper_caps = integrate_pdf_o_upper(Method::caps, p);
+    const double wasted_k0 = 1.0 - upper_caps * (p.i.z + t) / t;
+    const double wasted = 1.0 - integrate_pdf_o_upper(Method::bounded, p);
+    MESSAGE("alpha 1.5, 52 degrees: caps wastes " << 1.0 - upper_caps << ", k = 0 " << wasted_k0 << ", k = "
+                                                   << bounded_k(p.i, p.ax, p.ay) << " " << wasted);
+    CHECK(wasted_k0 == doctest::Approx(0.343757).epsilon(1e-5));
+    CHECK(wasted == doctest::Approx(0.324224).epsilon(1e-5));
+    CHECK(integrate_pdf_o_upper(Method::bounded, params(Method::bounded, 1.5, 1.5, 0.0)) ==
+          doctest::Approx(1.0).epsilon(1e-10));
+    CHECK(integrate_pdf_o_upper(Method::bounded, params(Method::bounded, 4.0, 4.0, 0.0)) ==
+          doctest::Approx(1.0).epsilon(1e-10));
+}
+
 TEST_CASE("the bounded cap keeps all of the upper hemisphere: upper(bounded) = upper(caps) / (1 - r)")
 {
     for (auto [ax, ay] : alpha_grid())

@@ -132,6 +132,15 @@ std::vector<Config> distribution_grid(ggxref::Method method)
     return grid;
 }
 
+std::vector<Config> rough_bounded_grid()
+{
+    std::vector<Config> grid;
+    for (auto [ax, ay] : {std::pair{1.5, 1.5}, {1.3, 2.0}})
+        for (double theta : {0.0, 52.0, 88.0})
+            grid.push_back(as_device_sees(make_params(ax, ay, theta)));
+    return grid;
+}
+
 ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& params, std::uint64_t seed,
                                 std::uint64_t count, ggxcl::FieldSet fields, ggxcl::Precision precision)
 {

@@ -41,6 +41,9 @@ std::vector<Config> per_sample_grid(ggxref::Method method);
 // 20 configurations per method for the chi-square tests.
 std::vector<Config> distribution_grid(ggxref::Method method);
 
+// Both alphas above 1, where bounded's k < 0: (1.5, 1.5) and (1.3, 2.0) at 0, 52 and 88 degrees.
+std::vector<Config> rough_bounded_grid();
+
 // Device samples of one configuration: o (or m) as a directions set.
 ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& params, std::uint64_t seed,
                                 std::uint64_t count, ggxcl::FieldSet fields,

@@ -1,6 +1,7 @@
 // test_pdf_consistency.cpp - the pdf a sampler returns equals the pdf
 // recomputed from the direction alone: on the device (ggx_pdf_bulk, the
-// `ggx_pdf_<method>` device functions) and in the double reference.
+// `ggx_pdf_<method>` device functions) and in the double reference; for
+// bounded also where both alphas exceed 1 (k < 0).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -17,10 +18,10 @@ constexpr ggxtest::ErrorBound recompute_bound{"pdf_o returned vs recomputed from
 constexpr ggxtest::ErrorBound pdf_m_bound{"pdf_m returned vs reference pdf of m", 2e-5, 1e-3};
 constexpr std::uint64_t samples = 4096;
 
-void check_method(ggxref::Method method)
+void check_method(ggxref::Method method, const std::vector<ggxtest::Config>& grid)
 {
     std::vector<double> device_errors, reference_errors, pdf_m_errors;
-    for (const ggxtest::Config& config : ggxtest::per_sample_grid(method)) {
+    for (const ggxtest::Config& config : grid) {
         ggxcl::SampleParams params = ggxtest::to_library(method, config.params);
         ggxcl::SampleSet s = ggxtest::sampler().generate(params, {99, 0, samples},
                                                          {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_m,
@@ -45,6 +46,8 @@ void check_method(ggxref::Method method)
     ggxtest::check_errors(name, pdf_m_bound, pdf_m_errors);
 }
 
+void check_method(ggxref::Method method) { check_method(method, ggxtest::per_sample_grid(method)); }
+
 } // namespace
 
 TEST_CASE("ndf: returned pdf equals the pdf recomputed from (i, o)") { check_method(ggxref::Method::ndf); }
@@ -53,3 +56,7 @@ TEST_CASE("heitz2017: returned pdf equals the pdf recomputed from (i, o)") { che
 TEST_CASE("caps: returned pdf equals the pdf recomputed from (i, o)") { check_method(ggxref::Method::caps); }
 TEST_CASE("caps-iso: returned pdf equals the pdf recomputed from (i, o)") { check_method(ggxref::Method::caps_iso); }
 TEST_CASE("bounded: returned pdf equals the pdf recomputed from (i, o)") { check_method(ggxref::Method::bounded); }
+TEST_CASE("bounded where both alphas exceed 1 (k < 0): returned pdf equals the pdf recomputed from (i, o)")
+{
+    check_method(ggxref::Method::bounded, ggxtest::rough_bounded_grid());
+}

@@ -1,6 +1,7 @@
 // test_per_sample.cpp - device samples against the double-precision host
 // reference for the same Philox uniforms, sample by sample, on the grid of
-// device_fixture (alpha 0.01..2, anisotropy up to 1:10, theta 0..85 deg).
+// device_fixture (alpha 0.01..2, anisotropy up to 1:10, theta 0..85 deg),
+// and for bounded its grid with both alphas above 1.
 //
 // Tolerances (float device vs double host), each for 99.9% of the samples
 // of a method and for its worst sample (measured values: docs/TESTING.md):
@@ -19,10 +20,10 @@ namespace {
 constexpr std::uint64_t samples_per_config = 2048;
 constexpr std::uint64_t seed = 20231122;
 
-void check_method(ggxref::Method method, ggxcl::Precision precision)
+void check_method(ggxref::Method method, ggxcl::Precision precision, const std::vector<ggxtest::Config>& grid)
 {
     ggxtest::SampleErrors errors;
-    for (const ggxtest::Config& config : ggxtest::per_sample_grid(method)) {
+    for (const ggxtest::Config& config : grid) {
         ggxcl::SampleSet d = ggxtest::device_samples(method, config.params, seed, samples_per_config,
                                                      ggxcl::FieldSet::all(), precision);
         auto reference = [&](std::size_t, double u1, double u2) {
@@ -33,6 +34,11 @@ void check_method(ggxref::Method method, ggxcl::Precision precision)
     ggxtest::check_sample_errors(std::string(ggxref::method_name(method)) + " " +
                                      std::string(ggxcl::precision_name(precision)),
                                  errors);
+}
+
+void check_method(ggxref::Method method, ggxcl::Precision precision)
+{
+    check_method(method, precision, ggxtest::per_sample_grid(method));
 }
 
 } // namespace
@@ -73,3 +79,9 @@ TEST_CASE("bounded matches the reference sample by sample in every precision mod
         check_method(ggxref::Method::bounded, precision);
 }
 
+
+TEST_CASE("bounded matches the reference sample by sample where both alphas exceed 1 (k < 0)")
+{
+    for (ggxcl::Precision precision : ggxtest::all_precisions)
+        check_method(ggxref::Method::bounded, precision, ggxtest::rough_bounded_grid());
+}

@@ -107,6 +107,8 @@ TEST_CASE("classify names each failure kind and nothing else")
     s = good();
     s.o[2] = -s.o[2];
     CHECK(kinds_of(s) == Names{"wasted"});  // a wasted sample's pdf is not judged
+    s.pdf_m = -1e-3;
+    CHECK(kinds_of(s) == (Names{"wasted", "pdf_nonpositive"}));  // unless it is negative
     s = good();
     s.pdf_o = s.pdf_again = 0.0;
     CHECK(kinds_of(s) == Names{"pdf_nonpositive"});
@@ -139,7 +141,7 @@ TEST_CASE("ggx stress writes one row per method, side and cell, with every case 
         REQUIRE(f.size() == 13);
         CAPTURE(line);
         long cases = std::stol(f[5]);
-        CHECK(cases == 85);  // caps: 5 roughness pairs x 17 uniform pairs; caps-iso: 5 normals x 17
+        CHECK(cases == 90);  // caps: 5 roughness pairs x 18 uniform pairs; caps-iso: 5 normals x 18
         for (int k = 6; k < 13; ++k)
             CHECK(std::stol(f[k]) <= cases);
         CHECK(f[6] == "0");  // no NaN or Inf anywhere

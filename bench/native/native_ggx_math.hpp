@@ -60,14 +60,14 @@ inline float D_from_standard(Vec3 h, float ax, float ay)
 
 // The sample whose standard-space normal is h; ti = t(i), inv_sum = 1/(k iz + t(i)) (k = 1 for the
 // plain VNDF).  pdf(o) = D(m) / (2 (k iz + t)) (Dupuy & Benyoub 2023 eq. 20; Eto & Tokuyoshi
-// supplement sec. 2), pdf(m) = 4 (i.m) pdf(o), weight = G2 (k iz + t) / (2 iz).
+// supplement sec. 2), pdf(m) = 4 max(0, i.m) pdf(o), weight = G2 (k iz + t) / (2 iz).
 inline Sample finish_vndf_sample(Vec3 i, Vec3 h, float ax, float ay, float ti, float inv_sum)
 {
     Sample s;
     s.m = normalize(stretch(h, ax, ay));
     s.o = reflect(i, s.m);
     s.pdf_o = 0.5f * D_from_standard(h, ax, ay) * inv_sum;
-    s.pdf_m = 4.0f * dot(i, s.m) * s.pdf_o;
+    s.pdf_m = 4.0f * std::fmax(0.0f, dot(i, s.m)) * s.pdf_o;  // the VNDF's max(0, i.m) (kernels/ggx_vndf.h)
     float g2 = G2_from_t(i.z, s.o.z, ti, t_of(s.o, ax, ay));
     s.weight = i.z > 0.0f ? g2 / (2.0f * i.z * inv_sum) : 0.0f;
     return s;

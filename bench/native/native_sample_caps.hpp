@@ -9,16 +9,19 @@
 
 namespace ggxnative {
 
-// A direction drawn uniformly from the spherical cap z in (-lower, 1] around +z:
-// phi = 2 pi u1, z = (1 - u2)(1 + lower) - lower (Dupuy & Benyoub, Listing 3).
-inline Vec3 sample_cap(float lower, float u1, float u2)
+// A direction drawn uniformly from the spherical cap z in (-lower, 1] around +z of the given
+// height 1 + lower: phi = 2 pi u1, z = (1 - u2) height - lower (Dupuy & Benyoub, Listing 3).
+inline Vec3 sample_cap_of_height(float lower, float height, float u1, float u2)
 {
-    float z = (1.0f - u2) * (1.0f + lower) - lower;
+    float z = (1.0f - u2) * height - lower;
     float sin_theta = std::sqrt(std::clamp(1.0f - z * z, 0.0f, 1.0f));
     float sin_phi, cos_phi;
     sincos_2pi(u1, sin_phi, cos_phi);
     return {sin_theta * cos_phi, sin_theta * sin_phi, z};
 }
+
+// The same with the height 1 + lower.
+inline Vec3 sample_cap(float lower, float u1, float u2) { return sample_cap_of_height(lower, 1.0f + lower, u1, u2); }
 
 inline Sample sample_caps(Vec3 i, float ax, float ay, float u1, float u2)
 {

@@ -41,7 +41,7 @@ inline Sample sample_caps_iso(Vec3 n, Vec3 i, float alpha, float u1, float u2)
     s.m = normalize(a);
     s.o = reflect(i, s.m);
     s.pdf_o = 0.5f * ratio * ratio / (pi * alpha * alpha) * inv_sum;
-    s.pdf_m = 4.0f * dot(i, s.m) * s.pdf_o;
+    s.pdf_m = 4.0f * std::fmax(0.0f, dot(i, s.m)) * s.pdf_o;  // the VNDF's max(0, i.m)
     float oz = dot(s.o, n);
     float g2 = G2_from_t(iz, oz, ti, length(stretch_about(s.o, n, alpha)));
     s.weight = iz > 0.0f ? g2 / (2.0f * iz * inv_sum) : 0.0f;

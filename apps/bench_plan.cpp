@@ -33,14 +33,14 @@ BenchJob job_named(const std::string& name)
     for (BenchJob job : all_bench_jobs)
         if (job_name(job) == name)
             return job;
-    throw UsageError("--jobs", name, "write, furnace or world");
+    throw UsageError("--jobs", name, "write, furnace, world or per-sample");
 }
 
 BenchPlan plan_bench(const BenchCommand& cmd)
 {
     BenchPlan plan{parse_name_list("--methods", cmd.methods, method_names()),
                    parse_name_list("--precisions", cmd.precisions, {"precise", "relaxed"}),
-                   parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world"}), {}, {}};
+                   parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world", "per-sample"}), {}, {}};
     plan_settings(cmd, plan.settings);
     std::array<float, 2> alpha = parse_alpha("--alpha", cmd.alpha);
     if (alpha[0] != alpha[1])

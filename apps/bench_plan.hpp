@@ -15,7 +15,7 @@ namespace ggxapp {
 
 struct BenchCommand {
     std::string alpha = "0.3", theta = "60", device;
-    std::string methods = "all", precisions = "precise,relaxed", jobs = "write,furnace,world";
+    std::string methods = "all", precisions = "precise,relaxed", jobs = "write,furnace,world,per-sample";
     std::string count = "2^24", native_count = "2^22", repeats = "7", threads = "2";
     std::string scene = "16", cell_samples = "2^14", budget_ms = "1";
     bool no_native = false, no_accuracy = false, no_startup = false;

@@ -14,6 +14,20 @@ namespace {
 
 constexpr std::uint32_t world_count_limit = 1u << 22;
 
+// The store job's kernel: the write job's bytes (three planes of m, one of
+// pdf_m) from values that cost nothing to compute.
+const char* store_source = R"CL(
+__kernel void store_only(__global float* restrict m, __global float* restrict pdf_m, uint count, float seed)
+{
+    uint j = get_global_id(0);
+    float x = (float)j * 1e-7f + seed;
+    m[j] = x;
+    m[j + count] = x + 1.0f;
+    m[j + 2 * count] = x + 2.0f;
+    pdf_m[j] = x + 3.0f;
+}
+)CL";
+
 cl::Buffer device_copy(ggxcl::Sampler& sampler, std::vector<float>& host)
 {
     return cl::Buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, host.size() * sizeof(float),
@@ -84,6 +98,8 @@ std::string job_name(BenchJob job)
     case BenchJob::write: return "write";
     case BenchJob::furnace: return "furnace";
     case BenchJob::world: return "world";
+    case BenchJob::per_sample: return "per-sample";
+    case BenchJob::store: return "store";
     }
     return "?";
 }
@@ -108,11 +124,25 @@ DeviceTimer::DeviceTimer(ggxcl::Sampler& sampler, std::uint32_t count)
     world_in_.view = device_copy(sampler, views);
     world_in_.views_above_horizon = true;  // true by construction
     world_in_.isotropic = true;
+    std::vector<float> alphas(2 * std::size_t(world_count_));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> alpha(0.05f, 1.0f);
+    for (float& a : alphas)
+        a = alpha(rng);
+    for (std::uint32_t j = 0; j < world_count_; ++j)  // the views of the world job, read as tangent-space views
+        if (views[2 * std::size_t(world_count_) + j] < 0.0f)
+            views[2 * std::size_t(world_count_) + j] = -views[2 * std::size_t(world_count_) + j];
+    per_sample_in_.view = device_copy(sampler, views);
+    per_sample_in_.alpha = device_copy(sampler, alphas);
+    per_sample_in_.views_above_horizon = true;
+    cl::Program store(context, store_source);
+    store.build({sampler.device()});
+    store_ = cl::Kernel(store, "store_only");
 }
 
 std::uint32_t DeviceTimer::count_of(BenchJob job) const
 {
-    return job == BenchJob::world ? world_count_ : count_;
+    return job == BenchJob::world || job == BenchJob::per_sample ? world_count_ : count_;
 }
 
 cl::Event DeviceTimer::launch(BenchJob job, const ggxcl::SampleParams& params, std::uint64_t seed)
@@ -131,6 +161,17 @@ cl::Event DeviceTimer::launch(BenchJob job, const ggxcl::SampleParams& params, s
         world.world_space = true;
         world.alpha_y = world.alpha_x;
         return sampler_.enqueue(queue, world, {seed, 0, world_count_}, world_out_, 0, world_in_);
+    }
+    case BenchJob::per_sample:
+        return sampler_.enqueue(queue, params, {seed, 0, world_count_}, write_out_, 0, per_sample_in_);
+    case BenchJob::store: {
+        store_.setArg(0, write_out_.m);
+        store_.setArg(1, write_out_.pdf_m);
+        store_.setArg(2, cl_uint(count_));
+        store_.setArg(3, cl_float(seed));
+        cl::Event done;
+        queue.enqueueNDRangeKernel(store_, cl::NullRange, cl::NDRange(count_), cl::NullRange, nullptr, &done);
+        return done;
     }
     }
     return {};

@@ -5,7 +5,11 @@
 //   write   - tangent-space view, m and pdf_m written to device buffers;
 //   furnace - the fused white-furnace estimator, nothing written but sums;
 //   world   - world-space normal and view read per sample, o written in world
-//             space (classic methods build a basis, caps-iso needs none).
+//             space (classic methods build a basis, caps-iso needs none);
+//   per-sample - a view and an anisotropic alpha read per sample from buffers
+//             (the renderer's case), m and pdf_m written;
+//   store   - the ceiling of the write job: a kernel that stores the same
+//             bytes (m and pdf_m planes) and computes nothing.
 #pragma once
 
 #include <cstdint>
@@ -16,8 +20,9 @@
 
 namespace ggxapp {
 
-enum class BenchJob { write, furnace, world };
-inline constexpr BenchJob all_bench_jobs[] = {BenchJob::write, BenchJob::furnace, BenchJob::world};
+enum class BenchJob { write, furnace, world, per_sample, store };
+inline constexpr BenchJob all_bench_jobs[] = {BenchJob::write, BenchJob::furnace, BenchJob::world, BenchJob::per_sample,
+                                              BenchJob::store};
 std::string job_name(BenchJob job);
 
 // Nanoseconds per sample: median, fastest and slowest of the timed runs.
@@ -58,6 +63,8 @@ private:
     ggxcl::Sampler& sampler_;
     std::uint32_t count_, world_count_;
     ggxcl::DeviceOutputs write_out_, world_out_;
+    ggxcl::DeviceInputs per_sample_in_;
+    cl::Kernel store_;
     ggxcl::DeviceInputs world_in_;
     cl::Buffer sums_;
     bool wall_clock_ = false;

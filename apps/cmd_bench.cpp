@@ -6,6 +6,7 @@
 // efficiency and RMSE at equal time, start-up time.  Prints the Markdown
 // report; --csv, --charts and --markdown write the CSV, the two PNG charts
 // and the report (docs/BENCHMARKS.md is made by it).
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -60,6 +61,9 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
                     tasks.push_back({BenchJob::write, p});
                 }
             }
+    const bool writes = std::find(plan.jobs.begin(), plan.jobs.end(), "write") != plan.jobs.end();
+    if (writes)  // the write job's ceiling, once: the same bytes stored, nothing computed
+        tasks.push_back({BenchJob::store, plan.base});
     std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
     DeviceTimer timer(sampler, report.count);
     std::vector<Timing> timings = timer.time_interleaved(tasks, report.repeats);
@@ -69,6 +73,10 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         const ggxcl::SampleParams& p = tasks[t].params;
         std::string precision(ggxcl::precision_name(p.precision));
+        if (tasks[t].job == BenchJob::store) {
+            report.rows.push_back(row_of("all", "store-only", "write", timings[t]));
+            continue;
+        }
         BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), p.guards ? precision : precision + "-unguarded",
                               job_name(tasks[t].job), timings[t]);
         if (!p.guards) {  // measured for its speed only
@@ -100,6 +108,8 @@ void measure_native(const BenchPlan& plan, BenchReport& report)
         ggxcl::Method method = ggxcl::parse_method(name);
         for (const std::string& job_text : plan.jobs) {
             BenchJob job = job_named(job_text);
+            if (job == BenchJob::per_sample)  // the native baseline has no such job
+                continue;
             BenchRow row = row_of(name, "native", job_text, native_timing(method, job, setup));
             if (job == BenchJob::write) {
                 row.has_error = true;
@@ -208,7 +218,7 @@ Prepare add_bench_command(CLI::App& app)
     cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
     cmd->add_option("--precisions", s->precisions, "comma-separated precision modes")->capture_default_str();
     cmd->add_option("--jobs", s->jobs, "comma-separated jobs: write (m + pdf_m), furnace (fused estimator), "
-                                       "world (world-space o)")->capture_default_str();
+                                       "world (world-space o), per-sample (a view and alpha per sample read)")->capture_default_str();
     cmd->add_option("-n,--count", s->count, "samples per timed device run")->capture_default_str();
     cmd->add_option("--native-count", s->native_count, "samples per timed native run")->capture_default_str();
     cmd->add_option("--repeats", s->repeats, "timed runs per row, 5..101 (median reported)")->capture_default_str();

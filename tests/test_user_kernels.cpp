@@ -87,7 +87,7 @@ TEST_CASE("prepending the embedded headers gives the bits of including them")
     ggxcl::SampleParams p{ggxcl::Method::bounded, 0.3f, 0.1f, ggxcl::view_from_angles(40, 75)};
     cl::Program prepended(sampler.context(),
                           ggxcl::kernel_source("ggx_samplers.h") + ggxtest::user_samples_source(false));
-    prepended.build({sampler.device()});
+    prepended.build({sampler.device()}, ggxcl::device_options(sampler.device()).c_str());
     SamplePlanes mine = ggxtest::run_user_samples(sampler, prepended, p, test_range);
     CHECK(same_bits(mine, ggxtest::enqueue_samples(sampler, sampler.queue(), p, test_range)));
 }

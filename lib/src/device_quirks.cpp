@@ -22,6 +22,11 @@ std::string device_quirk_options(const cl::Device& device)
     return options;
 }
 
+bool kernel_writes_look_uninitialized(const cl::Device& device)
+{
+    return platform_name(device).find("Oclgrind") != std::string::npos;
+}
+
 bool platform_caches_programs(const cl::Device& device)
 {
     const std::string name = platform_name(device);

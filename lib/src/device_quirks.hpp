@@ -25,4 +25,10 @@ std::string device_quirk_options(const cl::Device& device);
 // program, which a build from its cache does not.
 bool platform_caches_programs(const cl::Device& device);
 
+// Whether the device is Oclgrind, whose uninitialized-value checker keeps
+// a buffer created without host data "uninitialized" even after a kernel
+// has written it, so that a second kernel reading it is reported: buffers
+// one kernel writes for another are first zeroed by a host write there.
+bool kernel_writes_look_uninitialized(const cl::Device& device);
+
 } // namespace ggxcl::detail

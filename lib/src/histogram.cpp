@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "cl_call.hpp"
+#include "device_quirks.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
 #include "kernel_launch.hpp"
@@ -89,6 +90,10 @@ struct Sampler::HistogramRun {
     std::vector<cl_uint> count_by_indices(std::uint64_t start, std::uint64_t n) const
     {
         cl::Buffer indices = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, n * sizeof(cl_uint));
+        if (detail::kernel_writes_look_uninitialized(sampler.device_)) {
+            const std::vector<cl_uint> zeros(n, 0u);
+            sampler.queue_.enqueueWriteBuffer(indices, CL_TRUE, 0, n * sizeof(cl_uint), zeros.data());
+        }
         cl::Buffer counts = zeroed_counts();
         auto make = [&](const std::string& name) {
             KernelLease lease = sampler.kernel("ggx_histogram.cl", name, options);

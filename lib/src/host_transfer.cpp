@@ -227,25 +227,37 @@ void Sampler::run_chunks(const SampleParams& params, const SampleRange& range, F
             QueueDrain drain{queue_};      // before the slots go, whatever ends the pass
             std::uint64_t next = start;    // the first sample not yet enqueued
             ChunkSlot* pending = nullptr;  // enqueued, not yet delivered
+            auto deliver_pending = [&] {
+                SampleView view = pending->view();
+                deliver(view, map ? nullptr : &pending->host_copy(), pending->start);
+                pending->release(queue_);
+                start = pending->start + view.count;
+            };
             for (int k = 0; start < range.count; ++k) {  // start: the first sample not delivered
                 ChunkSlot* slot = nullptr;
                 if (next < range.count) {
                     slot = &slots[k % 2];  // its previous chunk was delivered and released in the last round
                     std::uint64_t n = std::min(capacity, range.count - next);
-                    // Blocking, on the in-order queue: after the previous chunk's kernel has read them.
-                    inputs.upload(queue_, per_sample, next, n, capacity);
-                    enqueue(queue_, params, {range.seed, range.first + next, n}, slot->outputs(),
-                            std::uint32_t(capacity), inputs.buffers);
+                    try {
+                        // Blocking, on the in-order queue: after the previous chunk's kernel has read them.
+                        inputs.upload(queue_, per_sample, next, n, capacity);
+                        enqueue(queue_, params, {range.seed, range.first + next, n}, slot->outputs(),
+                                std::uint32_t(capacity), inputs.buffers);
+                    } catch (...) {
+                        // The chunk drawn before this one may be whole: it reaches the sink first.
+                        if (pending)
+                            try {
+                                deliver_pending();
+                            } catch (...) {
+                            }
+                        throw;
+                    }
                     slot->start = next;
                     slot->fetch(queue_, n);
                     next += n;
                 }
-                if (pending) {
-                    SampleView view = pending->view();
-                    deliver(view, map ? nullptr : &pending->host_copy(), pending->start);
-                    pending->release(queue_);
-                    start = pending->start + view.count;
-                }
+                if (pending)
+                    deliver_pending();
                 pending = slot;
             }
         });

@@ -3,6 +3,7 @@
 #include "ggxcl/user_kernels.hpp"
 
 #include "build_program.hpp"
+#include "device_quirks.hpp"
 
 namespace ggxcl {
 
@@ -13,6 +14,11 @@ std::string device_include_option()
     if (dir.find_first_of(" \t") != std::string::npos)
         return "-I\"" + dir + "\"";
     return "-I" + dir;
+}
+
+std::string device_options(const cl::Device& device)
+{
+    return detail::device_quirk_options(device);
 }
 
 cl::Program build_user_program(const cl::Context& context, const cl::Device& device, const std::string& source,

@@ -8,7 +8,8 @@
 //   include: `#include "ggx_samplers.h"` in your source, built with
 //            device_include_option() in the options (build_user_program
 //            adds it);
-//   prepend: kernel_source("ggx_samplers.h") + your source (kernel_sources.hpp).
+//   prepend: kernel_source("ggx_samplers.h") + your source (kernel_sources.hpp),
+//            built with device_options(device) among the options.
 #pragma once
 
 #include <string>
@@ -35,8 +36,13 @@ std::string device_include_option();
 // choosing to name in GGXCL_DEVICE_INCLUDE_DIR.  Throws Error on failure.
 void write_device_headers(const std::string& directory);
 
-// Builds `source` for `device` with the device headers on the include path
-// and `options` appended.  A failed build throws BuildError carrying the
+// The options the library builds every program with on `device` (for
+// instance -DGGX_NO_FMA=1 where the device has no hardware fma); a program
+// of yours built without them may round differently from Sampler::enqueue.
+std::string device_options(const cl::Device& device);
+
+// Builds `source` for `device` with the device headers on the include path,
+// device_options(device) and `options` appended.  A failed build throws BuildError carrying the
 // CL error name, the options and the build log.
 cl::Program build_user_program(const cl::Context& context, const cl::Device& device, const std::string& source,
                                const std::string& options = "");

@@ -71,9 +71,10 @@ vfloat word_to_unit(vuint w) { return __builtin_convertvector((vint)(w >> 8), vf
 void sincos_2pi(vfloat u, vfloat& s, vfloat& c)
 {
     const vfloat q = 4.0f * u;
-    vfloat j;
-    for (int l = 0; l < lanes; ++l)
-        j[l] = std::nearbyint(q[l]);
+    // Round to nearest (even) for 0 <= q < 2^22 by adding and removing 1.5 * 2^23, lane-wise.
+    volatile float magic_value = 12582912.0f;  // volatile: the compiler may not fold (q + m) - m into q
+    const float magic = magic_value;
+    const vfloat j = (q + magic) - magic;
     const vfloat f = q - j, x = f * f;
     vfloat ps = (-4.602149129e-03f * x + 7.968020439e-02f) * x - 6.459634900e-01f;
     ps = x * ps - 4.371138829e-08f;

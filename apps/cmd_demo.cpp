@@ -51,7 +51,9 @@ std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult
        << demo.options.phi << " deg, seed " << demo.options.seed << "; device: " << device << "\n\n"
        << "Each method's reflected directions o, binned on the device over (phi, cos theta) in bins of equal solid "
           "angle, against the counts its pdf predicts (chi-square, sparse bins pooled). Throughput is device "
-          "sampling and binning, precise mode.\n\n"
+          "sampling and binning in "
+       << demo.options.precision << " mode" << (demo.options.precision == "precise" ? " (the default)" : "")
+       << ".\n\n"
        << "| method | chi-square | dof | p-value | samples/s | files |\n|---|---|---|---|---|---|\n";
     for (const MethodResult& r : results) {
         std::string name(ggxcl::method_name(r.method));

@@ -92,6 +92,7 @@ TEST_CASE("ggx demo writes clouds, histograms and a summary page for every metho
         CHECK(h["p_value"].get<double>() > 1e-4);
         CHECK(page.find("| " + std::string(method) + " |") != std::string::npos);
     }
+    CHECK(page.find("binning in precise mode (the default)") != std::string::npos);  // the mode of the throughput
     fs::remove_all(dir);
 }
 

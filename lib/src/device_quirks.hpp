@@ -25,10 +25,12 @@ std::string device_quirk_options(const cl::Device& device);
 // program, which a build from its cache does not.
 bool platform_caches_programs(const cl::Device& device);
 
-// Whether the device is Oclgrind, whose uninitialized-value checker keeps
-// a buffer created without host data "uninitialized" even after a kernel
-// has written it, so that a second kernel reading it is reported: buffers
-// one kernel writes for another are first zeroed by a host write there.
+// Whether the device is Oclgrind, whose uninitialized-value checker reports
+// the histogram's count kernel reading, as local-memory addresses, the bin
+// indices the bins kernel wrote into a buffer created without host data
+// (every index is written first; a minimal two-kernel chain is not
+// reported, so the cause inside Oclgrind is not pinned down).  A host write
+// of zeros first makes the reports go away: the library does that there.
 bool kernel_writes_look_uninitialized(const cl::Device& device);
 
 } // namespace ggxcl::detail

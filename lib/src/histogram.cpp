@@ -45,6 +45,25 @@ struct Sampler::HistogramRun {
     const SampleRange& range;
     std::size_t bins;
     std::string options;
+    cl::Buffer counts;   // bins + 1 counters, zeroed before each pass
+    cl::Buffer indices;  // CPU strategy: a pass's bin indices
+    std::uint32_t counters = 1;  // CPU strategy: work-groups of one that count a pass
+
+    HistogramRun(Sampler& s, const SampleParams& p, const SampleRange& r, std::size_t bin_count, std::string opts,
+                 bool by_indices)
+        : sampler(s), params(p), range(r), bins(bin_count), options(std::move(opts))
+    {
+        counts = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
+        if (!by_indices)
+            return;
+        const std::uint64_t n = std::min(samples_per_index_pass, range.count);
+        indices = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, n * sizeof(cl_uint));
+        if (detail::kernel_writes_look_uninitialized(sampler.device_)) {
+            const std::vector<cl_uint> zeros(n, 0u);
+            sampler.queue_.enqueueWriteBuffer(indices, CL_TRUE, 0, n * sizeof(cl_uint), zeros.data());
+        }
+        counters = std::uint32_t(4 * sampler.device_.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());
+    }
 
     void set_sample_args(cl::Kernel& k, std::uint64_t start, std::uint64_t n) const
     {
@@ -55,17 +74,15 @@ struct Sampler::HistogramRun {
         detail::set_param_args(k, 4, params, {});
     }
 
-    cl::Buffer zeroed_counts() const
+    void zero_counts() const
     {
-        cl::Buffer counts = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
         // Zeroed by a write, not clEnqueueFillBuffer: Oclgrind's checker takes
         // filled memory as uninitialized (shown by a minimal kernel in test_oclgrind).
         const std::vector<cl_uint> zeros(bins + 1, 0u);
         sampler.queue_.enqueueWriteBuffer(counts, CL_TRUE, 0, (bins + 1) * sizeof(cl_uint), zeros.data());
-        return counts;
     }
 
-    std::vector<cl_uint> read(const cl::Buffer& counts) const
+    std::vector<cl_uint> read_counts() const
     {
         std::vector<cl_uint> host(bins + 1);
         sampler.queue_.enqueueReadBuffer(counts, CL_TRUE, 0, (bins + 1) * sizeof(cl_uint), host.data());
@@ -76,25 +93,20 @@ struct Sampler::HistogramRun {
     std::vector<cl_uint> count_in_groups(std::uint64_t start, std::uint64_t n) const
     {
         KernelLease lease = sampler.kernel("ggx_histogram.cl", "ggx_histogram", options);
-        cl::Buffer counts = zeroed_counts();
+        zero_counts();
         set_sample_args(*lease, start, n);
         lease->setArg(15, counts);
         const std::size_t group = sampler.work_group_size();
         std::size_t groups = (n + group * samples_per_item - 1) / (group * samples_per_item);
         detail::before_launch();
         sampler.queue_.enqueueNDRangeKernel(*lease, cl::NullRange, cl::NDRange(groups * group), cl::NDRange(group));
-        return read(counts);
+        return read_counts();
     }
 
     // Bin indices by a vectorizable kernel, then counted without atomics (CPUs).
     std::vector<cl_uint> count_by_indices(std::uint64_t start, std::uint64_t n) const
     {
-        cl::Buffer indices = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, n * sizeof(cl_uint));
-        if (detail::kernel_writes_look_uninitialized(sampler.device_)) {
-            const std::vector<cl_uint> zeros(n, 0u);
-            sampler.queue_.enqueueWriteBuffer(indices, CL_TRUE, 0, n * sizeof(cl_uint), zeros.data());
-        }
-        cl::Buffer counts = zeroed_counts();
+        zero_counts();
         auto make = [&](const std::string& name) {
             KernelLease lease = sampler.kernel("ggx_histogram.cl", name, options);
             set_sample_args(*lease, start, n);
@@ -102,7 +114,6 @@ struct Sampler::HistogramRun {
             return lease;
         };
         detail::launch_split(sampler.queue_, sampler.work_group_size(), make, "ggx_histogram_bins", cl_uint(n), nullptr);
-        const std::uint32_t counters = std::uint32_t(4 * sampler.device_.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());
         const std::uint32_t per_counter = std::uint32_t((n + counters - 1) / counters);
         KernelLease count = sampler.kernel("ggx_histogram.cl", "ggx_histogram_count", options);
         count->setArg(0, indices);
@@ -112,7 +123,7 @@ struct Sampler::HistogramRun {
         detail::before_launch();
         sampler.queue_.enqueueNDRangeKernel(*count, cl::NullRange, cl::NDRange((n + per_counter - 1) / per_counter),
                                             cl::NDRange(1));
-        return read(counts);
+        return read_counts();
     }
 };
 
@@ -129,10 +140,10 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
     SampleParams unit = normalized(params);
     return detail::translate_cl_errors([&] {
         check_bins(bins_z, bins_phi, direction, device_.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>());
-        HistogramRun run{*this, unit, range, std::size_t(bins_z) * bins_phi,
-                         histogram_options(unit, bins_z, bins_phi, direction)};
-        Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(run.bins, 0), 0};
         const bool cpu = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
+        HistogramRun run(*this, unit, range, std::size_t(bins_z) * bins_phi,
+                         histogram_options(unit, bins_z, bins_phi, direction), cpu);
+        Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(run.bins, 0), 0};
         for (std::uint64_t start = 0; start < range.count;) {
             std::uint64_t n = std::min(cpu ? samples_per_index_pass : samples_per_launch, range.count - start);
             std::vector<cl_uint> counts = cpu ? run.count_by_indices(start, n) : run.count_in_groups(start, n);

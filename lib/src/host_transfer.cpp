@@ -112,7 +112,7 @@ public:
     {
         for (Field f : all_fields)
             if (fields.has(f))
-                buffer(f) = detail::device_buffer(context, map ? CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR : CL_MEM_WRITE_ONLY,
+                out_.of(f) = detail::device_buffer(context, map ? CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR : CL_MEM_WRITE_ONLY,
                                                   bytes(field_columns(f) * capacity));
     }
 
@@ -130,9 +130,9 @@ public:
                 continue;
             if (map_)
                 mapped_[int(f)] = static_cast<float*>(
-                    queue.enqueueMapBuffer(buffer(f), CL_FALSE, CL_MAP_READ, 0, bytes(field_columns(f) * capacity_)));
+                    queue.enqueueMapBuffer(out_.of(f), CL_FALSE, CL_MAP_READ, 0, bytes(field_columns(f) * capacity_)));
             else
-                read_planes(queue, buffer(f), field_columns(f), n, capacity_, host(f));
+                read_planes(queue, out_.of(f), field_columns(f), n, capacity_, host(f));
         }
         queue.enqueueMarkerWithWaitList(nullptr, &ready_);
         queue.flush();
@@ -159,15 +159,10 @@ public:
             return;
         for (Field f : all_fields)
             if (fields_.has(f))
-                queue.enqueueUnmapMemObject(buffer(f), mapped_[int(f)]);
+                queue.enqueueUnmapMemObject(out_.of(f), mapped_[int(f)]);
     }
 
 private:
-    cl::Buffer& buffer(Field f)
-    {
-        cl::Buffer* buffers[] = {&out_.m, &out_.o, &out_.pdf_m, &out_.pdf_o, &out_.weight};
-        return *buffers[int(f)];
-    }
     std::vector<float>& host(Field f)
     {
         std::vector<float>* hosts[] = {&host_.m, &host_.o, &host_.pdf_m, &host_.pdf_o, &host_.weight};

@@ -20,10 +20,9 @@ constexpr const char* bulk_file = "ggx_bulk.cl";
 unsigned write_mask_of(const DeviceOutputs& out)
 {
     unsigned mask = 0;
-    const cl::Buffer* buffers[] = {&out.m, &out.o, &out.pdf_m, &out.pdf_o, &out.weight};
-    for (unsigned k = 0; k < 5; ++k)
-        if ((*buffers[k])() != nullptr)
-            mask |= 1u << k;
+    for (Field f : all_fields)
+        if (out.of(f)() != nullptr)
+            mask |= 1u << static_cast<unsigned>(f);
     return mask;
 }
 
@@ -31,6 +30,17 @@ unsigned write_mask_of(const DeviceOutputs& out)
 
 
 using namespace detail;
+
+cl::Buffer& DeviceOutputs::of(Field field)
+{
+    cl::Buffer* buffers[] = {&m, &o, &pdf_m, &pdf_o, &weight};
+    return *buffers[static_cast<int>(field)];
+}
+
+const cl::Buffer& DeviceOutputs::of(Field field) const
+{
+    return const_cast<DeviceOutputs*>(this)->of(field);
+}
 
 const std::vector<float>& SampleSet::column_source(Field field) const
 {
@@ -109,9 +119,8 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
             k.setArg(2, cl_uint(range.count));
             k.setArg(3, cl_uint(stride ? stride : range.count));
             set_param_args(k, 4, unit, inputs);
-            const cl::Buffer* buffers[] = {&outputs.m, &outputs.o, &outputs.pdf_m, &outputs.pdf_o, &outputs.weight};
-            for (cl_uint b = 0; b < 5; ++b)
-                k.setArg(15 + b, *buffers[b]);
+            for (Field f : all_fields)
+                k.setArg(15 + static_cast<cl_uint>(f), outputs.of(f));
             return lease;
         };
         return launch_split(queue, work_group_size(), make, "ggx_sample_bulk", cl_uint(range.count), wait);
@@ -137,11 +146,9 @@ void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceI
         if (inputs.alpha() != nullptr) scratch_inputs.alpha = floats(2, half);
         if (inputs.normal() != nullptr) scratch_inputs.normal = floats(3, unit_z);
         DeviceOutputs outputs;
-        cl::Buffer* targets[] = {&outputs.m, &outputs.o, &outputs.pdf_m, &outputs.pdf_o, &outputs.weight};
-        const Field order[] = {Field::m, Field::o, Field::pdf_m, Field::pdf_o, Field::weight};
-        for (int f = 0; f < 5; ++f)
-            if (fields.has(order[f]))
-                *targets[f] = floats(f < 2 ? 3 : 1, zero);
+        for (Field f : all_fields)
+            if (fields.has(f))
+                outputs.of(f) = floats(field_columns(f), zero);
         enqueue(queue_, params, {0, 0, count}, outputs, 0, scratch_inputs).wait();
         return 0;
     });

@@ -60,6 +60,8 @@ struct DeviceInputs {
 // computed and written.
 struct DeviceOutputs {
     cl::Buffer m, o, pdf_m, pdf_o, weight;
+    cl::Buffer& of(Field field);  // the buffer of `field`
+    const cl::Buffer& of(Field field) const;
 };
 
 // Counts of directions in bins of equal solid angle over (phi, cos theta):

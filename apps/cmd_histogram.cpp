@@ -50,8 +50,9 @@ struct HistogramCommand {
 void run_histogram(const HistogramCommand& command, const HistogramJob& job, double level)
 {
     check_writable_folder("--out", job.prefix);
+    std::future<std::vector<double>> expectation = start_expectation(job);  // while the device opens
     ggxcl::Sampler sampler(command.options.device);
-    HistogramResult result = run_histogram_job(sampler, job);
+    HistogramResult result = run_histogram_job(sampler, job, std::move(expectation));
     std::cout << job.prefix << ": chi-square " << result.chi_square << " on " << result.dof << " dof, p = "
               << result.p_value << (result.png.empty() ? "" : ", figure " + result.png) << "\n";
     if (level > 0.0 && result.p_value < level)

@@ -5,7 +5,9 @@
 // (float64, bins_z x bins_phi), PREFIX.json and PREFIX.png.
 #pragma once
 
+#include <future>
 #include <string>
+#include <vector>
 
 #include <ggxcl/ggxcl.hpp>
 
@@ -28,6 +30,14 @@ struct HistogramResult {
     std::string png;  // path of the figure, empty when none was drawn
 };
 
+// The expected probability of each bin (the reference's quadrature of the
+// pdf of job.against), computed on threads of its own while the caller
+// opens the device and the device bins.
+std::future<std::vector<double>> start_expectation(const HistogramJob& job);
+
+HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job,
+                                  std::future<std::vector<double>> expectation);
+// Starts the expectation itself, beside the warm-up run.
 HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job);
 
 } // namespace ggxapp

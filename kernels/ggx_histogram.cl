@@ -50,21 +50,20 @@ GGX_INLINE float ggx_rough_angle(float x, float y)
     return y < 0.0f ? GGX_TWO_PI - t : t;
 }
 
-// The phi bin: the rough angle's bin, moved by one where (x, y) lies below
-// its lower edge or on or past its upper edge.  Edge k is the direction
-// (cos, sin) of 2 pi k / nphi from ggx_sincos_2pi (exact at the quarter
-// turns, within an ulp elsewhere; computed, not loaded from a table, so
-// that the code vectorizes); the sign of edge x d decides the side.
+// The phi bin: the edge nearest to the rough angle decides it.  Edge e is
+// the direction (cos, sin) of 2 pi e / nphi from ggx_sincos_2pi (exact at the
+// quarter turns, within an ulp elsewhere; computed, not loaded from a table,
+// so that the code vectorizes); (x, y) on or counterclockwise of it lies in
+// bin e, clockwise of it in bin e - 1 (the sign of edge x d).  Exact while
+// the rough angle's error stays under half a bin (the host allows at most
+// 2^16 phi bins: half a bin is 4.8e-5 rad).  The pole (0, 0) gets angle 0:
+// bin 0.
 GGX_INLINE int ggx_phi_bin(float x, float y)
 {
-    int b = clamp((int)(ggx_rough_angle(x, y) * (GGX_BINS_PHI / GGX_TWO_PI)), 0, GGX_BINS_PHI - 1);
-    float s_lo, c_lo, s_hi, c_hi;
-    ggx_sincos_2pi((float)b / (float)GGX_BINS_PHI, &s_lo, &c_lo);
-    ggx_sincos_2pi((float)(b + 1) / (float)GGX_BINS_PHI, &s_hi, &c_hi);
-    float lower = c_lo * y - s_lo * x;
-    float upper = c_hi * y - s_hi * x;
-    int on_axis = x == 0.0f && y == 0.0f;  // the pole: angle 0
-    b += on_axis ? 0 : (lower < 0.0f ? -1 : (upper >= 0.0f ? 1 : 0));
+    int e = (int)rint(ggx_rough_angle(x, y) * (GGX_BINS_PHI / GGX_TWO_PI));  // 0 .. nphi
+    float s, c;
+    ggx_sincos_2pi((float)e / (float)GGX_BINS_PHI, &s, &c);
+    int b = c * y - s * x < 0.0f ? e - 1 : e;
     return b < 0 ? b + GGX_BINS_PHI : (b >= GGX_BINS_PHI ? b - GGX_BINS_PHI : b);
 }
 

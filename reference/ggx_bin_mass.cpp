@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "ggx_adaptive.hpp"
 
@@ -150,10 +151,21 @@ std::vector<double> bin_masses(const std::function<double(const Vec3&)>& density
                                double rel_tol)
 {
     std::vector<double> out(size_t(nz) * size_t(nphi));
-    for (int jz = 0; jz < nz; ++jz)
-        for (int jp = 0; jp < nphi; ++jp)
-            out[size_t(jz) * nphi + jp] = bin_mass(density, s, -1.0 + 2.0 * jz / nz, -1.0 + 2.0 * (jz + 1) / nz,
-                                                   2.0 * pi * jp / nphi, 2.0 * pi * (jp + 1) / nphi, rel_tol);
+    auto rows_from = [&](int first_row, int step) {
+        for (int jz = first_row; jz < nz; jz += step)
+            for (int jp = 0; jp < nphi; ++jp)
+                out[size_t(jz) * nphi + jp] = bin_mass(density, s, -1.0 + 2.0 * jz / nz, -1.0 + 2.0 * (jz + 1) / nz,
+                                                       2.0 * pi * jp / nphi, 2.0 * pi * (jp + 1) / nphi, rel_tol);
+    };
+    // The bins are independent: rows go round-robin to one thread per core, each bin computed
+    // exactly as by a single thread.
+    const int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, std::max(nz, 1));
+    std::vector<std::thread> helpers;
+    for (int t = 1; t < threads; ++t)
+        helpers.emplace_back(rows_from, t, threads);
+    rows_from(0, threads);
+    for (std::thread& helper : helpers)
+        helper.join();
     return out;
 }
 

@@ -269,6 +269,12 @@ TEST_CASE("device histogram counts what the host counts from the same samples")
         CHECK(moved <= count / 10000);
     }
     CHECK_THROWS_AS(ggxtest::sampler().histogram(test_params(), {0, 0, 10}, 0, 4), ggxcl::InvalidArgument);
+    try {
+        ggxtest::sampler().histogram(test_params(), {0, 0, 10}, 1, 65537);
+        FAIL("2^16 + 1 phi bins were accepted");
+    } catch (const ggxcl::InvalidArgument& e) {
+        CHECK(std::string(e.what()).find("65537") != std::string::npos);  // the value; the range with it
+    }
 }
 
 TEST_CASE("a range split across several samplers arrives in order with the one-sampler bits")

@@ -24,6 +24,8 @@ std::string histogram_options(const SampleParams& params, int bins_z, int bins_p
            " -DGGX_BINS_PHI=" + std::to_string(bins_phi) + " -DGGX_BIN_M=" + (direction == Field::m ? "1" : "0");
 }
 
+constexpr int max_phi_bins = 1 << 16;
+
 void check_bins(int bins_z, int bins_phi, Field direction, std::size_t local_bytes)
 {
     std::size_t most = local_bytes / sizeof(cl_uint) - 1;
@@ -31,6 +33,10 @@ void check_bins(int bins_z, int bins_phi, Field direction, std::size_t local_byt
         throw InvalidArgument("bins", std::to_string(bins_z) + "x" + std::to_string(bins_phi),
                               "at least 1x1 and at most " + std::to_string(most) +
                                   " bins in all (the device's local memory)");
+    if (bins_phi > max_phi_bins)
+        throw InvalidArgument("bins_phi", std::to_string(bins_phi),
+                              "1 .. " + std::to_string(max_phi_bins) +
+                                  " (the device's phi bin is exact while half a bin exceeds its angle's 1e-5 rad error)");
     if (direction != Field::o && direction != Field::m)
         throw InvalidArgument("direction", std::string(field_name(direction)), "o or m");
 }

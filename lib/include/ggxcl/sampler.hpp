@@ -165,6 +165,8 @@ public:
 
     // Bins the directions (Field::o or Field::m) of `range` on the device;
     // only the counts come back, so the count of samples is unbounded.
+    // bins_phi is 1 .. 65536; bins_z * bins_phi fits the device's local
+    // memory (InvalidArgument otherwise).
     Histogram histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
                         Field direction = Field::o);
 

@@ -6,6 +6,11 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.hpp"
 #include "child_process.hpp"
 
 namespace ggxapp {
@@ -28,13 +33,57 @@ double ns_per_sample(std::vector<std::string> arguments, const std::string& devi
     return elapsed.count() / count;
 }
 
-Timing median_of_runs(const std::vector<std::string>& arguments, const std::string& device, std::uint32_t count)
+// Every run writes new files: those of the run before are removed first (a
+// replaced file's pages would be freed inside the timed run).
+Timing median_of_runs(const std::vector<std::string>& arguments, const std::string& device, std::uint32_t count,
+                      const fs::path& dir)
 {
+    auto clear = [&] {
+        for (const fs::directory_entry& entry : fs::directory_iterator(dir))
+            fs::remove(entry.path());
+    };
+    clear();
     ns_per_sample(arguments, device, count);  // warms the kernel cache
     std::vector<double> ns;
-    for (int run = 0; run < 5; ++run)
+    for (int run = 0; run < 5; ++run) {
+        clear();
         ns.push_back(ns_per_sample(arguments, device, count));
+    }
     return summarize(ns);
+}
+
+// Nanoseconds per sample of writing `bytes_per_sample` bytes per sample from
+// memory into a new file in `dir`, 1 MiB per write: what the file alone
+// costs there, whatever computed the bytes.  Median of 5.
+Timing file_write_floor(const fs::path& dir, std::uint32_t count, std::size_t bytes_per_sample)
+{
+    const std::vector<char> block(1u << 20, 1);
+    std::vector<double> ns;
+    for (int run = 0; run < 5; ++run) {
+        const fs::path path = dir / "floor.bin";
+        fs::remove(path);
+        auto start = std::chrono::steady_clock::now();
+        {
+            AtomicFile file(path.string());
+            for (std::uint64_t left = std::uint64_t(count) * bytes_per_sample; left > 0;) {
+                const std::size_t n = std::size_t(std::min<std::uint64_t>(left, block.size()));
+                file.write(block.data(), n);
+                left -= n;
+            }
+            file.commit();
+        }
+        std::chrono::duration<double, std::nano> elapsed = std::chrono::steady_clock::now() - start;
+        ns.push_back(elapsed.count() / count);
+    }
+    fs::remove(dir / "floor.bin");
+    return summarize(ns);
+}
+
+// The device seconds per sample that `ggx histogram` recorded in its sidecar.
+double recorded_device_ns(const fs::path& sidecar, std::uint32_t count)
+{
+    std::ifstream in(sidecar);
+    return nlohmann::json::parse(in).at("device_seconds").get<double>() * 1e9 / count;
 }
 
 fs::path scratch_folder()
@@ -59,9 +108,11 @@ AppTimings measure_apps(const std::string& device, std::uint32_t count)
         words.push_back((dir / file).string());
         return words;
     };
-    t.sample_npy = median_of_runs(with_out(sample, "s.npy"), device, count);
+    t.sample_npy = median_of_runs(with_out(sample, "s.npy"), device, count, dir);
+    t.npy_file_floor = file_write_floor(dir, count, 4 * sizeof(float));  // m and pdf_m
     t.histogram = median_of_runs({"histogram", "--method", "caps", "--no-png", "--out", (dir / "h").string()}, device,
-                                 count);
+                                 count, dir);
+    t.histogram_device = recorded_device_ns(dir / "h.json", count);
     const std::uint32_t text_count = std::min<std::uint32_t>(count, 1u << 20);
     t.text_count = text_count;
     t.sample_csv = ns_per_sample(with_out(sample, "s.csv"), device, text_count);

@@ -3,7 +3,9 @@
 // m and pdf_m into an .npy file in RAM (/dev/shm where there is one) and
 // `ggx histogram --no-png`, each the median of 5 runs in ns per sample, set
 // beside the write job of the same fields; .csv and .ply once each, for
-// what those formats cost.
+// what those formats cost.  Beside them, what bounds them from below: the
+// .npy's bytes written from memory into a file in the same folder, and the
+// histogram's device time from its sidecar.
 #pragma once
 
 #include <string>

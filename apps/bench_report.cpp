@@ -184,10 +184,19 @@ std::vector<Target> speed_targets(const BenchReport& r)
     if (r.apps.measured && write) {
         const double file = r.apps.sample_npy.median / write->timing.median;
         const double bins = r.apps.histogram.median / write->timing.median;
+        // What no writer of this file can go below: the start-up and the file's bytes written from memory.
+        const double start_ns = r.startup.measured ? r.startup.warm_ms.median * 1e6 / r.apps.count : 0.0;
+        const double floor = start_ns + r.apps.npy_file_floor.median;
         out.push_back({"`ggx sample` into .npy within 3x of the write job per sample, whole process",
-                       fixed(r.apps.sample_npy.median, 2) + " ns: " + fixed(file, 1) + "x", file <= 3.0});
+                       fixed(r.apps.sample_npy.median, 2) + " ns: " + fixed(file, 1) + "x; its floor (" +
+                           (r.startup.measured ? "start-up + " : "") + "the file's bytes written from memory) " +
+                           fixed(floor, 2) + " ns: " + fixed(floor / write->timing.median, 1) + "x",
+                       file <= 3.0});
         out.push_back({"`ggx histogram` within 3x of the write job per sample, whole process",
-                       fixed(r.apps.histogram.median, 2) + " ns: " + fixed(bins, 1) + "x", bins <= 3.0});
+                       fixed(r.apps.histogram.median, 2) + " ns: " + fixed(bins, 1) + "x; its binning alone " +
+                           fixed(r.apps.histogram_device, 2) + " ns: " +
+                           fixed(r.apps.histogram_device / write->timing.median, 1) + "x",
+                       bins <= 3.0});
     }
     if (r.enqueue.measured)
         out.push_back({"host time of one enqueue of " + std::to_string(r.enqueue.count) +
@@ -351,7 +360,13 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
            << "histogram --no-png` (its expected counts by quadrature included) " << fixed(r.apps.histogram.median, 2)
            << " (" << fixed(r.apps.histogram.low, 2) << "–" << fixed(r.apps.histogram.high, 2) << "), " << r.apps.count
            << " samples, median of 5 runs; at " << r.apps.text_count << " samples, one run each: .csv "
-           << fixed(r.apps.sample_csv, 1) << ", .ply (m) " << fixed(r.apps.sample_ply, 1) << ".\n";
+           << fixed(r.apps.sample_csv, 1) << ", .ply (m) " << fixed(r.apps.sample_ply, 1) << ".\n\n"
+           << "Beside them: writing the .npy's bytes (16 per sample) from memory into a new file in the same folder, "
+              "1 MiB per write, "
+           << fixed(r.apps.npy_file_floor.median, 2) << " ns per sample (" << fixed(r.apps.npy_file_floor.low, 2) << "–"
+           << fixed(r.apps.npy_file_floor.high, 2) << "), the cost of the file alone; the histogram's binning alone "
+              "(sampling, binning and counting on the device, from its sidecar's device_seconds) "
+           << fixed(r.apps.histogram_device, 2) << " ns.\n";
     return md.str();
 }
 

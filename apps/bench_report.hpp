@@ -40,6 +40,8 @@ struct AppTimings {
     std::uint32_t count = 0, text_count = 0;  // samples per run (text formats: text_count)
     std::string folder;                       // where the files went
     Timing sample_npy, histogram;             // ns per sample, whole process, median of 5
+    Timing npy_file_floor;                    // ns per sample: the .npy's bytes written from memory
+    double histogram_device = 0;              // ns per sample: the last histogram run's binning alone
     double sample_csv = 0, sample_ply = 0;    // ns per sample, one run each
 };
 

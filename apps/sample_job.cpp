@@ -3,6 +3,7 @@
 #include "sample_job.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -15,27 +16,37 @@ namespace ggxapp {
 
 namespace {
 
-// The chunk's requested fields as rows (count x columns), in `fields` order,
-// into `rows`: block by block of rows, so that the rows being filled and the
-// plane segments read stay in cache.
+// Rows first + j of `columns` floats from one plane pointer per column: the
+// column count fixed at compile time, so that each row is written whole and
+// in order.
+template <int columns>
+void rows_from_planes(const float* const* planes, std::size_t first, std::size_t last, float* rows)
+{
+    const float* p[columns];
+    std::copy_n(planes, columns, p);
+    for (std::size_t j = first; j < last; ++j)
+        for (int c = 0; c < columns; ++c)
+            rows[j * columns + c] = p[c][j];
+}
+
+template <int... counts>
+void rows_for(std::size_t columns, const float* const* planes, std::size_t count, float* rows,
+              std::integer_sequence<int, counts...>)
+{
+    ((columns == counts + 1 ? rows_from_planes<counts + 1>(planes, 0, count, rows) : void()), ...);
+}
+
+// The chunk's requested fields as rows (count x columns, 1 to 9 columns), in
+// `fields` order, into `rows`.
 void interleave(const ggxcl::SampleView& chunk, const std::vector<ggxcl::Field>& fields, std::size_t columns,
                 std::vector<float>& rows)
 {
-    constexpr std::size_t block = 2048;
     rows.resize(chunk.count * columns);
     std::vector<const float*> planes;
     for (ggxcl::Field field : fields)
         for (int c = 0; c < ggxcl::field_columns(field); ++c)
             planes.push_back(chunk.column_source(field) + c * chunk.stride);
-    for (std::size_t first = 0; first < chunk.count; first += block) {
-        const std::size_t last = std::min<std::size_t>(chunk.count, first + block);
-        for (std::size_t column = 0; column < columns; ++column) {
-            const float* plane = planes[column];
-            float* out = rows.data() + column;
-            for (std::size_t j = first; j < last; ++j)
-                out[j * columns] = plane[j];
-        }
-    }
+    rows_for(columns, planes.data(), chunk.count, rows.data(), std::make_integer_sequence<int, 9>{});
 }
 
 std::string device_names(const std::vector<ggxcl::Sampler*>& samplers)

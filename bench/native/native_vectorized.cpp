@@ -1,6 +1,6 @@
 // native_vectorized.cpp - the hand-vectorized "ceiling" of the native baseline: the white-furnace
-// weight sum of isotropic caps sampling (Dupuy & Benyoub 2023) with 16-lane GCC vector extensions
-// (AVX-512 when the target has it), Philox2x32-10 on vectors, the reduced sincos of
+// weight sum of isotropic caps sampling (Dupuy & Benyoub 2023) with GCC vector extensions of one
+// register (16 lanes with AVX-512, 8 otherwise), Philox2x32-10 on vectors, the reduced sincos of
 // kernels/ggx_sincos.h, nothing written.  Same uniforms and weights as the scalar
 // run(caps, furnace_sum), up to float rounding.
 #include <cmath>
@@ -13,14 +13,30 @@
 namespace ggxnative {
 namespace {
 
+// One vector register's width: wider generic vectors are split by the
+// compiler and spill (on AVX2, 16 lanes ran no faster than scalar code).
+#if defined(__AVX512F__)
+#define GGXNATIVE_VECTOR_BYTES 64
 constexpr int lanes = 16;
-typedef float vfloat __attribute__((vector_size(64)));
-typedef std::uint32_t vuint __attribute__((vector_size(64)));
-typedef std::int32_t vint __attribute__((vector_size(64)));  // what comparisons return
-typedef std::uint64_t vulong __attribute__((vector_size(64)));
+#else
+#define GGXNATIVE_VECTOR_BYTES 32
+constexpr int lanes = 8;
+#endif
+typedef float vfloat __attribute__((vector_size(GGXNATIVE_VECTOR_BYTES)));
+typedef std::uint32_t vuint __attribute__((vector_size(GGXNATIVE_VECTOR_BYTES)));
+typedef std::int32_t vint __attribute__((vector_size(GGXNATIVE_VECTOR_BYTES)));  // what comparisons return
+typedef std::uint64_t vulong __attribute__((vector_size(GGXNATIVE_VECTOR_BYTES)));
 
 constexpr std::uint64_t block = 4096;  // weights are summed per aligned block, blocks in order
-constexpr vuint iota = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+
+vuint lane_indices()
+{
+    vuint v{};
+    for (int l = 0; l < lanes; ++l)
+        v[l] = std::uint32_t(l);
+    return v;
+}
+const vuint iota = lane_indices();
 
 vfloat splat(float x) { return vfloat{} + x; }
 
@@ -36,8 +52,8 @@ vfloat vsqrt(vfloat x)
 vfloat vmax(vfloat a, vfloat b) { return a > b ? a : b; }
 vfloat vmin(vfloat a, vfloat b) { return a < b ? a : b; }
 
-// 32x32 -> 64-bit products of every lane of a with m, as low and high words.  Seen as eight
-// 64-bit lanes, a holds the even lanes in the low halves and the odd lanes in the high halves:
+// 32x32 -> 64-bit products of every lane of a with m, as low and high words.  Seen as half as
+// many 64-bit lanes, a holds the even lanes in the low halves and the odd lanes in the high halves:
 // both products are 32x32 -> 64 multiplies of 64-bit lanes (vpmuludq).
 void mulhilo(vuint a, std::uint32_t m, vuint& lo, vuint& hi)
 {
@@ -48,7 +64,7 @@ void mulhilo(vuint a, std::uint32_t m, vuint& lo, vuint& hi)
     hi = (vuint)((even >> 32) | (odd & 0xffffffff00000000ull));
 }
 
-// Philox2x32-10 (Salmon et al. 2011) on 16 counters {c0, c1} with one key; returns both words.
+// Philox2x32-10 (Salmon et al. 2011) on `lanes` counters {c0, c1} with one key; returns both words.
 void philox_words(vuint c0, vuint c1, std::uint32_t key, vuint& w0, vuint& w1)
 {
     for (int round = 0; round < 10; ++round) {
@@ -104,7 +120,7 @@ View make_view(float alpha, const float view[3])
     return w;
 }
 
-// Furnace weights of 16 samples from their uniforms (Dupuy & Benyoub 2023, sec. 3).
+// Furnace weights of `lanes` samples from their uniforms (Dupuy & Benyoub 2023, sec. 3).
 vfloat caps_weights(const View& w, vfloat u1, vfloat u2)
 {
     // Reflected direction c uniform on the cap z in (-vz, 1] (Listing 3).
@@ -126,7 +142,7 @@ vfloat caps_weights(const View& w, vfloat u1, vfloat u2)
     return oz > 0.0f ? weight : splat(0.0f);
 }
 
-// The weight sum of samples [begin, end) of one block, 16 lanes at a time.
+// The weight sum of samples [begin, end) of one block, `lanes` at a time.
 double block_sum(std::uint64_t seed, const View& w, std::uint64_t begin, std::uint64_t end)
 {
     vfloat sum = splat(0.0f);

@@ -69,8 +69,11 @@ void rate_targets(const BenchReport& r, std::vector<Target>& out)
 {
     const BenchRow* caps = default_row(r, "caps", "write");
     const BenchRow* heitz = default_row(r, "heitz", "write");
+    const BenchRow* store = find_row(r, "all", "store-only", "write");
+    // The bound no kernel writing these bytes passes: the store-only kernel's rate.
+    const std::string bound = store ? "; storing the bytes alone: " + fixed(gsps(store), 3) + " G/s" : "";
     if (caps)
-        out.push_back({"caps >= 1.0 G samples/s (precise, m + pdf_m written)", fixed(gsps(caps), 3) + " G/s",
+        out.push_back({"caps >= 1.0 G samples/s (precise, m + pdf_m written)", fixed(gsps(caps), 3) + " G/s" + bound,
                        gsps(caps) >= 1.0});
     if (heitz)
         out.push_back({"heitz >= 0.7 G samples/s", fixed(gsps(heitz), 3) + " G/s", gsps(heitz) >= 0.7});
@@ -152,9 +155,15 @@ void baseline_targets(const BenchReport& r, std::vector<Target>& out)
         if (device && native && ratio(native, device) < lowest)
             lowest = ratio(native, device), who = m;
     }
+    // What vectorizing by hand buys the same C++: the ceiling against its scalar code.
+    const BenchRow* scalar_furnace = find_row(r, "caps", "native", "furnace");
+    const std::string by_hand = r.has_ceiling && scalar_furnace
+                                    ? "; caps furnace vectorized by hand: " +
+                                          fixed(scalar_furnace->timing.median / r.ceiling.median, 1) + "x its scalar code"
+                                    : "";
     if (lowest < 1e300)
-        out.push_back({"every method >= 12x the native C++ baseline (write)", "lowest " + who + ": " + fixed(lowest, 1) + "x",
-                       lowest >= 12.0});
+        out.push_back({"every method >= 12x the native C++ baseline (write)",
+                       "lowest " + who + ": " + fixed(lowest, 1) + "x" + by_hand, lowest >= 12.0});
     const BenchRow* caps_world = default_row(r, "caps", "world");
     const BenchRow* iso_world = default_row(r, "caps-iso", "world");
     if (caps_world && iso_world)

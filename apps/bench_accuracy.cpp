@@ -31,7 +31,7 @@ ggxcl::SampleParams params_of(ggxcl::Method method, ggxcl::Precision precision, 
 void add_errors(const ggxcl::SampleSet& d, ggxcl::Method method, const ggxref::Params& ref,
                 std::vector<double>& angles, std::vector<double>& pdfs, std::uint64_t& non_finite)
 {
-    ggxref::Method ref_method = reference_method(method);
+    ggxref::Method ref_method = ggxbridge::reference_method(method);
     for (std::size_t j = 0; j < d.count; ++j) {
         std::array<double, 2> u = ggxref::uniforms(accuracy_seed, j);
         ggxref::Sample r = ggxref::sample(ref_method, ref, u[0], u[1]);
@@ -86,7 +86,7 @@ NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, gg
         ggxcl::SampleSet d = sampler.generate(p, {accuracy_seed, 0, accuracy_samples},
                                               {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_m,
                                                ggxcl::Field::pdf_o});
-        add_errors(d, method, reference_params(p), angles, pdfs, error.non_finite);
+        add_errors(d, method, ggxbridge::reference_params(p), angles, pdfs, error.non_finite);
     }
     percentiles(angles, error.angle_p99, error.angle_max);
     percentiles(pdfs, error.pdf_p99, error.pdf_max);

@@ -163,10 +163,10 @@ NumericalError native_numerical_error(ggxcl::Method method)
         std::vector<float> m(3 * count), pdf_m(count);
         std::memcpy(m.data(), run.out.data(), m.size() * sizeof(float));
         std::memcpy(pdf_m.data(), run.out.data() + m.size() * sizeof(float), pdf_m.size() * sizeof(float));
-        ggxref::Params ref = reference_params(p);
+        ggxref::Params ref = ggxbridge::reference_params(p);
         for (std::uint64_t j = 0; j < count; ++j) {
             std::array<double, 2> u = ggxref::uniforms(accuracy_seed, j);
-            ggxref::Sample r = ggxref::sample(reference_method(method), ref, u[0], u[1]);
+            ggxref::Sample r = ggxref::sample(ggxbridge::reference_method(method), ref, u[0], u[1]);
             double angle = angle_between({m[j], m[count + j], m[2 * count + j]}, r.m);
             if (!std::isfinite(angle) || !std::isfinite(pdf_m[j])) {
                 ++error.non_finite;

@@ -11,7 +11,17 @@ namespace ggxapp {
 
 namespace {
 
-const char* const method_order[] = {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"};
+// The rows' method names in the library's order (ggxcl::all_methods).
+const std::vector<std::string>& method_order()
+{
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        for (ggxcl::Method m : ggxcl::all_methods)
+            out.emplace_back(ggxcl::method_name(m));
+        return out;
+    }();
+    return names;
+}
 const char* const device_modes[] = {"precise", "relaxed"};
 
 const BenchRow* find_row(const BenchReport& r, const std::string& method, const std::string& precision,
@@ -87,7 +97,7 @@ void rate_targets(const BenchReport& r, std::vector<Target>& out)
     if (caps) {
         double worst = 0;
         std::string who;
-        for (const char* m : method_order) {
+        for (const std::string& m : method_order()) {
             const BenchRow* row = default_row(r, m, "write");
             if (row && ratio(row, caps) > worst)
                 worst = ratio(row, caps), who = m;
@@ -100,19 +110,19 @@ void mode_targets(const BenchReport& r, std::vector<Target>& out)
 {
     double worst = 0;
     std::string who;
-    for (const char* m : method_order)
+    for (const std::string& m : method_order())
         for (const char* job : {"write", "furnace"}) {
             const BenchRow* precise = default_row(r, m, job);
             const BenchRow* relaxed = find_row(r, m, "relaxed", job);
             if (precise && relaxed && ratio(precise, relaxed) > worst)
-                worst = ratio(precise, relaxed), who = std::string(m) + " " + job;
+                worst = ratio(precise, relaxed), who = m + " " + job;
         }
     if (worst > 0)
         out.push_back({"the default (precise) within 1.15x of the fastest mode (relaxed)",
                        "largest " + who + ": " + fixed(worst, 2) + "x", worst <= 1.15});
     double worst_guard = -1e300;
     std::string guard_who;
-    for (const char* m : method_order) {
+    for (const std::string& m : method_order()) {
         const BenchRow* on = default_row(r, m, "write");
         const BenchRow* off = find_row(r, m, "precise-unguarded", "write");
         if (on && off && ratio(on, off) - 1.0 > worst_guard)
@@ -134,7 +144,7 @@ void job_targets(const BenchReport& r, std::vector<Target>& out)
                        ratio(caps, store) <= 2.5});
     double worst = 0;
     std::string who;
-    for (const char* m : method_order) {
+    for (const std::string& m : method_order()) {
         const BenchRow* uniform = default_row(r, m, "write");
         const BenchRow* per_sample = default_row(r, m, "per-sample");
         if (uniform && per_sample && ratio(per_sample, uniform) > worst)
@@ -149,7 +159,7 @@ void baseline_targets(const BenchReport& r, std::vector<Target>& out)
 {
     double lowest = 1e300;
     std::string who;
-    for (const char* m : method_order) {
+    for (const std::string& m : method_order()) {
         const BenchRow* device = default_row(r, m, "write");
         const BenchRow* native = find_row(r, m, "native", "write");
         if (device && native && ratio(native, device) < lowest)
@@ -221,7 +231,7 @@ void write_speed_table(std::ostream& md, const BenchReport& r)
 {
     md << "| method | precision | write m + pdf_m: ns | G samples/s | fused furnace: ns | world space o: ns | "
           "per-sample view, alpha: ns |\n|---|---|---|---|---|---|---|\n";
-    for (const char* m : method_order)
+    for (const std::string& m : method_order())
         for (const char* mode : {"precise", "precise-unguarded", "relaxed", "native"}) {
             const BenchRow* w = find_row(r, m, mode, "write");
             if (!w)
@@ -241,7 +251,7 @@ void write_speed_table(std::ostream& md, const BenchReport& r)
 void write_accuracy_tables(std::ostream& md, const BenchReport& r)
 {
     md << "| method | precision | angle p99 (rad) | angle max | pdf rel. p99 | pdf rel. max |\n|---|---|---|---|---|---|\n";
-    for (const char* m : method_order)
+    for (const std::string& m : method_order())
         for (const char* mode : {"precise", "relaxed", "native"}) {
             const BenchRow* w = find_row(r, m, mode, "write");
             if (w && w->has_error)
@@ -254,7 +264,7 @@ void write_variance_table(std::ostream& md, const BenchReport& r)
 {
     md << "| method | precision | variance per sample | mean albedo | fused ns | efficiency 1/(var s) | RMSE in "
        << fixed(r.budget_ms, 1) << " ms |\n|---|---|---|---|---|---|---|\n";
-    for (const char* m : method_order)
+    for (const std::string& m : method_order())
         for (const char* mode : device_modes) {
             const BenchRow* f = find_row(r, m, mode, "furnace");
             if (f && f->variance > 0)

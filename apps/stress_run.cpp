@@ -119,7 +119,7 @@ StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
 {
     StressMap map(axes.alphas.size() * axes.cos_theta.size());
-    ggxref::Method ref = reference_method(method);
+    ggxref::Method ref = ggxbridge::reference_method(method);
     for (const StressCase& c : cases) {
         ggxref::Params p{c.ax, c.ay, {c.view.x, c.view.y, c.view.z}, {c.normal.x, c.normal.y, c.normal.z}};
         ggxref::Sample r = ggxref::sample(ref, p, c.u1, c.u2);

@@ -1,17 +1,54 @@
-// reference_bridge.cpp - library types to reference types.
+// reference_bridge.cpp - library types to reference types and back.
 #include "reference_bridge.hpp"
 
+#include <array>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
-namespace ggxapp {
+namespace ggxbridge {
 
-ggxref::Method reference_method(ggxcl::Method m)
+namespace {
+
+static_assert(ggxref::all_methods.size() == ggxcl::all_methods.size(), "the same methods on both sides");
+
+using MethodPair = std::pair<ggxcl::Method, ggxref::Method>;
+
+// Each library method with the reference method of the same name, in the library's order.
+const std::array<MethodPair, ggxcl::all_methods.size()>& method_pairs()
 {
-    for (ggxref::Method r : ggxref::all_methods)
-        if (ggxcl::method_name(m) == ggxref::method_name(r))
-            return r;
-    throw std::logic_error("no reference method named " + std::string(ggxcl::method_name(m)));
+    static const auto pairs = [] {
+        std::array<MethodPair, ggxcl::all_methods.size()> out{};
+        for (std::size_t k = 0; k < out.size(); ++k) {
+            const ggxcl::Method m = ggxcl::all_methods[k];
+            bool found = false;
+            for (ggxref::Method r : ggxref::all_methods)
+                if (ggxcl::method_name(m) == ggxref::method_name(r))
+                    out[k] = {m, r}, found = true;
+            if (!found)
+                throw std::logic_error("no reference method named " + std::string(ggxcl::method_name(m)));
+        }
+        return out;
+    }();
+    return pairs;
+}
+
+} // namespace
+
+ggxref::Method reference_method(ggxcl::Method method)
+{
+    for (const MethodPair& p : method_pairs())
+        if (p.first == method)
+            return p.second;
+    throw std::logic_error("not a library method: " + std::to_string(int(method)));
+}
+
+ggxcl::Method library_method(ggxref::Method method)
+{
+    for (const MethodPair& p : method_pairs())
+        if (p.second == method)
+            return p.first;
+    throw std::logic_error("not a reference method: " + std::to_string(int(method)));
 }
 
 ggxref::Params reference_params(const ggxcl::SampleParams& p)
@@ -24,4 +61,16 @@ ggxref::Params reference_params(const ggxcl::SampleParams& p)
     return r;
 }
 
-} // namespace ggxapp
+ggxcl::SampleParams library_params(ggxref::Method method, const ggxref::Params& p, ggxcl::Precision precision)
+{
+    ggxcl::SampleParams out;
+    out.precision = precision;
+    out.method = library_method(method);
+    out.alpha_x = float(p.ax);
+    out.alpha_y = float(p.ay);
+    out.view = {float(p.i.x), float(p.i.y), float(p.i.z)};
+    out.normal = {float(p.n.x), float(p.n.y), float(p.n.z)};
+    return out;
+}
+
+} // namespace ggxbridge

@@ -3,7 +3,7 @@
 //
 // The program is specialized by build options (set by the runtime):
 //   GGX_METHOD=<id>                  which sampler (see ggx_samplers.h)
-//   GGX_WRITE_{M,O,PDF_M,PDF_O,WEIGHT}=0|1   fields to compute and store
+//   GGX_WRITE_MASK=<bits>            fields to compute and store: bit 1 << GGX_FIELD_* (ggx_contract.h)
 //   GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1   parameters read per sample from buffers
 //   GGX_ISOTROPIC, GGX_BELOW_HORIZON, GGX_WORLD_SPACE, GGX_NORMAL_IS_Z=0|1   what the request needs
 // Arrays are planar: component c of sample j is at [c * stride + j].
@@ -16,21 +16,17 @@
 #error "build with -DGGX_METHOD=<method id>"
 #endif
 #include "ggx_bulk_params.h"
-#ifndef GGX_WRITE_M
-#define GGX_WRITE_M 0
+#ifndef GGX_WRITE_MASK
+#define GGX_WRITE_MASK 0
 #endif
-#ifndef GGX_WRITE_O
-#define GGX_WRITE_O 0
+#if GGX_WRITE_MASK < 0 || GGX_WRITE_MASK >= (1 << GGX_FIELD_COUNT)
+#error "GGX_WRITE_MASK: bits 1 << GGX_FIELD_* of ggx_contract.h only"
 #endif
-#ifndef GGX_WRITE_PDF_M
-#define GGX_WRITE_PDF_M 0
-#endif
-#ifndef GGX_WRITE_PDF_O
-#define GGX_WRITE_PDF_O 0
-#endif
-#ifndef GGX_WRITE_WEIGHT
-#define GGX_WRITE_WEIGHT 0
-#endif
+#define GGX_WRITE_M ((GGX_WRITE_MASK >> GGX_FIELD_M) & 1)
+#define GGX_WRITE_O ((GGX_WRITE_MASK >> GGX_FIELD_O) & 1)
+#define GGX_WRITE_PDF_M ((GGX_WRITE_MASK >> GGX_FIELD_PDF_M) & 1)
+#define GGX_WRITE_PDF_O ((GGX_WRITE_MASK >> GGX_FIELD_PDF_O) & 1)
+#define GGX_WRITE_WEIGHT ((GGX_WRITE_MASK >> GGX_FIELD_WEIGHT) & 1)
 
 // Sample j (< count) into the requested fields.
 GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GGX_PARAM_ARGS,

@@ -48,7 +48,8 @@ typedef struct {
     float ax, ay;
 } ggx_params;
 
-// The kernel arguments that carry them: uniform values, then per-sample buffers.
+// The kernel arguments that carry them (GGX_PARAM_ARG_COUNT, at the positions
+// of ggx_contract.h): uniform values, then per-sample buffers.
 #define GGX_PARAM_ARGS                                                                      \
     float view_x, float view_y, float view_z, float alpha_x, float alpha_y, float normal_x, \
         float normal_y, float normal_z, __global const float *GGX_RESTRICT view_in,             \

@@ -7,7 +7,8 @@
 // memory costs more than the sampling on PoCL.
 //
 // Build options: those of ggx_bulk.cl (method, precision, per-sample and
-// specialization flags; the GGX_WRITE_* flags are ignored).
+// specialization flags; GGX_WRITE_MASK is ignored).  GGX_FURNACE_PER_ITEM is
+// in ggx_contract.h.
 // Work-item w of a launch of `count` samples draws samples
 // GGX_FURNACE_PER_ITEM * w + k (k < GGX_FURNACE_PER_ITEM) that are < count,
 // so the partial sums depend neither on the work-group size nor, for
@@ -18,8 +19,6 @@
 #error "build with -DGGX_METHOD=<method id>"
 #endif
 #include "ggx_bulk_params.h"
-
-#define GGX_FURNACE_PER_ITEM 8
 
 __kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS,
                                __global float* GGX_RESTRICT sums)

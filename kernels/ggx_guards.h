@@ -36,6 +36,18 @@ GGX_INLINE int ggx_roughness_ok(float ax, float ay)
     return ax > 0.0f && ay > 0.0f && ax <= FLT_MAX && ay <= FLT_MAX;
 }
 
+// The fallback sample about the unit normal n: m = o = n, pdfs and weight 0.
+GGX_INLINE ggx_sample ggx_fallback_sample(ggx_vec3 n)
+{
+    ggx_sample out;
+    out.m = n;
+    out.o = n;
+    out.pdf_m = 0.0f;
+    out.pdf_o = 0.0f;
+    out.weight = 0.0f;
+    return out;
+}
+
 // s when the roughness is usable and `key` < 1e20, else the fallback about
 // the unit normal n.
 GGX_INLINE ggx_sample ggx_guard_about(ggx_sample s, float key, ggx_vec3 n, float ax, float ay)

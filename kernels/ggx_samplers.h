@@ -2,10 +2,13 @@
 // dispatcher by method id.  Include this one header to get all of them:
 //   ggx_sample_<method>(...) -> ggx_sample {m, o, pdf_m, pdf_o, weight}
 //   ggx_pdf_<method>(...)    -> pdf of o recomputed from (i, o) alone
-// Method ids match the C++ enum ggxcl::Method.
+// Method ids: GGX_METHOD_* of ggx_contract.h (the C++ enum ggxcl::Method is
+// checked against them); an id that is none of them gives the fallback
+// sample about n ("no sample", ggx_guards.h).
 #ifndef GGX_SAMPLERS_H
 #define GGX_SAMPLERS_H
 
+#include "ggx_contract.h"
 #include "ggx_philox.h"
 #include "ggx_sample_bounded.h"
 #include "ggx_sample_caps.h"
@@ -13,20 +16,13 @@
 #include "ggx_sample_heitz.h"
 #include "ggx_sample_ndf.h"
 
-#define GGX_METHOD_NDF 0
-#define GGX_METHOD_HEITZ 1
-#define GGX_METHOD_HEITZ2017 2
-#define GGX_METHOD_CAPS 3
-#define GGX_METHOD_CAPS_ISO 4
-#define GGX_METHOD_BOUNDED 5
-
 // GGX_ONLY_METHOD=<id>: the program uses that one method (the runtime's bulk
 // kernels set it to GGX_METHOD).  The dispatchers then test constants and
 // the compiler emits the one sampler alone: a driver that translates every
 // branch before it folds the method id (Mesa rusticl) builds 3-4x faster.
 #ifdef GGX_ONLY_METHOD
-#if GGX_ONLY_METHOD < GGX_METHOD_NDF || GGX_ONLY_METHOD > GGX_METHOD_BOUNDED
-#error "GGX_ONLY_METHOD: not a method id (GGX_METHOD_NDF .. GGX_METHOD_BOUNDED)"
+#if GGX_ONLY_METHOD < 0 || GGX_ONLY_METHOD >= GGX_METHOD_COUNT
+#error "GGX_ONLY_METHOD: not a method id (GGX_METHOD_NDF .. GGX_METHOD_BOUNDED of ggx_contract.h)"
 #endif
 #define GGX_IS_METHOD(method, id) (GGX_ONLY_METHOD == (id))
 #else
@@ -48,7 +44,9 @@ GGX_INLINE ggx_sample ggx_sample_method(int method, ggx_vec3 n, ggx_vec3 i, floa
         return ggx_sample_caps_iso(n, i, ax, u1, u2);
     if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
         return ggx_sample_bounded(i, ax, ay, u1, u2);
-    return ggx_sample_caps(i, ax, ay, u1, u2);
+    if (GGX_IS_METHOD(method, GGX_METHOD_CAPS))
+        return ggx_sample_caps(i, ax, ay, u1, u2);
+    return ggx_fallback_sample(n);  // not a method id
 }
 
 GGX_INLINE float ggx_pdf_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)
@@ -59,7 +57,11 @@ GGX_INLINE float ggx_pdf_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, 
         return ggx_pdf_caps_iso(n, i, o, ax);
     if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
         return ggx_pdf_bounded(i, o, ax, ay);
-    return ggx_pdf_caps(i, o, ax, ay);  // heitz, heitz2017 and caps share the VNDF reflection pdf
+    // heitz, heitz2017 and caps share the VNDF reflection pdf
+    if (GGX_IS_METHOD(method, GGX_METHOD_HEITZ) || GGX_IS_METHOD(method, GGX_METHOD_HEITZ2017) ||
+        GGX_IS_METHOD(method, GGX_METHOD_CAPS))
+        return ggx_pdf_caps(i, o, ax, ay);
+    return 0.0f;  // not a method id
 }
 
 #endif

@@ -14,19 +14,12 @@ ggxcl::Sampler& sampler()
 
 ggxcl::Method to_library(ggxref::Method method)
 {
-    return ggxcl::parse_method(ggxref::method_name(method));
+    return ggxbridge::library_method(method);
 }
 
 ggxcl::SampleParams to_library(ggxref::Method method, const ggxref::Params& p, ggxcl::Precision precision)
 {
-    ggxcl::SampleParams out;
-    out.precision = precision;
-    out.method = to_library(method);
-    out.alpha_x = float(p.ax);
-    out.alpha_y = float(p.ay);
-    out.view = {float(p.i.x), float(p.i.y), float(p.i.z)};
-    out.normal = {float(p.n.x), float(p.n.y), float(p.n.z)};
-    return out;
+    return ggxbridge::library_params(method, p, precision);
 }
 
 ggxref::Params make_params(double ax, double ay, double theta_degrees, double phi_degrees)

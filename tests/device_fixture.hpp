@@ -10,6 +10,7 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "ggx_quadrature.hpp"
+#include "reference_bridge.hpp"
 #include "ggx_reference.hpp"
 #include "ggx_stats.hpp"
 

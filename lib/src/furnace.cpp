@@ -9,6 +9,7 @@
 #include "device_faults.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
+#include "device_contract.hpp"
 #include "kernel_launch.hpp"
 
 namespace ggxcl {
@@ -16,7 +17,7 @@ namespace ggxcl {
 namespace {
 
 constexpr std::uint64_t samples_per_launch = 1u << 26;  // a multiple of samples_per_item
-constexpr std::uint64_t samples_per_item = 8;  // GGX_FURNACE_PER_ITEM of ggx_furnace.cl
+constexpr std::uint64_t samples_per_item = detail::furnace_per_item;
 
 // The partial sums of one launch added in double, in work-item order, to
 // sum and sum_of_squares; false if one of them is not finite.
@@ -64,14 +65,16 @@ cl::Event Sampler::enqueue_furnace(cl::CommandQueue& queue, const SampleParams& 
         throw InvalidArgument("count", std::to_string(range.count), "1 .. 2^31 per enqueue_furnace");
     SampleParams unit = normalized(params);
     return detail::translate_cl_errors([&] {
-        KernelLease lease = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, 16u, inputs));
+        // The estimator sums weights (its kernel ignores the write mask).
+        const unsigned mask = detail::write_mask({Field::weight});
+        KernelLease lease = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, mask, inputs));
         cl::Kernel& k = *lease;
-        k.setArg(0, cl_ulong(range.seed));
-        k.setArg(1, cl_ulong(range.first));
-        k.setArg(2, cl_uint(range.count));
-        k.setArg(3, cl_uint(range.count));
-        detail::set_param_args(k, 4, unit, inputs);
-        k.setArg(15, sums);
+        k.setArg(detail::arg_seed, cl_ulong(range.seed));
+        k.setArg(detail::arg_first, cl_ulong(range.first));
+        k.setArg(detail::arg_count, cl_uint(range.count));
+        k.setArg(detail::arg_stride, cl_uint(range.count));
+        detail::set_param_args(k, detail::arg_params, unit, inputs);
+        k.setArg(detail::arg_outputs, sums);
         cl::Event event;
         detail::before_launch();
         queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(furnace_items(range.count)),

@@ -8,6 +8,7 @@
 #include "device_quirks.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
+#include "device_contract.hpp"
 #include "kernel_launch.hpp"
 
 namespace ggxcl {
@@ -73,10 +74,10 @@ struct Sampler::HistogramRun {
 
     void set_sample_args(cl::Kernel& k, std::uint64_t start, std::uint64_t n) const
     {
-        k.setArg(0, cl_ulong(range.seed));
-        k.setArg(1, cl_ulong(range.first + start));
-        k.setArg(2, cl_uint(n));
-        k.setArg(3, cl_uint(samples_per_item));
+        k.setArg(detail::arg_seed, cl_ulong(range.seed));
+        k.setArg(detail::arg_first, cl_ulong(range.first + start));
+        k.setArg(detail::arg_count, cl_uint(n));
+        k.setArg(detail::arg_stride, cl_uint(samples_per_item));  // the histogram kernels' samples per work-item
         detail::set_param_args(k, 4, params, {});
     }
 
@@ -101,7 +102,7 @@ struct Sampler::HistogramRun {
         KernelLease lease = sampler.kernel("ggx_histogram.cl", "ggx_histogram", options);
         zero_counts();
         set_sample_args(*lease, start, n);
-        lease->setArg(15, counts);
+        lease->setArg(detail::arg_outputs, counts);
         const std::size_t group = sampler.work_group_size();
         std::size_t groups = (n + group * samples_per_item - 1) / (group * samples_per_item);
         detail::before_launch();
@@ -116,16 +117,16 @@ struct Sampler::HistogramRun {
         auto make = [&](const std::string& name) {
             KernelLease lease = sampler.kernel("ggx_histogram.cl", name, options);
             set_sample_args(*lease, start, n);
-            lease->setArg(15, indices);
+            lease->setArg(detail::arg_outputs, indices);
             return lease;
         };
         detail::launch_split(sampler.queue_, sampler.work_group_size(), make, "ggx_histogram_bins", cl_uint(n), nullptr);
         const std::uint32_t per_counter = std::uint32_t((n + counters - 1) / counters);
         KernelLease count = sampler.kernel("ggx_histogram.cl", "ggx_histogram_count", options);
-        count->setArg(0, indices);
-        count->setArg(1, cl_uint(n));
-        count->setArg(2, cl_uint(per_counter));
-        count->setArg(3, counts);
+        count->setArg(detail::count_arg_bins, indices);
+        count->setArg(detail::count_arg_count, cl_uint(n));
+        count->setArg(detail::count_arg_per_item, cl_uint(per_counter));
+        count->setArg(detail::count_arg_counts, counts);
         detail::before_launch();
         sampler.queue_.enqueueNDRangeKernel(*count, cl::NullRange, cl::NDRange((n + per_counter - 1) / per_counter),
                                             cl::NDRange(1));

@@ -3,8 +3,10 @@
 #include "kernel_launch.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
 
+#include "device_contract.hpp"
 #include "device_faults.hpp"
 #include "ggxcl/error.hpp"
 
@@ -15,12 +17,10 @@ namespace detail {
 std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs)
 {
     auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
-    std::string options = "-DGGX_METHOD=" + std::to_string(static_cast<int>(params.method));
+    std::string options = "-DGGX_METHOD=" + std::to_string(method_id(params.method));
     if (params.precision == Precision::relaxed)
         options += " -cl-fast-relaxed-math";
-    options += flag("GGX_WRITE_M", write_mask & 1u) + flag("GGX_WRITE_O", write_mask & 2u) +
-               flag("GGX_WRITE_PDF_M", write_mask & 4u) + flag("GGX_WRITE_PDF_O", write_mask & 8u) +
-               flag("GGX_WRITE_WEIGHT", write_mask & 16u);
+    options += " -DGGX_WRITE_MASK=" + std::to_string(write_mask);
     options += flag("GGX_PER_SAMPLE_VIEW", inputs.view() != nullptr) +
                flag("GGX_PER_SAMPLE_ALPHA", inputs.alpha() != nullptr) +
                flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr);
@@ -49,12 +49,14 @@ bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs)
 
 void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in)
 {
-    float values[] = {p.view.x, p.view.y, p.view.z, p.alpha_x, p.alpha_y, p.normal.x, p.normal.y, p.normal.z};
-    for (cl_uint k = 0; k < 8; ++k)
+    const float values[GGX_PARAM_UNIFORM_COUNT] = {p.view.x,  p.view.y,   p.view.z,   p.alpha_x,
+                                                   p.alpha_y, p.normal.x, p.normal.y, p.normal.z};
+    for (cl_uint k = 0; k < GGX_PARAM_UNIFORM_COUNT; ++k)
         kernel.setArg(first_arg + k, values[k]);
-    kernel.setArg(first_arg + 8, in.view);
-    kernel.setArg(first_arg + 9, in.alpha);
-    kernel.setArg(first_arg + 10, in.normal);
+    const cl::Buffer* buffers[] = {&in.view, &in.alpha, &in.normal};
+    static_assert(GGX_PARAM_UNIFORM_COUNT + std::size(buffers) == GGX_PARAM_ARG_COUNT);
+    for (cl_uint k = 0; k < std::size(buffers); ++k)
+        kernel.setArg(first_arg + GGX_PARAM_UNIFORM_COUNT + k, *buffers[k]);
 }
 
 void check_launch_count(std::uint64_t count, std::uint32_t stride)

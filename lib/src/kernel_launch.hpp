@@ -20,8 +20,9 @@ std::string build_options(const SampleParams& params, unsigned write_mask, const
 bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs);
 bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
 
-// Arguments first_arg.. of every kernel: the uniform parameters (8 floats),
-// then the per-sample input buffers (view, alpha, normal).
+// Arguments first_arg.. of every kernel: the GGX_PARAM_ARG_COUNT parameter
+// arguments of ggx_contract.h (the uniform floats, then the per-sample view,
+// alpha and normal buffers).
 void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in);
 
 void check_launch_count(std::uint64_t count, std::uint32_t stride);

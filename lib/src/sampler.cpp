@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "cl_call.hpp"
+#include "device_contract.hpp"
 #include "kernel_launch.hpp"
 #include "ggxcl/error.hpp"
 
@@ -19,11 +20,11 @@ constexpr const char* bulk_file = "ggx_bulk.cl";
 
 unsigned write_mask_of(const DeviceOutputs& out)
 {
-    unsigned mask = 0;
+    FieldSet given;
     for (Field f : all_fields)
         if (out.of(f)() != nullptr)
-            mask |= 1u << static_cast<unsigned>(f);
-    return mask;
+            given.add(f);
+    return detail::write_mask(given);
 }
 
 } // namespace
@@ -114,13 +115,13 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
         auto make = [&](const std::string& name) {
             KernelLease lease = kernel(bulk_file, name, options);
             cl::Kernel& k = *lease;
-            k.setArg(0, cl_ulong(range.seed));
-            k.setArg(1, cl_ulong(range.first));
-            k.setArg(2, cl_uint(range.count));
-            k.setArg(3, cl_uint(stride ? stride : range.count));
-            set_param_args(k, 4, unit, inputs);
+            k.setArg(arg_seed, cl_ulong(range.seed));
+            k.setArg(arg_first, cl_ulong(range.first));
+            k.setArg(arg_count, cl_uint(range.count));
+            k.setArg(arg_stride, cl_uint(stride ? stride : range.count));
+            set_param_args(k, arg_params, unit, inputs);
             for (Field f : all_fields)
-                k.setArg(15 + static_cast<cl_uint>(f), outputs.of(f));
+                k.setArg(arg_output(f), outputs.of(f));
             return lease;
         };
         return launch_split(queue, work_group_size(), make, "ggx_sample_bulk", cl_uint(range.count), wait);
@@ -166,11 +167,11 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
         auto make = [&](const std::string& name) {
             KernelLease lease = kernel(bulk_file, name, options);
             cl::Kernel& k = *lease;
-            k.setArg(0, cl_uint(count));
-            k.setArg(1, cl_uint(stride ? stride : count));
-            set_param_args(k, 2, unit, inputs);
-            k.setArg(13, directions);
-            k.setArg(14, pdf_out);
+            k.setArg(pdf_arg_count, cl_uint(count));
+            k.setArg(pdf_arg_stride, cl_uint(stride ? stride : count));
+            set_param_args(k, pdf_arg_params, unit, inputs);
+            k.setArg(pdf_arg_directions, directions);
+            k.setArg(pdf_arg_pdfs, pdf_out);
             return lease;
         };
         return launch_split(queue, work_group_size(), make, "ggx_pdf_bulk", count, wait);

@@ -9,6 +9,8 @@
 
 namespace ggxcl {
 
+// The numeric values are the kernels' field ids, GGX_FIELD_* of the device
+// header ggx_contract.h (the library does not build when they differ).
 enum class Field {
     m = 0,      // microfacet normal, 3 floats
     o = 1,      // reflected direction, 3 floats

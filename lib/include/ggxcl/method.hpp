@@ -8,7 +8,8 @@
 
 namespace ggxcl {
 
-// The numeric values are the kernels' GGX_METHOD ids (kernels/ggx_samplers.h).
+// The numeric values are the kernels' method ids, GGX_METHOD_* of the device
+// header ggx_contract.h (the library does not build when they differ).
 enum class Method {
     ndf = 0,       // Walter et al. 2007: sample D(m) mz
     heitz = 1,     // Heitz 2018: exact VNDF, warped disk

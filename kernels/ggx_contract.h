@@ -1,0 +1,65 @@
+// ggx_contract.h - what the C++ runtime and the OpenCL C kernels must agree
+// on, as plain macros that both languages read: the method ids, the field
+// ids and their write-mask bits, the argument positions of every bulk
+// kernel, and the samples per work-item of the fused estimator.  The
+// runtime includes this header and checks its own enums against it at
+// compile time (lib/src/device_contract.hpp: a mismatch does not build);
+// the kernels include it and refuse an unknown method id or write mask with
+// #error.  Values used in #if stay plain integers.
+#ifndef GGX_CONTRACT_H
+#define GGX_CONTRACT_H
+
+// Method ids (-DGGX_METHOD=<id>, ggx_sample_method), in ggxcl::Method order.
+#define GGX_METHOD_NDF 0
+#define GGX_METHOD_HEITZ 1
+#define GGX_METHOD_HEITZ2017 2
+#define GGX_METHOD_CAPS 3
+#define GGX_METHOD_CAPS_ISO 4
+#define GGX_METHOD_BOUNDED 5
+#define GGX_METHOD_COUNT 6
+
+// Field ids, in ggxcl::Field order: the order of the sample kernel's output
+// buffers; -DGGX_WRITE_MASK=<mask> has bit (1 << id) set for each field
+// computed and stored.
+#define GGX_FIELD_M 0
+#define GGX_FIELD_O 1
+#define GGX_FIELD_PDF_M 2
+#define GGX_FIELD_PDF_O 3
+#define GGX_FIELD_WEIGHT 4
+#define GGX_FIELD_COUNT 5
+
+// Argument positions of the sampling kernels: ggx_sample_bulk(_tail),
+// ggx_furnace_bulk, ggx_histogram and ggx_histogram_bins(_tail) begin with
+//   seed, first, count, stride (the histogram kernels: samples per work-item),
+// then the GGX_PARAM_ARG_COUNT parameter arguments of GGX_PARAM_ARGS
+// (ggx_bulk_params.h): view x, y, z, alpha x, y, normal x, y, z, then the
+// per-sample view, alpha and normal buffers.  Their outputs follow:
+// ggx_sample_bulk's five buffers in field order, the furnace's partial sums,
+// the histogram's counts or the bin indices.
+#define GGX_ARG_SEED 0
+#define GGX_ARG_FIRST 1
+#define GGX_ARG_COUNT 2
+#define GGX_ARG_STRIDE 3
+#define GGX_ARG_PARAMS 4
+#define GGX_PARAM_ARG_COUNT 11
+#define GGX_PARAM_UNIFORM_COUNT 8  // the floats before the three buffers
+#define GGX_ARG_OUTPUTS (GGX_ARG_PARAMS + GGX_PARAM_ARG_COUNT)
+
+// ggx_pdf_bulk(_tail): count, stride, the parameter arguments, the
+// directions, the pdfs.
+#define GGX_PDF_ARG_COUNT 0
+#define GGX_PDF_ARG_STRIDE 1
+#define GGX_PDF_ARG_PARAMS 2
+#define GGX_PDF_ARG_DIRECTIONS (GGX_PDF_ARG_PARAMS + GGX_PARAM_ARG_COUNT)
+#define GGX_PDF_ARG_PDFS (GGX_PDF_ARG_DIRECTIONS + 1)
+
+// ggx_histogram_count: bin indices, their count, indices per work-item, counts.
+#define GGX_COUNT_ARG_BINS 0
+#define GGX_COUNT_ARG_COUNT 1
+#define GGX_COUNT_ARG_PER_ITEM 2
+#define GGX_COUNT_ARG_COUNTS 3
+
+// Samples each work-item of ggx_furnace_bulk draws.
+#define GGX_FURNACE_PER_ITEM 8
+
+#endif

@@ -1,0 +1,49 @@
+// device_contract.hpp - the runtime's side of kernels/ggx_contract.h: its
+// enums checked against the kernels' ids at compile time (a mismatch does
+// not build), and the argument positions of the bulk kernels by name.
+#pragma once
+
+#include <cstddef>
+
+#include "ggx_contract.h"
+#include "ggxcl/fields.hpp"
+#include "ggxcl/method.hpp"
+#include "ggxcl/opencl.hpp"
+
+namespace ggxcl::detail {
+
+static_assert(static_cast<int>(Method::ndf) == GGX_METHOD_NDF);
+static_assert(static_cast<int>(Method::heitz) == GGX_METHOD_HEITZ);
+static_assert(static_cast<int>(Method::heitz2017) == GGX_METHOD_HEITZ2017);
+static_assert(static_cast<int>(Method::caps) == GGX_METHOD_CAPS);
+static_assert(static_cast<int>(Method::caps_iso) == GGX_METHOD_CAPS_ISO);
+static_assert(static_cast<int>(Method::bounded) == GGX_METHOD_BOUNDED);
+static_assert(all_methods.size() == GGX_METHOD_COUNT, "every kernel method id has its ggxcl::Method");
+
+static_assert(static_cast<int>(Field::m) == GGX_FIELD_M);
+static_assert(static_cast<int>(Field::o) == GGX_FIELD_O);
+static_assert(static_cast<int>(Field::pdf_m) == GGX_FIELD_PDF_M);
+static_assert(static_cast<int>(Field::pdf_o) == GGX_FIELD_PDF_O);
+static_assert(static_cast<int>(Field::weight) == GGX_FIELD_WEIGHT);
+static_assert(all_fields.size() == GGX_FIELD_COUNT, "every kernel field id has its ggxcl::Field");
+static_assert(GGX_PARAM_ARG_COUNT == GGX_PARAM_UNIFORM_COUNT + 3, "the uniform floats, then three buffers");
+
+// The kernel's id of a method, and the -DGGX_WRITE_MASK bits of a field set
+// (FieldSet's bits are 1 << field id, the kernels' mask bits).
+constexpr int method_id(Method method) { return static_cast<int>(method); }
+inline unsigned write_mask(FieldSet fields) { return fields.bits(); }
+
+// Argument positions (ggx_contract.h) as cl_uint.
+constexpr cl_uint arg_seed = GGX_ARG_SEED, arg_first = GGX_ARG_FIRST, arg_count = GGX_ARG_COUNT,
+                  arg_stride = GGX_ARG_STRIDE, arg_params = GGX_ARG_PARAMS, arg_outputs = GGX_ARG_OUTPUTS;
+constexpr cl_uint arg_output(Field field) { return GGX_ARG_OUTPUTS + static_cast<cl_uint>(field); }
+constexpr cl_uint pdf_arg_count = GGX_PDF_ARG_COUNT, pdf_arg_stride = GGX_PDF_ARG_STRIDE,
+                  pdf_arg_params = GGX_PDF_ARG_PARAMS, pdf_arg_directions = GGX_PDF_ARG_DIRECTIONS,
+                  pdf_arg_pdfs = GGX_PDF_ARG_PDFS;
+constexpr cl_uint count_arg_bins = GGX_COUNT_ARG_BINS, count_arg_count = GGX_COUNT_ARG_COUNT,
+                  count_arg_per_item = GGX_COUNT_ARG_PER_ITEM, count_arg_counts = GGX_COUNT_ARG_COUNTS;
+
+// Samples per work-item of ggx_furnace_bulk.
+constexpr std::size_t furnace_per_item = GGX_FURNACE_PER_ITEM;
+
+} // namespace ggxcl::detail

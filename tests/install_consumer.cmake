@@ -70,6 +70,15 @@ foreach(header IN LISTS headers)
 endforeach()
 step("installed headers standalone" ${CXX} -std=c++17 -fsyntax-only ${pc_flags} ${units})
 
+# 2b. Including the bindings without exceptions before ggxcl is refused, by name.
+file(WRITE ${WORK_DIR}/headers/bindings_first.cpp "#include <CL/opencl.hpp>\n#include <ggxcl/ggxcl.hpp>\n")
+execute_process(COMMAND ${CXX} -std=c++17 -fsyntax-only ${pc_flags} ${WORK_DIR}/headers/bindings_first.cpp
+  RESULT_VARIABLE status ERROR_VARIABLE err OUTPUT_QUIET)
+if(status EQUAL 0 OR NOT err MATCHES "CL_HPP_ENABLE_EXCEPTIONS")
+  fail("<CL/opencl.hpp> without exceptions before <ggxcl/ggxcl.hpp>: status ${status}, expected the #error\n${err}")
+endif()
+message(STATUS "bindings without exceptions first: refused")
+
 # 3. The example against the installed package.
 step("configure examples/albedo_table" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/albedo_table
   -B ${WORK_DIR}/albedo-build -DCMAKE_PREFIX_PATH=${prefix} ${forward_flags})

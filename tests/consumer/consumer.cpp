@@ -2,7 +2,9 @@
 // project (through pkg-config, or through the build tree's CMake export):
 // its own context and queue, samples into its own buffer, and its own
 // kernel including the device headers; prints "consumer ok" when the
-// kernel's weights equal the runtime's.
+// kernel's weights equal the runtime's.  It defines nothing for the OpenCL
+// C++ bindings: the ggxcl headers turn their exceptions on, so a failed call
+// of the bindings throws cl::Error here as in the library.
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -54,6 +56,16 @@ int main()
         kernel.setArg(3, 0.4f);
         kernel.setArg(4, mine);
         queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(count));
+        bool threw = false;
+        try {
+            cl::Buffer empty(context, CL_MEM_READ_WRITE, 0);  // CL_INVALID_BUFFER_SIZE
+        } catch (const cl::Error&) {
+            threw = true;
+        }
+        if (!threw) {
+            std::fprintf(stderr, "consumer: the bindings did not throw: built without exceptions\n");
+            return 1;
+        }
         const bool same = read(queue, mine) == read(queue, outputs.weight);
         std::printf("consumer %s: ggxcl %s, device headers %s\n", same ? "ok" : "MISMATCH", ggxcl::version(),
                     ggxcl::device_include_dir().c_str());

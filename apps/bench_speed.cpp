@@ -2,6 +2,8 @@
 // wall clock when the profiling timestamps cannot be right.
 #include "bench_speed.hpp"
 
+#include <ggxcl/benchmark.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -145,17 +147,16 @@ std::uint32_t DeviceTimer::count_of(BenchJob job) const
     return job == BenchJob::world || job == BenchJob::per_sample ? world_count_ : count_;
 }
 
-cl::Event DeviceTimer::launch(BenchJob job, const ggxcl::SampleParams& params, std::uint64_t seed)
+cl::Event DeviceTimer::launch(const BenchTask& task, std::uint64_t seed)
 {
     cl::CommandQueue& queue = sampler_.queue();
-    switch (job) {
+    const ggxcl::SampleParams& params = task.params;
+    switch (task.job) {
     case BenchJob::write:
-        return sampler_.enqueue(queue, params, {seed, 0, count_}, write_out_);
-    case BenchJob::furnace: {  // as Sampler::furnace runs it: unguarded, rerun with guards only on a NaN sum
-        ggxcl::SampleParams unguarded = params;
-        unguarded.guards = false;
-        return sampler_.enqueue_furnace(queue, unguarded, {seed, 0, count_}, sums_);
-    }
+        return task.guards ? sampler_.enqueue(queue, params, {seed, 0, count_}, write_out_)
+                           : ggxcl::benchmark::enqueue_unguarded(sampler_, queue, params, {seed, 0, count_}, write_out_);
+    case BenchJob::furnace:  // as Sampler::furnace runs it: unguarded, rerun with guards only on a NaN sum
+        return ggxcl::benchmark::enqueue_furnace_unguarded(sampler_, queue, params, {seed, 0, count_}, sums_);
     case BenchJob::world: {
         ggxcl::SampleParams world = params;
         world.world_space = true;
@@ -180,13 +181,13 @@ cl::Event DeviceTimer::launch(BenchJob job, const ggxcl::SampleParams& params, s
 std::vector<Timing> DeviceTimer::time_interleaved(const std::vector<BenchTask>& tasks, int repeats)
 {
     for (const BenchTask& task : tasks)
-        launch(task.job, task.params, 1).wait();  // warm-up: build and JIT
+        launch(task, 1).wait();  // warm-up: build and JIT
     std::vector<std::vector<double>> profiled(tasks.size()), wall(tasks.size());
     bool plausible = true;
     for (int r = 0; r < repeats; ++r)
         for (std::size_t t = 0; t < tasks.size(); ++t) {
             auto start = std::chrono::steady_clock::now();
-            cl::Event done = launch(tasks[t].job, tasks[t].params, std::uint64_t(r) + 2);
+            cl::Event done = launch(tasks[t], std::uint64_t(r) + 2);
             done.wait();
             const double wall_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
             const double event_ns = profiled_ns(done);

@@ -38,6 +38,7 @@ void random_world_inputs(std::uint32_t count, std::vector<float>& normals, std::
 struct BenchTask {
     BenchJob job;
     ggxcl::SampleParams params;
+    bool guards = true;  // false: the write job without the fallbacks (ggxcl/benchmark.hpp)
 };
 
 class DeviceTimer {
@@ -58,7 +59,7 @@ public:
     std::string clock_description() const;
 
 private:
-    cl::Event launch(BenchJob job, const ggxcl::SampleParams& params, std::uint64_t seed);
+    cl::Event launch(const BenchTask& task, std::uint64_t seed);
 
     ggxcl::Sampler& sampler_;
     std::uint32_t count_, world_count_;

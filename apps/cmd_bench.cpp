@@ -56,10 +56,8 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
                 p.method = ggxcl::parse_method(name);
                 p.precision = ggxcl::parse_precision(mode);
                 tasks.push_back({job_named(job_text), p});
-                if (mode == "precise" && job_text == "write") {  // the guards' cost, side by side
-                    p.guards = false;
-                    tasks.push_back({BenchJob::write, p});
-                }
+                if (mode == "precise" && job_text == "write")  // the guards' cost, side by side
+                    tasks.push_back({BenchJob::write, p, false});
             }
     const bool writes = std::find(plan.jobs.begin(), plan.jobs.end(), "write") != plan.jobs.end();
     if (writes)  // the write job's ceiling, once: the same bytes stored, nothing computed
@@ -77,9 +75,10 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
             report.rows.push_back(row_of("all", "store-only", "write", timings[t]));
             continue;
         }
-        BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), p.guards ? precision : precision + "-unguarded",
+        const bool guarded = tasks[t].guards;
+        BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), guarded ? precision : precision + "-unguarded",
                               job_name(tasks[t].job), timings[t]);
-        if (!p.guards) {  // measured for its speed only
+        if (!guarded) {  // measured for its speed only
             report.rows.push_back(row);
             continue;
         }

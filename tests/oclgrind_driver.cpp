@@ -234,12 +234,11 @@ ggxcl::DeviceInputs device_inputs(const cl::Context& context, const ggxcl::PerSa
 }
 
 // The partial sums of one enqueue_furnace launch, added in double: (sum, sum of squares).
-std::pair<double, double> guarded_furnace(ggxcl::Sampler& sampler, ggxcl::SampleParams p,
+std::pair<double, double> guarded_furnace(ggxcl::Sampler& sampler, const ggxcl::SampleParams& p,
                                           const ggxcl::SampleRange& range, const ggxcl::DeviceInputs& inputs)
 {
     const std::size_t items = sampler.furnace_items(range.count);
     cl::Buffer sums(sampler.context(), CL_MEM_WRITE_ONLY, 2 * items * sizeof(float));
-    p.guards = true;
     sampler.enqueue_furnace(sampler.queue(), p, range, sums, inputs);
     std::vector<float> partial(2 * items);
     sampler.queue().enqueueReadBuffer(sums, CL_TRUE, 0, partial.size() * sizeof(float), partial.data());
@@ -254,7 +253,7 @@ bool close_sums(double a, double b) { return std::fabs(a - b) <= 1e-4 * std::fab
 // The fused furnace kernel, with work-groups of 64 so that COUNT = 1001
 // (126 work-items of 8 samples, the last one partial) spans two groups:
 // with uniform parameters unguarded (Sampler::furnace) and guarded
-// (enqueue_furnace with params.guards), whose sums agree, in precise and
+// (enqueue_furnace), whose sums agree, in precise and
 // relaxed mode; with per-sample buffers (relaxed mode), guarded, whose sum
 // equals that of the stored weights of the same samples.
 void run_furnace(ggxcl::Sampler& sampler, std::uint64_t count)

@@ -11,10 +11,16 @@
 //    horizon with small alpha narrow the cap to 1 + vz ~ 1e-4 and float loses
 //    digits there in every form; the stability map covers that);
 //  - negative control: a false promise (views_above_horizon for views that
-//    are not) selects the cheap form and visibly breaks the pdf there.
+//    are not) selects the cheap form and visibly breaks the pdf there;
+//  - the unguarded variant of ggxcl/benchmark.hpp equals the guarded one
+//    inside the domain bit for bit, and outside it (the view exactly
+//    opposite the normal) only the guarded one gives the fallback.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include <ggxcl/benchmark.hpp>
 
 #include "sample_compare.hpp"
 
@@ -172,4 +178,30 @@ TEST_CASE("negative control: a false above-horizon promise breaks the pdf of gra
     }
     CHECK(honest_bad == 0);
     CHECK(broken_bad > count / 2);
+}
+
+TEST_CASE("the unguarded benchmark variant: the same bits inside the domain, no fallback outside")
+{
+    auto& s = ggxtest::sampler();
+    // m (3 planes) then pdf_m of each sample.
+    auto samples = [&](ggxcl::Vec3 view, bool guarded) {
+        ggxcl::SampleParams p{ggxcl::Method::caps, 0.4f, 0.4f, view};
+        ggxcl::DeviceOutputs out;
+        out.m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * count * sizeof(float));
+        out.pdf_m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, count * sizeof(float));
+        const ggxcl::SampleRange range{seed, 0, count};
+        (guarded ? s.enqueue(s.queue(), p, range, out)
+                 : ggxcl::benchmark::enqueue_unguarded(s, s.queue(), p, range, out)).wait();
+        std::vector<float> values(4 * count);
+        s.queue().enqueueReadBuffer(out.m, CL_TRUE, 0, 3 * count * sizeof(float), values.data());
+        s.queue().enqueueReadBuffer(out.pdf_m, CL_TRUE, 0, count * sizeof(float), values.data() + 3 * count);
+        return values;
+    };
+    const ggxcl::Vec3 inside = ggxcl::view_from_angles(50, 0), opposite{0.0f, 0.0f, -1.0f};
+    CHECK(samples(inside, false) == samples(inside, true));
+    const std::vector<float> guarded = samples(opposite, true), unguarded = samples(opposite, false);
+    std::vector<float> fallback(4 * count, 0.0f);  // m = (0, 0, 1), pdf_m = 0
+    std::fill(fallback.begin() + 2 * count, fallback.begin() + 3 * count, 1.0f);
+    CHECK(guarded == fallback);
+    CHECK(std::any_of(unguarded.begin(), unguarded.end(), [](float v) { return !std::isfinite(v); }));
 }

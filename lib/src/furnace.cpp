@@ -58,6 +58,14 @@ cl::Event Sampler::enqueue_furnace(cl::CommandQueue& queue, const SampleParams& 
                                    const cl::Buffer& sums, const DeviceInputs& inputs,
                                    const std::vector<cl::Event>* wait)
 {
+    return enqueue_furnace_variant(queue, params, range, sums, inputs, wait, true);
+}
+
+cl::Event Sampler::enqueue_furnace_variant(cl::CommandQueue& queue, const SampleParams& params,
+                                           const SampleRange& range, const cl::Buffer& sums,
+                                           const DeviceInputs& inputs, const std::vector<cl::Event>* wait,
+                                           bool guards)
+{
     validate(params);
     validate(range);
     detail::check_launch_count(range.count, 0);
@@ -67,7 +75,7 @@ cl::Event Sampler::enqueue_furnace(cl::CommandQueue& queue, const SampleParams& 
     return detail::translate_cl_errors([&] {
         // The estimator sums weights (its kernel ignores the write mask).
         const unsigned mask = detail::write_mask({Field::weight});
-        KernelLease lease = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, mask, inputs));
+        KernelLease lease = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, mask, inputs, guards));
         cl::Kernel& k = *lease;
         k.setArg(detail::arg_seed, cl_ulong(range.seed));
         k.setArg(detail::arg_first, cl_ulong(range.first));
@@ -89,10 +97,8 @@ void Sampler::add_furnace_launch(const SampleParams& params, const SampleRange& 
                                  std::vector<float>& host, FurnaceSums& total)
 {
     std::size_t used = furnace_items(range.count);
-    SampleParams attempt = params;
     for (bool guarded : {false, true}) {
-        attempt.guards = guarded;
-        enqueue_furnace(queue_, attempt, range, sums);
+        enqueue_furnace_variant(queue_, params, range, sums, {}, nullptr, guarded);
         queue_.enqueueReadBuffer(sums, CL_TRUE, 0, 2 * used * sizeof(float), host.data());
         double sum = total.sum, sum_of_squares = total.sum_of_squares;  // one order of additions, whatever the launches
         if (add_partial_sums(host, used, sum, sum_of_squares) || guarded) {

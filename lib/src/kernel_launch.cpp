@@ -14,7 +14,7 @@ namespace ggxcl {
 
 namespace detail {
 
-std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs)
+std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs, bool guards)
 {
     auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
     std::string options = "-DGGX_METHOD=" + std::to_string(method_id(params.method));
@@ -26,7 +26,7 @@ std::string build_options(const SampleParams& params, unsigned write_mask, const
                flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr);
     options += flag("GGX_ISOTROPIC", is_isotropic(params, inputs)) +
                flag("GGX_BELOW_HORIZON", !is_above_horizon(params, inputs)) +
-               flag("GGX_WORLD_SPACE", params.world_space) + flag("GGX_GUARDS", params.guards) +
+               flag("GGX_WORLD_SPACE", params.world_space) + flag("GGX_GUARDS", guards) +
                flag("GGX_NORMAL_IS_Z", inputs.normal() == nullptr && params.normal.x == 0.0f &&
                                            params.normal.y == 0.0f && params.normal.z == 1.0f);
     return options;

@@ -16,7 +16,9 @@ constexpr std::size_t preferred_group_size = 256;
 
 // -D options selecting the method, the precision mode, the written fields, per-sample inputs
 // and what the request needs (isotropic, views below the horizon, world space).
-std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs);
+// guards = false (benchmarks only) drops the fallbacks of docs/STABILITY.md.
+std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs,
+                          bool guards = true);
 bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs);
 bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
 

@@ -103,6 +103,13 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
                            const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
                            const std::vector<cl::Event>* wait)
 {
+    return enqueue_variant(queue, params, range, outputs, stride, inputs, wait, true);
+}
+
+cl::Event Sampler::enqueue_variant(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
+                                   const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
+                                   const std::vector<cl::Event>* wait, bool guards)
+{
     validate(params);
     validate(range);
     check_launch_count(range.count, stride);
@@ -111,7 +118,7 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
         throw InvalidArgument("outputs", "none", "at least one output buffer (m, o, pdf_m, pdf_o or weight)");
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
-        std::string options = build_options(unit, mask, inputs);
+        std::string options = build_options(unit, mask, inputs, guards);
         auto make = [&](const std::string& name) {
             KernelLease lease = kernel(bulk_file, name, options);
             cl::Kernel& k = *lease;

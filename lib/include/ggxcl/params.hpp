@@ -41,9 +41,8 @@ struct SampleParams {
     bool world_space = false;
     // Outside its domain (a roughness of 0, the view exactly opposite the
     // normal, ...) every method returns the fallback m = n, o = the mirror of
-    // i, pdfs and weight 0 (docs/STABILITY.md).  false drops these guards:
-    // NaN and Inf become possible there; it exists to measure their cost.
-    bool guards = true;
+    // i, pdfs and weight 0 (docs/STABILITY.md).  What these guards cost is
+    // measured through ggxcl/benchmark.hpp.
 };
 
 // Whether the view is measured against params.normal (caps-iso, world space)

@@ -86,6 +86,13 @@ struct FurnaceSums {
 // Errors: InvalidArgument for bad arguments, ClError for OpenCL failures,
 // DeviceLost (a ClError) when the device stops working mid-call; a call
 // that throws has delivered only whole chunks, in order, to a ChunkSink.
+class Sampler;
+namespace benchmark {  // ggxcl/benchmark.hpp
+cl::Event enqueue_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&, const SampleRange&, const DeviceOutputs&);
+cl::Event enqueue_furnace_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&, const SampleRange&,
+                                    const cl::Buffer&);
+} // namespace benchmark
+
 class Sampler {
 public:
     // A sampler with its own context and in-order queue on the device that
@@ -176,12 +183,10 @@ public:
 
     // Enqueues it for one range (count <= 2^31): `sums` receives
     // 2 * furnace_items(count) floats, the partial weight sums of the
-    // work-items, then their partial sums of squared weights.  With
-    // params.guards (the default) the kernel applies the fallbacks of
-    // docs/STABILITY.md but does not vectorize on PoCL (the 8 guarded samples
-    // of a work-item get paired by LLVM's SLP vectorizer); furnace() therefore
-    // runs it unguarded and reruns a launch with guards only when one of its
-    // sums is not finite.
+    // work-items, then their partial sums of squared weights.  The kernel
+    // applies the fallbacks of docs/STABILITY.md and so runs slower than
+    // furnace(), which draws without them and redraws a launch with them only
+    // when one of its sums is not finite.
     cl::Event enqueue_furnace(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
                               const cl::Buffer& sums, const DeviceInputs& inputs = {},
                               const std::vector<cl::Event>* wait = nullptr);
@@ -193,6 +198,16 @@ public:
     std::size_t programs_from_disk() const { return programs_->loaded_from_disk(); }
 
 private:
+    friend cl::Event benchmark::enqueue_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&,
+                                                   const SampleRange&, const DeviceOutputs&);
+    friend cl::Event benchmark::enqueue_furnace_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&,
+                                                           const SampleRange&, const cl::Buffer&);
+    cl::Event enqueue_variant(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
+                              const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
+                              const std::vector<cl::Event>* wait, bool guards);
+    cl::Event enqueue_furnace_variant(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
+                                      const cl::Buffer& sums, const DeviceInputs& inputs,
+                                      const std::vector<cl::Event>* wait, bool guards);
     void add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,
                             std::vector<float>& host, FurnaceSums& total);
     KernelLease kernel(const std::string& file, const std::string& name, const std::string& options);

@@ -1,7 +1,8 @@
-// test_device_faults.cpp - device memory exhaustion and a lost device
-// (issue 6), provoked on any device through GGXCL_INJECT_FAULT:
-//  - out of memory: the host front ends halve their chunk and go on, with
-//    the same bits as an undisturbed run; below the smallest chunk the
+// test_device_faults.cpp - device memory exhaustion and a lost device,
+// provoked on any device through GGXCL_INJECT_FAULT:
+//  - out of memory: the host front ends (generate, pdf, furnace, histogram)
+//    halve their chunk and go on, with the same bits (the same counts) as an
+//    undisturbed run; below the smallest chunk the
 //    error names CL_MEM_OBJECT_ALLOCATION_FAILURE;
 //  - a lost device: DeviceLost naming CL_DEVICE_NOT_AVAILABLE, and a
 //    ChunkSink has received only the whole chunks finished before;
@@ -53,6 +54,7 @@ TEST_CASE("out of device memory: smaller chunks, the same bits")
     for (std::size_t j = 0; j < directions.size(); ++j)
         directions[j] = expected.o_at(j);
     std::vector<float> pdf = s.pdf(p, directions);
+    ggxcl::Histogram histogram = s.histogram(p, range, 16, 32);
 
     std::uint64_t retries = s.memory_retries();
     InjectedFault fault("alloc-above=200000");  // 3 planes of 16384 samples fit, of 32768 do not
@@ -62,6 +64,12 @@ TEST_CASE("out of device memory: smaller chunks, the same bits")
     ggxcl::FurnaceSums again = s.furnace(p, range);
     CHECK(again.sum == furnace.sum);
     CHECK(again.sum_of_squares == furnace.sum_of_squares);
+    retries = s.memory_retries();
+    ggxcl::Histogram histogram_again = s.histogram(p, range, 16, 32);
+    CHECK(histogram_again.counts == histogram.counts);
+    CHECK(histogram_again.non_finite == histogram.non_finite);
+    if (s.device().getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU)  // bin indices of a pass: 4 bytes per sample
+        CHECK(s.memory_retries() - retries == 3);                    // 300007 -> 150003 -> 75001 -> 37500
 }
 
 TEST_CASE("out of device memory even at the smallest chunk: an error naming it")

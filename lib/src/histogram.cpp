@@ -18,6 +18,7 @@ namespace {
 constexpr std::uint32_t samples_per_item = 64;
 constexpr std::uint64_t samples_per_launch = 1u << 30;      // keeps every 32-bit bin count below 2^32
 constexpr std::uint64_t samples_per_index_pass = 1u << 22;  // the bin indices of one pass: 16 MiB
+constexpr std::uint64_t smallest_pass = 1024;  // samples; out of memory below it is an error
 
 std::string histogram_options(const SampleParams& params, int bins_z, int bins_phi, Field direction)
 {
@@ -56,14 +57,15 @@ struct Sampler::HistogramRun {
     cl::Buffer indices;  // CPU strategy: a pass's bin indices
     std::uint32_t counters = 1;  // CPU strategy: work-groups of one that count a pass
 
+    // pass: the most samples one pass counts (the CPU strategy's index buffer holds that many).
     HistogramRun(Sampler& s, const SampleParams& p, const SampleRange& r, std::size_t bin_count, std::string opts,
-                 bool by_indices)
+                 bool by_indices, std::uint64_t pass)
         : sampler(s), params(p), range(r), bins(bin_count), options(std::move(opts))
     {
         counts = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
         if (!by_indices)
             return;
-        const std::uint64_t n = std::min(samples_per_index_pass, range.count);
+        const std::uint64_t n = std::min(pass, range.count);
         indices = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, n * sizeof(cl_uint));
         if (detail::kernel_writes_look_uninitialized(sampler.device_)) {
             const std::vector<cl_uint> zeros(n, 0u);
@@ -148,17 +150,23 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
     return detail::translate_cl_errors([&] {
         check_bins(bins_z, bins_phi, direction, device_.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>());
         const bool cpu = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
-        HistogramRun run(*this, unit, range, std::size_t(bins_z) * bins_phi,
-                         histogram_options(unit, bins_z, bins_phi, direction), cpu);
-        Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(run.bins, 0), 0};
-        for (std::uint64_t start = 0; start < range.count;) {
-            std::uint64_t n = std::min(cpu ? samples_per_index_pass : samples_per_launch, range.count - start);
-            std::vector<cl_uint> counts = cpu ? run.count_by_indices(start, n) : run.count_in_groups(start, n);
-            for (std::size_t b = 0; b < run.bins; ++b)
-                result.counts[b] += counts[b];
-            result.non_finite += counts[run.bins];
-            start += n;
-        }
+        const std::size_t bins = std::size_t(bins_z) * bins_phi;
+        const std::string options = histogram_options(unit, bins_z, bins_phi, direction);
+        Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0};
+        // Passes of at most `pass` samples, halved when the device runs out of memory: the counts are
+        // integers, the same however the range is cut.
+        std::uint64_t start = 0, pass = std::min(cpu ? samples_per_index_pass : samples_per_launch, range.count);
+        detail::retry_with_smaller_chunks(pass, smallest_pass, memory_retries_, [&](std::uint64_t capacity) {
+            HistogramRun run(*this, unit, range, bins, options, cpu, capacity);
+            while (start < range.count) {  // start: the first sample not counted
+                const std::uint64_t n = std::min(capacity, range.count - start);
+                std::vector<cl_uint> counts = cpu ? run.count_by_indices(start, n) : run.count_in_groups(start, n);
+                for (std::size_t b = 0; b < bins; ++b)
+                    result.counts[b] += counts[b];
+                result.non_finite += counts[bins];
+                start += n;
+            }
+        });
         return result;
     });
 }

@@ -1,99 +1,19 @@
-// device_faults.cpp - out-of-memory retries, lost-device codes and the
-// fault injection of GGXCL_INJECT_FAULT.
+// device_faults.cpp - out-of-memory retries, lost-device codes, and where
+// the faults of GGXCL_INJECT_FAULT (fault_injection.hpp) strike.
 #include "device_faults.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <cstdlib>
-#include <exception>
-#include <mutex>
 #include <string>
 
+#include "fault_injection.hpp"
 #include "ggxcl/error.hpp"
 
 namespace ggxcl::detail {
 
-namespace {
-
-struct InjectedFault {
-    std::uint64_t alloc_above = 0;  // 0: no allocation fault
-    std::uint64_t lost_after = 0;
-    bool lost = false;              // lost_after is set
-};
-
-std::uint64_t parse_amount(const std::string& spec, const std::string& text)
-{
-    std::size_t used = 0;
-    unsigned long long value = 0;
-    try {
-        value = std::stoull(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || text[0] == '-')
-        throw InvalidArgument("GGXCL_INJECT_FAULT", spec, "alloc-above=BYTES or lost-after=LAUNCHES (whole numbers)");
-    return value;
-}
-
-InjectedFault parse_fault(const std::string& spec)
-{
-    InjectedFault fault;
-    const std::string alloc = "alloc-above=", lost = "lost-after=";
-    if (spec.rfind(alloc, 0) == 0) {
-        fault.alloc_above = parse_amount(spec, spec.substr(alloc.size()));
-    } else if (spec.rfind(lost, 0) == 0) {
-        fault.lost_after = parse_amount(spec, spec.substr(lost.size()));
-        fault.lost = true;
-    } else if (!spec.empty()) {
-        parse_amount(spec, "");  // throws, naming the forms allowed
-    }
-    return fault;
-}
-
-// The fault the environment asks for now, and the launches counted since it
-// was set (this call's, with count_launch, included).  The value is parsed
-// when it changes; a malformed one is refused on every call.  While the
-// variable has never been set, a launch costs one getenv and no lock.
-InjectedFault current_fault(bool count_launch, std::uint64_t& launches_before)
-{
-    static std::mutex mutex;
-    static std::atomic<bool> ever_set{false};
-    static std::string last_spec;
-    static std::exception_ptr refused;  // the InvalidArgument of a malformed value
-    static InjectedFault fault;
-    static std::uint64_t launches = 0;
-    const char* env = std::getenv("GGXCL_INJECT_FAULT");
-    if (env == nullptr && !ever_set.load(std::memory_order_acquire)) {
-        launches_before = 0;
-        return {};
-    }
-    ever_set.store(true, std::memory_order_release);
-    std::string spec = env ? env : "";
-    std::lock_guard<std::mutex> lock(mutex);
-    if (spec != last_spec) {
-        last_spec = spec;
-        launches = 0;
-        fault = {};
-        refused = nullptr;
-        try {
-            fault = parse_fault(spec);
-        } catch (const InvalidArgument&) {
-            refused = std::current_exception();
-        }
-    }
-    if (refused)
-        std::rethrow_exception(refused);
-    launches_before = launches;
-    launches += count_launch ? 1 : 0;
-    return fault;
-}
-
-} // namespace
-
 cl::Buffer device_buffer(const cl::Context& context, cl_mem_flags flags, std::size_t bytes)
 {
     std::uint64_t launches = 0;
-    InjectedFault fault = current_fault(false, launches);
+    InjectedFault fault = injected_fault(false, launches);
     if (fault.alloc_above != 0 && bytes > fault.alloc_above)
         throw cl::Error(CL_MEM_OBJECT_ALLOCATION_FAILURE, "clCreateBuffer (GGXCL_INJECT_FAULT)");
     return cl::Buffer(context, flags, bytes);
@@ -102,7 +22,7 @@ cl::Buffer device_buffer(const cl::Context& context, cl_mem_flags flags, std::si
 void before_launch()
 {
     std::uint64_t launch = 0;
-    InjectedFault fault = current_fault(true, launch);
+    InjectedFault fault = injected_fault(true, launch);
     if (fault.lost && launch >= fault.lost_after)
         throw cl::Error(CL_DEVICE_NOT_AVAILABLE, "clEnqueueNDRangeKernel (GGXCL_INJECT_FAULT)");
 }

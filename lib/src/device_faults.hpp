@@ -1,10 +1,6 @@
 // device_faults.hpp - what the runtime does when a device runs out of
-// memory or is lost, and the fault injection that lets tests provoke both
-// on any device (GGXCL_INJECT_FAULT, see docs/RELIABILITY.md):
-//   alloc-above=BYTES   every device buffer larger than BYTES fails to
-//                       allocate (CL_MEM_OBJECT_ALLOCATION_FAILURE)
-//   lost-after=N        the first N kernel launches of the process run, every
-//                       later one fails as on a lost device (CL_DEVICE_NOT_AVAILABLE)
+// memory or is lost: device buffers and launches go through here, where the
+// faults that tests inject (GGXCL_INJECT_FAULT, fault_injection.hpp) strike.
 #pragma once
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // Lambda, masking G1, masking-shadowing G2 (height-correlated and separable),
 // the projected area sigma and the VNDF and reflection densities.
 // Anisotropic forms take (ax, ay); the `_iso` forms take one alpha.
-// Notation: t(w) = |(ax wx, ay wy, wz)|, see SPEC.md "Shared math".
+// Notation: t(w) = |(ax wx, ay wy, wz)|, see docs/MATH.md "Shared quantities".
 #ifndef GGX_MATH_H
 #define GGX_MATH_H
 

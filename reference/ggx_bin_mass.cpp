@@ -128,7 +128,7 @@ std::function<Vec3(double)> circle(const Vec3& axis, double height)
     return [=](double psi) { return height * axis + r * std::cos(psi) * e1 + r * std::sin(psi) * e2; };
 }
 
-// The bounded sampler draws c on the cap c.z >= -k ih.z (SPEC method 5); its edge carried to m.
+// The bounded sampler draws c on the cap c.z >= -k ih.z (docs/MATH.md "Per method"); its edge carried to m.
 std::function<Vec3(double)> bounded_cap_normals(const Params& p)
 {
     const Vec3 ih = normalize({p.ax * p.i.x, p.ay * p.i.y, p.i.z});

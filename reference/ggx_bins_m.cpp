@@ -12,7 +12,7 @@ namespace {
 
 using detail::Support;
 
-// NDF sampling: D(m) mz, a kink at mz = 0. VNDF (SPEC "Shared math"): 2 D(m) max(0, i.m) / (iz + t)
+// NDF sampling: D(m) mz, a kink at mz = 0. VNDF (docs/MATH.md "Shared quantities"): 2 D(m) max(0, i.m) / (iz + t)
 // jumps at m.n = 0 where i.m > 0 and has a kink at i.m = 0. The bounded sampler above the
 // horizon draws only inside its cap, which lies strictly within m.n > 0 and i.m > 0
 // (mh.z >= (1 - k) ih.z > 0 and ih.mh > 0), so its one edge, a jump, is the cap's.

@@ -1,4 +1,4 @@
-// ggx_math.cpp - the shared GGX quantities of SPEC "Shared math": NDF, Smith Lambda and masking,
+// ggx_math.cpp - the shared GGX quantities of docs/MATH.md "Shared quantities": NDF, Smith Lambda and masking,
 // projected area, VNDF, the bounded-VNDF k of Eto & Tokuyoshi, and their isotropic world-space forms.
 #include <algorithm>
 #include <cmath>
@@ -64,7 +64,7 @@ double projected_area(const Vec3& i, double ax, double ay)
     return 0.5 * (sq(ax * i.x) + sq(ay * i.y)) / (t - i.z);
 }
 
-// Dv(m; i) = max(0, i.m) D(m) / sigma(i) (Heitz 2018; SPEC VNDF).
+// Dv(m; i) = max(0, i.m) D(m) / sigma(i) (Heitz 2018; docs/MATH.md "Shared quantities").
 double vndf_pdf(const Vec3& m, const Vec3& i, double ax, double ay)
 {
     return std::max(0.0, dot(i, m)) * D(m, ax, ay) / projected_area(i, ax, ay);

@@ -92,7 +92,7 @@ double density_m(Method method, const Params& p, const Vec3& m)
     return 2.0 * d * std::max(0.0, dot(p.i, m)) * inv_norm(view_of(method, p), k_eff(method, p));
 }
 
-// pdf of o = reflect(i, m) given m: density_m / (4 |i.m|), simplified per SPEC to
+// pdf of o = reflect(i, m) given m: density_m / (4 |i.m|), simplified (docs/MATH.md) to
 // D mz / (4 |i.m|) (NDF) and D / (2 (k iz + t)) (caps family).
 double density_o(Method method, const Params& p, const Vec3& m)
 {
@@ -152,7 +152,7 @@ double pdf_o(Method method, const Params& p, const Vec3& o)
 
 namespace {
 
-// Furnace weight w = D(m) G2(i, o) / (4 iz) / pdf_o for reflections above the horizon (SPEC).
+// Furnace weight w = D(m) G2(i, o) / (4 iz) / pdf_o for reflections above the horizon (docs/MATH.md).
 Sample unguarded_sample(Method method, const Params& p, double u1, double u2)
 {
     Sample s{};

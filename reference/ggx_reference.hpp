@@ -1,5 +1,5 @@
 // ggx_reference.hpp - double-precision host reference of the ggxcl GGX samplers: the oracle the
-// device kernels are tested against. Math and conventions: shared/SPEC.md. Tangent space has
+// device kernels are tested against. Math and conventions: docs/MATH.md. Tangent space has
 // n = (0, 0, 1); i and o point away from the surface; alpha is GGX alpha; u1, u2 lie in [0, 1).
 #pragma once
 
@@ -35,7 +35,7 @@ Vec3 sample_normal(Method, const Params&, double u1, double u2);  // its microfa
 double pdf_o(Method, const Params&, const Vec3& o);               // pdf of o recomputed from (i, o) alone
 double pdf_m(Method, const Params&, const Vec3& m);               // pdf of m recomputed from (i, m) alone
 
-// GGX math, tangent space, anisotropic (SPEC "Shared math").
+// GGX math, tangent space, anisotropic (docs/MATH.md "Shared quantities").
 double t_of(const Vec3& w, double ax, double ay);    // sqrt(ax^2 wx^2 + ay^2 wy^2 + wz^2)
 double D(const Vec3& m, double ax, double ay);       // 0 for mz <= 0
 double lambda(const Vec3& w, double ax, double ay);  // Smith Lambda, Lambda(-w) = 1 + Lambda(w)

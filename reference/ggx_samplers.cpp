@@ -1,5 +1,5 @@
-// ggx_samplers.cpp - the six ways of drawing a microfacet normal m from two uniforms (SPEC
-// "The samplers"), each written from its paper: Walter 2007, Heitz 2018 and 2017, Dupuy & Benyoub
+// ggx_samplers.cpp - the six ways of drawing a microfacet normal m from two uniforms
+// (docs/MATH.md "Per method"), each written from its paper: Walter 2007, Heitz 2018 and 2017, Dupuy & Benyoub
 // 2023, Benyoub 2024 and Eto & Tokuyoshi 2023.
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // test_chi_square_extremes.cpp - goodness of fit at the edges of each
-// method's domain (issue 5): alpha 1e-3 and 4, a view 89.9 degrees from
+// method's domain: alpha 1e-3 and 4, a view 89.9 degrees from
 // the normal, anisotropy 1:100, and views below the horizon for the methods
 // that sample them (heitz, caps, caps-iso, bounded; ndf does not look at the
 // view).  1e6 samples per configuration, 24 x 48 bins, Sidak over the

@@ -1,4 +1,4 @@
-// test_faults.cpp - runtime faults of the `ggx` tool (issue 6): each gets a
+// test_faults.cpp - runtime faults of the `ggx` tool: each gets a
 // clear message on stderr, exit status 1 (or the signal that stopped it),
 // and leaves no file behind, neither under the final name nor as a
 // temporary:

@@ -1,5 +1,5 @@
-// test_user_kernels.cpp - the device headers inside a user's own kernels
-// (issue 7): a user kernel that includes ggx_samplers.h (through
+// test_user_kernels.cpp - the device headers inside a user's own kernels:
+// a user kernel that includes ggx_samplers.h (through
 // build_user_program's -I, through headers written by write_device_headers,
 // or with the embedded text prepended) reproduces Sampler::enqueue bit for
 // bit; each header compiles alone and all together; every name they define

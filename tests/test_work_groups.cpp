@@ -1,4 +1,4 @@
-// test_work_groups.cpp - determinism across work-group sizes (issue 6):
+// test_work_groups.cpp - determinism across work-group sizes:
 // sample k is work-item k whatever the size of the groups, so every front
 // end (host vectors, caller buffers, pdf, fused furnace, histogram) gives
 // the same bits for sizes 1, 7 (not a power of two; whole groups plus a

@@ -53,7 +53,7 @@ std::vector<Vec3> normals_for(Method method)
 {
     std::vector<Vec3> normals = {{0, 0, 1}, {1, 0, 0}, ggxref::normalize({0.3, -0.5, 0.6}),
                                  ggxref::normalize({-0.2, 0.1, -0.97})};
-    if (method != Method::caps_iso)  // caps-iso is singular at n = -z (docs: issue 5)
+    if (method != Method::caps_iso)  // caps-iso is singular at n = -z (docs/STABILITY.md)
         normals.push_back({0, 0, -1});
     return normals;
 }

@@ -1,7 +1,7 @@
 // native_baseline.hpp - the native C++ baseline that `ggx bench` times against the OpenCL
 // kernels: the same sampling math written as plain scalar float C++ (what a user would otherwise
 // write), compiled -O3 -march=native and run on `threads` std::threads.  Method ids and
-// conventions follow ggxref::Method and shared/SPEC.md; uniforms are the project's Philox stream.
+// conventions follow ggxref::Method and docs/MATH.md; uniforms are the project's Philox stream.
 #pragma once
 
 #include <cstdint>

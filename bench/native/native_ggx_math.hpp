@@ -1,6 +1,6 @@
 // native_ggx_math.hpp - the GGX quantities the samplers share, in tangent space (n = (0, 0, 1)):
 // t(w), masking-shadowing G2, 1/(iz + t), D from a standard-space normal, and the assembly of a
-// VNDF-family sample with its densities and white-furnace weight (SPEC "Shared math").
+// VNDF-family sample with its densities and white-furnace weight (docs/MATH.md "Shared quantities").
 #pragma once
 
 #include <cmath>

@@ -40,8 +40,8 @@ struct SampleParams {
     // Isotropic only (alpha_x == alpha_y): the normal alone fixes no tangent.
     bool world_space = false;
     // Outside its domain (a roughness of 0, the view exactly opposite the
-    // normal, ...) every method returns the fallback m = n, o = the mirror of
-    // i, pdfs and weight 0 (docs/STABILITY.md).  What these guards cost is
+    // normal, ...) every method returns the fallback m = o = n, pdfs and
+    // weight 0 (docs/STABILITY.md).  What these guards cost is
     // measured through ggxcl/benchmark.hpp.
 };
 

@@ -1,5 +1,5 @@
 // embed_kernels.cpp - build-time tool: turns source files (the OpenCL C of
-// kernels/, the plotting script of apps/) into a C++ source holding each
+// kernels/, the plotting scripts of apps/plot/) into a C++ source holding each
 // file with its `#include "..."` lines expanded (each header once), framed
 // by `#line` markers so that build logs name the original file and line (in
 // a script they are comments).  Programs then need no source tree.

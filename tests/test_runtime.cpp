@@ -9,6 +9,7 @@
 
 #include "bit_compare.hpp"
 #include "device_fixture.hpp"
+#include "program_cache.hpp"
 
 namespace {
 

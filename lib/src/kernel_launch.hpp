@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ggxcl/sampler.hpp"
+#include "program_cache.hpp"
 
 namespace ggxcl::detail {
 

@@ -1,6 +1,6 @@
 // program_cache.cpp - building and caching programs per (device, options),
 // in memory and (as binaries) on disk.
-#include "ggxcl/program_cache.hpp"
+#include "program_cache.hpp"
 
 #include "build_program.hpp"
 #include "ggxcl/error.hpp"

@@ -8,7 +8,6 @@
 #include "ggxcl/method.hpp"
 #include "ggxcl/multi_device.hpp"
 #include "ggxcl/params.hpp"
-#include "ggxcl/program_cache.hpp"
 #include "ggxcl/sampler.hpp"
 #include "ggxcl/user_kernels.hpp"
 #include "ggxcl/version.hpp"

@@ -18,9 +18,11 @@
 #include "ggxcl/fields.hpp"
 #include "ggxcl/opencl.hpp"
 #include "ggxcl/params.hpp"
-#include "ggxcl/program_cache.hpp"
 
 namespace ggxcl {
+
+class ProgramCache;  // the runtime's programs and kernels per context (internal)
+class KernelLease;
 
 // Samples on the host.  Vector fields are planar: m[c * count + j] is
 // component c (x, y, z) of sample j.  Fields not requested stay empty.
@@ -193,9 +195,9 @@ public:
     std::size_t furnace_items(std::uint64_t count) const;
 
     // Number of distinct program variants built so far.
-    std::size_t programs_built() const { return programs_->size(); }
-    // How many of them came from the on-disk binary cache (see program_cache.hpp).
-    std::size_t programs_from_disk() const { return programs_->loaded_from_disk(); }
+    std::size_t programs_built() const;
+    // How many of them came from the on-disk binary cache (GGXCL_PROGRAM_CACHE, see README).
+    std::size_t programs_from_disk() const;
 
 private:
     friend cl::Event benchmark::enqueue_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&,

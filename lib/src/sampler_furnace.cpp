@@ -1,4 +1,4 @@
-// furnace.cpp - Sampler::furnace and enqueue_furnace: the fused
+// sampler_furnace.cpp - Sampler::furnace and enqueue_furnace: the fused
 // white-furnace estimator, which sums the estimator weights per work-item
 // on the device (kernels/ggx_furnace.cl) and adds those partial sums in
 // double on the host.

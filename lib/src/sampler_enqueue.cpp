@@ -1,5 +1,7 @@
-// sampler.cpp - the Sampler: program variants per request, kernel launches
-// into caller buffers, and chunked generation into host vectors.
+// sampler_enqueue.cpp - the Sampler's construction and settings, and its
+// launches into the caller's buffers: enqueue, warm_up, enqueue_pdf (the
+// host-memory front ends are in sampler_generate.cpp, the histogram and the
+// fused estimator in sampler_histogram.cpp and sampler_furnace.cpp).
 #include "ggxcl/sampler.hpp"
 
 #include <algorithm>
@@ -92,6 +94,16 @@ void Sampler::set_work_group_size(std::size_t items)
 std::size_t Sampler::work_group_size() const
 {
     return group_size(device_max_group_, work_group_size_);
+}
+
+std::size_t Sampler::programs_built() const
+{
+    return programs_->size();
+}
+
+std::size_t Sampler::programs_from_disk() const
+{
+    return programs_->loaded_from_disk();
 }
 
 KernelLease Sampler::kernel(const std::string& file, const std::string& name, const std::string& options)

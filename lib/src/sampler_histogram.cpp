@@ -1,4 +1,4 @@
-// histogram.cpp - Sampler::histogram: device-side binning of sample
+// sampler_histogram.cpp - Sampler::histogram: device-side binning of sample
 // directions in launches of bounded size, 32-bit counts per launch summed
 // into 64-bit counts on the host.
 #include <algorithm>

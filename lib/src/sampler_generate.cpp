@@ -1,4 +1,4 @@
-// host_transfer.cpp - Sampler::generate, generate_chunks and pdf: the
+// sampler_generate.cpp - Sampler::generate, generate_chunks and pdf: the
 // host-memory front end that runs the bulk kernels chunk by chunk through
 // device buffers of bounded size, halving the chunk when the device runs
 // out of memory.

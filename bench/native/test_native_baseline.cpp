@@ -207,7 +207,7 @@ TEST_CASE("furnace_sum: mean weight agrees with ggxref on the same uniforms")
     }
 }
 
-// Bound 5e-5 rad for 99.9 % (2e-5 in tangent space), as tests/test_world_space.cpp: the float basis
+// Bound 5e-5 rad for 99.9 % (2e-5 in tangent space), as tests/samplers/test_world_space.cpp: the float basis
 // rounds the view, and heitz's tangent around the stretched view turns with that rounding (measured
 // here: 1.2e-4 worst, 3 of 4096 samples above 4e-5, heitz at alpha 0.05).
 TEST_CASE("world_space_o agrees with ggxref in a double Duff basis (caps-iso: in world space)")

@@ -2,7 +2,7 @@
 # installs the build tree to a temporary prefix, checks what is there and
 # that every installed C++ header compiles on its own, builds
 # examples/albedo_table against the installed package (CMAKE_PREFIX_PATH),
-# runs it and checks its .npy and .png files, compiles tests/consumer with
+# runs it and checks its .npy and .png files, compiles tests/install/consumer with
 # `pkg-config --cflags --libs ggxcl` and against the build tree's export
 # (ggxcl_DIR = the build tree), runs both, and removes the prefix.
 # Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, LIBDIR, INCLUDEDIR, BINDIR,
@@ -95,13 +95,13 @@ foreach(method ndf heitz heitz2017 caps caps-iso bounded quadrature)
 endforeach()
 
 # 4. A one-file consumer through pkg-config.
-step("compile consumer with pkg-config" ${CXX} -std=c++17 -O2 ${cxx_flags} ${SOURCE_DIR}/tests/consumer/consumer.cpp
+step("compile consumer with pkg-config" ${CXX} -std=c++17 -O2 ${cxx_flags} ${SOURCE_DIR}/tests/install/consumer/consumer.cpp
   ${pc_flags} ${linker_flags} -o ${WORK_DIR}/consumer-pkg-config)
 step("run consumer (pkg-config)" ${WORK_DIR}/consumer-pkg-config)
 message(STATUS "${step_output}")
 
 # 5. The same consumer against the build tree's export.
-step("configure consumer against the build tree" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer
+step("configure consumer against the build tree" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install/consumer
   -B ${WORK_DIR}/consumer-build -Dggxcl_DIR=${BUILD_DIR} ${forward_flags})
 step("build consumer against the build tree" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer-build -j2)
 step("run consumer (build tree)" ${WORK_DIR}/consumer-build/consumer)

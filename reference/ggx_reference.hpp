@@ -58,6 +58,12 @@ double G2_height_correlated_iso(const Vec3& i, const Vec3& o, const Vec3& n, dou
 // ones); uniforms() uses the low 32 bits of its seed.
 std::array<uint32_t, 2> philox2x32_10(const std::array<uint32_t, 2>& counter, uint32_t key);
 std::array<uint32_t, 2> philox_words(uint32_t seed, uint64_t index);
+// The Owen-scrambled Sobol points of kernels/ggx_sobol.h: the first two Sobol dimensions of point k
+// (unscrambled, as 32-bit binary fractions), the keyed nested uniform scramble, and the two words of
+// sample `index` of stream `seed` (u = top 24 bits times 2^-24).
+std::array<uint32_t, 2> sobol_points(uint32_t k);
+uint32_t owen_scramble(uint32_t word, uint32_t key);
+std::array<uint32_t, 2> sobol_words(uint32_t seed, uint64_t index);
 std::array<double, 2> uniforms(uint64_t seed, uint64_t index);
 
 }  // namespace ggxref

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "device_fixture.hpp"
+#include "ggx_contract.h"
 
 namespace {
 
@@ -163,16 +164,18 @@ TEST_CASE("both counting strategies give the same counts: local atomics and bin 
     cl::Buffer counts(s.context(), CL_MEM_READ_WRITE, (nz * nphi + 1) * 4);
     std::vector<cl_uint> host(nz * nphi + 1, 0);
     s.queue().enqueueWriteBuffer(counts, CL_TRUE, 0, host.size() * 4, host.data());
-    int arg = 0;
-    k.setArg(arg++, cl_ulong(range.seed));
-    k.setArg(arg++, cl_ulong(range.first));
-    k.setArg(arg++, cl_uint(range.count));
-    k.setArg(arg++, cl_uint(per_item));
-    for (float value : {v.x, v.y, v.z, p.alpha_x, p.alpha_y, 0.0f, 0.0f, 1.0f})
-        k.setArg(arg++, value);
-    for (int b = 0; b < 3; ++b)
-        k.setArg(arg++, cl::Buffer());
-    k.setArg(arg++, counts);
+    // The positions of kernels/ggx_contract.h, as the runtime sets them.
+    k.setArg(GGX_ARG_SEED, cl_ulong(range.seed));
+    k.setArg(GGX_ARG_FIRST, cl_ulong(range.first));
+    k.setArg(GGX_ARG_COUNT, cl_uint(range.count));
+    k.setArg(GGX_ARG_STRIDE, cl_uint(per_item));
+    const float uniforms[GGX_PARAM_UNIFORM_COUNT] = {v.x, v.y, v.z, p.alpha_x, p.alpha_y, 0.0f, 0.0f, 1.0f};
+    for (int a = 0; a < GGX_PARAM_ARG_COUNT; ++a)
+        if (a < GGX_PARAM_UNIFORM_COUNT)
+            k.setArg(GGX_ARG_PARAMS + a, uniforms[a]);
+        else
+            k.setArg(GGX_ARG_PARAMS + a, cl::Buffer());  // no per-sample inputs
+    k.setArg(GGX_ARG_OUTPUTS, counts);
     const std::size_t groups = (range.count + group * per_item - 1) / (group * per_item);
     s.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(groups * group), cl::NDRange(group));
     s.queue().enqueueReadBuffer(counts, CL_TRUE, 0, host.size() * 4, host.data());

@@ -31,7 +31,6 @@ unsigned write_mask_of(const DeviceOutputs& out)
 
 } // namespace
 
-
 using namespace detail;
 
 cl::Buffer& DeviceOutputs::of(Field field)
@@ -67,6 +66,11 @@ Sampler::Sampler(const cl::Context& context, const cl::Device& device)
     translate_cl_errors([&] {
         queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
         device_max_group_ = device_.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>();
+        max_alloc_ = device_.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+        local_mem_ = device_.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>();
+        compute_units_ = device_.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+        cpu_ = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
+        host_unified_ = device_.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>() == CL_TRUE;
         return 0;
     });
 }

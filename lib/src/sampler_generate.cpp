@@ -180,9 +180,9 @@ private:
 
 // The chunk capacity: the requested one, within the count, and small enough
 // that a buffer of `planes` planes fits the device's largest allocation.
-std::uint64_t fitted_capacity(const cl::Device& device, std::uint64_t requested, std::uint64_t count, int planes)
+std::uint64_t fitted_capacity(std::uint64_t max_alloc, std::uint64_t requested, std::uint64_t count, int planes)
 {
-    std::uint64_t largest = device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>() / (planes * sizeof(float));
+    std::uint64_t largest = max_alloc / (planes * sizeof(float));
     return std::max<std::uint64_t>(1, std::min({requested, count, largest}));
 }
 
@@ -214,7 +214,7 @@ void Sampler::run_chunks(const SampleParams& params, const SampleRange& range, F
     if (fields.empty())
         throw InvalidArgument("fields", "none", "at least one of m, o, pdf_m, pdf_o, weight");
     translate_cl_errors([&] {
-        std::uint64_t start = 0, chunk = fitted_capacity(device_, chunk_size_, range.count, 3);
+        std::uint64_t start = 0, chunk = fitted_capacity(max_alloc_, chunk_size_, range.count, 3);
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
             // Two slots: the device draws and fetches chunk k + 1 while the sink takes chunk k.
             ChunkSlot slots[2] = {ChunkSlot(context_, fields, capacity, map), ChunkSlot(context_, fields, capacity, map)};
@@ -263,8 +263,7 @@ void Sampler::run_chunks(const SampleParams& params, const SampleRange& range, F
 void Sampler::generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
                                    const ChunkViewSink& sink, const PerSampleInputs& per_sample)
 {
-    const bool shared = translate_cl_errors([&] { return device_.getInfo<CL_DEVICE_HOST_UNIFIED_MEMORY>() == CL_TRUE; });
-    run_chunks(params, range, fields, per_sample, shared,
+    run_chunks(params, range, fields, per_sample, host_unified_,
                [&](const SampleView& view, const SampleSet*, std::uint64_t offset) { sink(view, offset); });
 }
 
@@ -307,7 +306,7 @@ std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Ve
     validate(per_sample, params, count);
     std::vector<float> result(count);
     translate_cl_errors([&] {
-        std::uint64_t start = 0, chunk = fitted_capacity(device_, chunk_size_, count, 3);
+        std::uint64_t start = 0, chunk = fitted_capacity(max_alloc_, chunk_size_, count, 3);
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
             cl::Buffer dirs = detail::device_buffer(context_, CL_MEM_READ_ONLY, bytes(3 * capacity));
             cl::Buffer pdfs = detail::device_buffer(context_, CL_MEM_WRITE_ONLY, bytes(capacity));

@@ -71,7 +71,7 @@ struct Sampler::HistogramRun {
             const std::vector<cl_uint> zeros(n, 0u);
             sampler.queue_.enqueueWriteBuffer(indices, CL_TRUE, 0, n * sizeof(cl_uint), zeros.data());
         }
-        counters = std::uint32_t(4 * sampler.device_.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());
+        counters = 4 * sampler.compute_units_;
     }
 
     void set_sample_args(cl::Kernel& k, std::uint64_t start, std::uint64_t n) const
@@ -148,8 +148,8 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
     validate(range);
     SampleParams unit = normalized(params);
     return detail::translate_cl_errors([&] {
-        check_bins(bins_z, bins_phi, direction, device_.getInfo<CL_DEVICE_LOCAL_MEM_SIZE>());
-        const bool cpu = (device_.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
+        check_bins(bins_z, bins_phi, direction, local_mem_);
+        const bool cpu = cpu_;
         const std::size_t bins = std::size_t(bins_z) * bins_phi;
         const std::string options = histogram_options(unit, bins_z, bins_phi, direction);
         Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0};

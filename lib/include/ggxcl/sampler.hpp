@@ -225,7 +225,13 @@ private:
     std::shared_ptr<ProgramCache> programs_;
     std::uint64_t chunk_size_ = 1u << 20;
     std::size_t work_group_size_ = 0;     // 0: automatic
-    std::size_t device_max_group_ = 1;   // CL_DEVICE_MAX_WORK_GROUP_SIZE, read once
+    // What the launches need to know of the device, read once.
+    std::size_t device_max_group_ = 1;   // CL_DEVICE_MAX_WORK_GROUP_SIZE
+    std::uint64_t max_alloc_ = 0;        // CL_DEVICE_MAX_MEM_ALLOC_SIZE
+    std::size_t local_mem_ = 0;          // CL_DEVICE_LOCAL_MEM_SIZE
+    std::uint32_t compute_units_ = 1;    // CL_DEVICE_MAX_COMPUTE_UNITS
+    bool cpu_ = false;                   // CL_DEVICE_TYPE includes CL_DEVICE_TYPE_CPU
+    bool host_unified_ = false;          // CL_DEVICE_HOST_UNIFIED_MEMORY
     std::uint64_t memory_retries_ = 0;
 };
 

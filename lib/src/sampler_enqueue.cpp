@@ -44,16 +44,15 @@ const cl::Buffer& DeviceOutputs::of(Field field) const
     return const_cast<DeviceOutputs*>(this)->of(field);
 }
 
+std::vector<float>& SampleSet::column_source(Field field)
+{
+    std::vector<float>* planes[] = {&m, &o, &pdf_m, &pdf_o, &weight};
+    return *planes[static_cast<int>(field)];
+}
+
 const std::vector<float>& SampleSet::column_source(Field field) const
 {
-    switch (field) {
-    case Field::m: return m;
-    case Field::o: return o;
-    case Field::pdf_m: return pdf_m;
-    case Field::pdf_o: return pdf_o;
-    case Field::weight: return weight;
-    }
-    return m;
+    return const_cast<SampleSet*>(this)->column_source(field);
 }
 
 Sampler::Sampler(const std::string& selector) : Sampler(select_device(selector)) {}

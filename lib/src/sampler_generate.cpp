@@ -132,7 +132,7 @@ public:
                 mapped_[int(f)] = static_cast<float*>(
                     queue.enqueueMapBuffer(out_.of(f), CL_FALSE, CL_MAP_READ, 0, bytes(field_columns(f) * capacity_)));
             else
-                read_planes(queue, out_.of(f), field_columns(f), n, capacity_, host(f));
+                read_planes(queue, out_.of(f), field_columns(f), n, capacity_, host_.column_source(f));
         }
         queue.enqueueMarkerWithWaitList(nullptr, &ready_);
         queue.flush();
@@ -145,10 +145,9 @@ public:
         SampleView v;
         v.count = count_;
         v.stride = map_ ? capacity_ : count_;
-        const float** fields[] = {&v.m, &v.o, &v.pdf_m, &v.pdf_o, &v.weight};
         for (Field f : all_fields)
             if (fields_.has(f))
-                *fields[int(f)] = map_ ? mapped_[int(f)] : host(f).data();
+                v.column_source(f) = map_ ? mapped_[int(f)] : host_.column_source(f).data();
         return v;
     }
 
@@ -163,12 +162,6 @@ public:
     }
 
 private:
-    std::vector<float>& host(Field f)
-    {
-        std::vector<float>* hosts[] = {&host_.m, &host_.o, &host_.pdf_m, &host_.pdf_o, &host_.weight};
-        return *hosts[int(f)];
-    }
-
     FieldSet fields_;
     std::uint64_t capacity_, count_ = 0;
     bool map_;
@@ -188,10 +181,15 @@ std::uint64_t fitted_capacity(std::uint64_t max_alloc, std::uint64_t requested, 
 
 } // namespace
 
+const float*& SampleView::column_source(Field field)
+{
+    const float** planes[] = {&m, &o, &pdf_m, &pdf_o, &weight};
+    return *planes[int(field)];
+}
+
 const float* SampleView::column_source(Field field) const
 {
-    const float* fields[] = {m, o, pdf_m, pdf_o, weight};
-    return fields[int(field)];
+    return const_cast<SampleView*>(this)->column_source(field);
 }
 
 SampleView view_of(const SampleSet& set)
@@ -199,9 +197,8 @@ SampleView view_of(const SampleSet& set)
     SampleView v;
     v.count = set.count;
     v.stride = set.count;
-    const float** fields[] = {&v.m, &v.o, &v.pdf_m, &v.pdf_o, &v.weight};
     for (Field f : all_fields)
-        *fields[int(f)] = set.column_source(f).empty() ? nullptr : set.column_source(f).data();
+        v.column_source(f) = set.column_source(f).empty() ? nullptr : set.column_source(f).data();
     return v;
 }
 
@@ -279,17 +276,16 @@ SampleSet Sampler::generate(const SampleParams& params, const SampleRange& range
 {
     SampleSet all;
     all.count = range.count;
-    std::vector<float>* hosts[] = {&all.m, &all.o, &all.pdf_m, &all.pdf_o, &all.weight};
     auto copy_chunk = [&](const SampleSet& chunk, std::uint64_t offset) {
-        const std::vector<float>* parts[] = {&chunk.m, &chunk.o, &chunk.pdf_m, &chunk.pdf_o, &chunk.weight};
         for (Field f : all_fields) {
             if (!fields.has(f))
                 continue;
-            int planes = field_columns(f);
-            hosts[int(f)]->resize(planes * range.count);
-            for (int c = 0; c < planes; ++c)
-                std::copy_n(parts[int(f)]->data() + c * chunk.count, chunk.count,
-                            hosts[int(f)]->data() + c * range.count + offset);
+            std::vector<float>& whole = all.column_source(f);
+            if (whole.empty())  // the first chunk: after generate_chunks has checked the request
+                whole.resize(field_columns(f) * range.count);
+            for (int c = 0; c < field_columns(f); ++c)
+                std::copy_n(chunk.column_source(f).data() + c * chunk.count, chunk.count,
+                            whole.data() + c * range.count + offset);
         }
     };
     generate_chunks(params, range, fields, copy_chunk, per_sample);

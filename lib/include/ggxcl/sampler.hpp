@@ -33,6 +33,7 @@ struct SampleSet {
     Vec3 m_at(std::size_t j) const { return {m[j], m[count + j], m[2 * count + j]}; }
     Vec3 o_at(std::size_t j) const { return {o[j], o[count + j], o[2 * count + j]}; }
     const std::vector<float>& column_source(Field field) const;
+    std::vector<float>& column_source(Field field);
 };
 
 // A chunk of samples in memory the Sampler owns, valid only during the call
@@ -43,6 +44,7 @@ struct SampleView {
     std::uint64_t count = 0, stride = 0;
     const float *m = nullptr, *o = nullptr, *pdf_m = nullptr, *pdf_o = nullptr, *weight = nullptr;
     const float* column_source(Field field) const;
+    const float*& column_source(Field field);
 };
 SampleView view_of(const SampleSet& set);  // its fields, stride = count
 

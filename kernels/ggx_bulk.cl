@@ -4,7 +4,8 @@
 // The program is specialized by build options (set by the runtime):
 //   GGX_METHOD=<id>                  which sampler (see ggx_samplers.h)
 //   GGX_WRITE_MASK=<bits>            fields to compute and store: bit 1 << GGX_FIELD_* (ggx_contract.h)
-//   GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1   parameters read per sample from buffers
+//   GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL,UNIFORMS}=0|1   parameters read per sample from buffers
+//   GGX_SEQUENCE=<id>                where the uniforms come from otherwise (ggx_contract.h)
 //   GGX_ISOTROPIC, GGX_BELOW_HORIZON, GGX_WORLD_SPACE, GGX_NORMAL_IS_Z=0|1   what the request needs
 // Arrays are planar: component c of sample j is at [c * stride + j].
 // One sample per work-item.  Each kernel comes in two forms: the main one
@@ -27,15 +28,18 @@
 #define GGX_WRITE_PDF_M ((GGX_WRITE_MASK >> GGX_FIELD_PDF_M) & 1)
 #define GGX_WRITE_PDF_O ((GGX_WRITE_MASK >> GGX_FIELD_PDF_O) & 1)
 #define GGX_WRITE_WEIGHT ((GGX_WRITE_MASK >> GGX_FIELD_WEIGHT) & 1)
+#define GGX_WRITE_U ((GGX_WRITE_MASK >> GGX_FIELD_U) & 1)
 
 // Sample j (< count) into the requested fields.
 GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GGX_PARAM_ARGS,
                                 __global float* GGX_RESTRICT m_out, __global float* GGX_RESTRICT o_out,
                                 __global float* GGX_RESTRICT pdf_m_out, __global float* GGX_RESTRICT pdf_o_out,
-                                __global float* GGX_RESTRICT weight_out)
+                                __global float* GGX_RESTRICT weight_out, __global float* GGX_RESTRICT u_out)
 {
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
-    ggx_sample s = ggx_bulk_sample(seed, first + j, p);
+    float u1, u2;
+    ggx_bulk_uniforms(seed, first + j, p, &u1, &u2);
+    ggx_sample s = ggx_bulk_sample_of(p, u1, u2);
 #if GGX_WRITE_M
     ggx_store3(m_out, j, stride, s.m);
 #endif
@@ -51,13 +55,17 @@ GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GG
 #if GGX_WRITE_WEIGHT
     weight_out[j] = s.weight;
 #endif
+#if GGX_WRITE_U
+    u_out[j] = u1;  // what the sample used, the caller's values as given
+    u_out[j + stride] = u2;
+#endif
 }
 
 #define GGX_SAMPLE_ARGS                                                                                 \
     ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS, __global float *GGX_RESTRICT m_out,    \
         __global float *GGX_RESTRICT o_out, __global float *GGX_RESTRICT pdf_m_out, __global float *GGX_RESTRICT pdf_o_out, \
-        __global float *GGX_RESTRICT weight_out
-#define GGX_SAMPLE_OUTPUTS m_out, o_out, pdf_m_out, pdf_o_out, weight_out
+        __global float *GGX_RESTRICT weight_out, __global float *GGX_RESTRICT u_out
+#define GGX_SAMPLE_OUTPUTS m_out, o_out, pdf_m_out, pdf_o_out, weight_out, u_out
 
 // Whole work-groups of samples: every work-item is sample get_global_id(0) < count.
 __kernel void ggx_sample_bulk(GGX_SAMPLE_ARGS)

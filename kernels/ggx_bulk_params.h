@@ -1,8 +1,11 @@
 // ggx_bulk_params.h - what the bulk kernels share: planar loads and stores,
 // the sample of an index in tangent or world space (GGX_WORLD_SPACE=0|1),
-// and the view, roughness and normal of sample j, uniform or per sample
-// (build options GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1).  GGX_ISOTROPIC=1
-// promises alpha_x == alpha_y: one roughness is read and used for both.
+// the view, roughness and normal of sample j, uniform or per sample
+// (build options GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1), and its two
+// uniforms: from the sequence GGX_SEQUENCE (a GGX_SEQUENCE_* id of
+// ggx_contract.h, Philox by default) or, with GGX_PER_SAMPLE_UNIFORMS=1,
+// the caller's.  GGX_ISOTROPIC=1 promises alpha_x == alpha_y: one roughness
+// is read and used for both.
 #ifndef GGX_BULK_PARAMS_H
 #define GGX_BULK_PARAMS_H
 
@@ -10,6 +13,7 @@
 #if defined(GGX_METHOD) && !defined(GGX_ONLY_METHOD)
 #define GGX_ONLY_METHOD GGX_METHOD
 #endif
+#include "ggx_sobol.h"
 #include "ggx_world.h"
 
 #ifndef GGX_PER_SAMPLE_VIEW
@@ -20,6 +24,15 @@
 #endif
 #ifndef GGX_PER_SAMPLE_NORMAL
 #define GGX_PER_SAMPLE_NORMAL 0
+#endif
+#ifndef GGX_PER_SAMPLE_UNIFORMS
+#define GGX_PER_SAMPLE_UNIFORMS 0
+#endif
+#ifndef GGX_SEQUENCE
+#define GGX_SEQUENCE GGX_SEQUENCE_PHILOX
+#endif
+#if GGX_SEQUENCE != GGX_SEQUENCE_PHILOX && GGX_SEQUENCE != GGX_SEQUENCE_SOBOL
+#error "GGX_SEQUENCE: not a sequence id (GGX_SEQUENCE_* of ggx_contract.h)"
 #endif
 #ifndef GGX_ISOTROPIC
 #define GGX_ISOTROPIC 0
@@ -42,10 +55,12 @@ GGX_INLINE void ggx_store3(__global float* p, uint j, uint stride, ggx_vec3 v)
     p[j + 2u * stride] = v.z;
 }
 
-// The view, roughness and normal of sample j: per sample or uniform.
+// The view, roughness and normal of sample j, per sample or uniform, and
+// the caller's uniforms (u1, u2) with GGX_PER_SAMPLE_UNIFORMS=1.
 typedef struct {
     ggx_vec3 view, normal;
     float ax, ay;
+    float u1, u2;
 } ggx_params;
 
 // The kernel arguments that carry them (GGX_PARAM_ARG_COUNT, at the positions
@@ -53,9 +68,10 @@ typedef struct {
 #define GGX_PARAM_ARGS                                                                      \
     float view_x, float view_y, float view_z, float alpha_x, float alpha_y, float normal_x, \
         float normal_y, float normal_z, __global const float *GGX_RESTRICT view_in,             \
-        __global const float *GGX_RESTRICT alpha_in, __global const float *GGX_RESTRICT normal_in
+        __global const float *GGX_RESTRICT alpha_in, __global const float *GGX_RESTRICT normal_in, \
+        __global const float *GGX_RESTRICT uniforms_in
 #define GGX_PARAM_VALUES                                                                    \
-    view_x, view_y, view_z, alpha_x, alpha_y, normal_x, normal_y, normal_z, view_in, alpha_in, normal_in
+    view_x, view_y, view_z, alpha_x, alpha_y, normal_x, normal_y, normal_z, view_in, alpha_in, normal_in, uniforms_in
 
 GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
 {
@@ -83,20 +99,65 @@ GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
 #else
     p.normal = ggx_vec3_make(normal_x, normal_y, normal_z);
 #endif
+#if GGX_PER_SAMPLE_UNIFORMS
+    p.u1 = uniforms_in[j];
+    p.u2 = uniforms_in[j + stride];
+#else
+    p.u1 = 0.0f;
+    p.u2 = 0.0f;
+#endif
     return p;
 }
 
-// Sample `index` of stream `seed` for the method GGX_METHOD with parameters p:
-// world-space view, normal and results with GGX_WORLD_SPACE=1, else tangent space.
+// The two uniforms of sample `index` of stream `seed`: the caller's (read
+// into p), or the sequence's.
+GGX_INLINE void ggx_bulk_uniforms(ulong seed, ulong index, ggx_params p, float* u1, float* u2)
+{
+#if GGX_PER_SAMPLE_UNIFORMS
+    *u1 = p.u1;
+    *u2 = p.u2;
+#elif GGX_SEQUENCE == GGX_SEQUENCE_SOBOL
+    ggx_sobol_uniforms(seed, index, u1, u2);
+#else
+    ggx_uniforms(seed, index, u1, u2);
+#endif
+}
+
+// Whether a caller's uniform lies in [0, 1) (-0 included): read from the
+// bits, which -cl-fast-relaxed-math cannot assume away, so NaN fails too.
+GGX_INLINE int ggx_unit_interval(float u)
+{
+    uint bits = as_uint(u);
+    return bits < 0x3f800000u || bits == 0x80000000u;
+}
+
+// The sample of uniforms (u1, u2) for the method GGX_METHOD with parameters
+// p: world-space view, normal and results with GGX_WORLD_SPACE=1, else
+// tangent space.  The caller's uniforms outside [0, 1) give the fallback
+// sample about the normal the method works with (ggx_guards.h).
+GGX_INLINE ggx_sample ggx_bulk_sample_of(ggx_params p, float u1, float u2)
+{
+#if GGX_WORLD_SPACE
+    ggx_sample s = ggx_sample_world(GGX_METHOD, p.normal, p.view, p.ax, u1, u2);
+    ggx_vec3 n = p.normal;
+#else
+    ggx_sample s = ggx_sample_method(GGX_METHOD, p.normal, p.view, p.ax, p.ay, u1, u2);
+    ggx_vec3 n = GGX_METHOD == GGX_METHOD_CAPS_ISO ? p.normal : ggx_vec3_make(0.0f, 0.0f, 1.0f);
+#endif
+#if GGX_PER_SAMPLE_UNIFORMS
+    s = ggx_keep_or_fallback(s, ggx_unit_interval(u1) & ggx_unit_interval(u2), n);
+#else
+    (void)n;
+#endif
+    return s;
+}
+
+// Sample `index` of stream `seed` with parameters p.
 GGX_INLINE ggx_sample ggx_bulk_sample(ulong seed, ulong index, ggx_params p)
 {
     float u1, u2;
-    ggx_uniforms(seed, index, &u1, &u2);
-#if GGX_WORLD_SPACE
-    return ggx_sample_world(GGX_METHOD, p.normal, p.view, p.ax, u1, u2);
-#else
-    return ggx_sample_method(GGX_METHOD, p.normal, p.view, p.ax, p.ay, u1, u2);
-#endif
+    ggx_bulk_uniforms(seed, index, p, &u1, &u2);
+    return ggx_bulk_sample_of(p, u1, u2);
 }
 
 // The pdf of direction o for GGX_METHOD, in the space of ggx_bulk_sample.

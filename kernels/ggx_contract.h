@@ -1,7 +1,8 @@
 // ggx_contract.h - what the C++ runtime and the OpenCL C kernels must agree
 // on, as plain macros that both languages read: the method ids, the field
-// ids and their write-mask bits, the argument positions of every bulk
-// kernel, and the samples per work-item of the fused estimator.  The
+// ids and their write-mask bits, the sequence ids of the uniforms, the
+// argument positions of every bulk kernel, and the samples per work-item of
+// the fused estimator.  The
 // runtime includes this header and checks its own enums against it at
 // compile time (lib/src/device_contract.hpp: a mismatch does not build);
 // the kernels include it and refuse an unknown method id or write mask with
@@ -26,23 +27,32 @@
 #define GGX_FIELD_PDF_M 2
 #define GGX_FIELD_PDF_O 3
 #define GGX_FIELD_WEIGHT 4
-#define GGX_FIELD_COUNT 5
+#define GGX_FIELD_U 5
+#define GGX_FIELD_COUNT 6
+
+// Where a sample's two uniforms come from (-DGGX_SEQUENCE=<id>), in
+// ggxcl::Sequence order: Philox2x32-10 (ggx_philox.h) or the Owen-scrambled
+// Sobol points (ggx_sobol.h).  -DGGX_PER_SAMPLE_UNIFORMS=1 reads the caller's
+// uniforms instead.
+#define GGX_SEQUENCE_PHILOX 0
+#define GGX_SEQUENCE_SOBOL 1
+#define GGX_SEQUENCE_COUNT 2
 
 // Argument positions of the sampling kernels: ggx_sample_bulk(_tail),
 // ggx_furnace_bulk, ggx_histogram and ggx_histogram_bins(_tail) begin with
 //   seed, first, count, stride (the histogram kernels: samples per work-item),
 // then the GGX_PARAM_ARG_COUNT parameter arguments of GGX_PARAM_ARGS
 // (ggx_bulk_params.h): view x, y, z, alpha x, y, normal x, y, z, then the
-// per-sample view, alpha and normal buffers.  Their outputs follow:
-// ggx_sample_bulk's five buffers in field order, the furnace's partial sums,
+// per-sample view, alpha, normal and uniforms buffers.  Their outputs follow:
+// ggx_sample_bulk's six buffers in field order, the furnace's partial sums,
 // the histogram's counts or the bin indices.
 #define GGX_ARG_SEED 0
 #define GGX_ARG_FIRST 1
 #define GGX_ARG_COUNT 2
 #define GGX_ARG_STRIDE 3
 #define GGX_ARG_PARAMS 4
-#define GGX_PARAM_ARG_COUNT 11
-#define GGX_PARAM_UNIFORM_COUNT 8  // the floats before the three buffers
+#define GGX_PARAM_ARG_COUNT 12
+#define GGX_PARAM_UNIFORM_COUNT 8  // the floats before the four buffers
 #define GGX_ARG_OUTPUTS (GGX_ARG_PARAMS + GGX_PARAM_ARG_COUNT)
 
 // ggx_pdf_bulk(_tail): count, stride, the parameter arguments, the

@@ -48,6 +48,19 @@ GGX_INLINE ggx_sample ggx_fallback_sample(ggx_vec3 n)
     return out;
 }
 
+// s when `ok`, else the fallback about the unit normal n: per-component
+// selects, since a select of structs does not vectorize.
+GGX_INLINE ggx_sample ggx_keep_or_fallback(ggx_sample s, int ok, ggx_vec3 n)
+{
+    ggx_sample out;
+    out.m = ggx_vec3_make(ok ? s.m.x : n.x, ok ? s.m.y : n.y, ok ? s.m.z : n.z);
+    out.o = ggx_vec3_make(ok ? s.o.x : n.x, ok ? s.o.y : n.y, ok ? s.o.z : n.z);
+    out.pdf_m = ok ? s.pdf_m : 0.0f;
+    out.pdf_o = ok ? s.pdf_o : 0.0f;
+    out.weight = ok ? s.weight : 0.0f;
+    return out;
+}
+
 // s when the roughness is usable and `key` < 1e20, else the fallback about
 // the unit normal n.
 GGX_INLINE ggx_sample ggx_guard_about(ggx_sample s, float key, ggx_vec3 n, float ax, float ay)
@@ -57,13 +70,7 @@ GGX_INLINE ggx_sample ggx_guard_about(ggx_sample s, float key, ggx_vec3 n, float
     // range.  For a uniform view and roughness `ok` is uniform: the guard costs a select per field.
     // (The bit test keeps it under -cl-fast-relaxed-math, which may fold compares with NaN and Inf.)
     int ok = ggx_roughness_ok(ax, ay) & (key < 1e20f) & ggx_is_finite(key);
-    ggx_sample out;  // per-component selects: a select of structs does not vectorize
-    out.m = ggx_vec3_make(ok ? s.m.x : n.x, ok ? s.m.y : n.y, ok ? s.m.z : n.z);
-    out.o = ggx_vec3_make(ok ? s.o.x : n.x, ok ? s.o.y : n.y, ok ? s.o.z : n.z);
-    out.pdf_m = ok ? s.pdf_m : 0.0f;
-    out.pdf_o = ok ? s.pdf_o : 0.0f;
-    out.weight = ok ? s.weight : 0.0f;
-    return out;
+    return ggx_keep_or_fallback(s, ok, n);
 #else
     return s;
 #endif

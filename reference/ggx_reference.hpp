@@ -64,6 +64,7 @@ std::array<uint32_t, 2> philox_words(uint32_t seed, uint64_t index);
 std::array<uint32_t, 2> sobol_points(uint32_t k);
 uint32_t owen_scramble(uint32_t word, uint32_t key);
 std::array<uint32_t, 2> sobol_words(uint32_t seed, uint64_t index);
-std::array<double, 2> uniforms(uint64_t seed, uint64_t index);
+std::array<double, 2> uniforms(uint64_t seed, uint64_t index);        // Philox
+std::array<double, 2> sobol_uniforms(uint64_t seed, uint64_t index);  // the scrambled Sobol points
 
 }  // namespace ggxref

@@ -93,4 +93,12 @@ std::array<uint32_t, 2> sobol_words(uint32_t seed, uint64_t index)
     return w;
 }
 
+// u = (w >> 8) 2^-24, as for Philox.
+std::array<double, 2> sobol_uniforms(uint64_t seed, uint64_t index)
+{
+    constexpr double scale = 1.0 / 16777216.0;
+    const auto w = sobol_words(uint32_t(seed), index);
+    return {double(w[0] >> 8) * scale, double(w[1] >> 8) * scale};
+}
+
 }  // namespace ggxref

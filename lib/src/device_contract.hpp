@@ -9,6 +9,7 @@
 #include "ggxcl/fields.hpp"
 #include "ggxcl/method.hpp"
 #include "ggxcl/opencl.hpp"
+#include "ggxcl/params.hpp"
 
 namespace ggxcl::detail {
 
@@ -25,12 +26,18 @@ static_assert(static_cast<int>(Field::o) == GGX_FIELD_O);
 static_assert(static_cast<int>(Field::pdf_m) == GGX_FIELD_PDF_M);
 static_assert(static_cast<int>(Field::pdf_o) == GGX_FIELD_PDF_O);
 static_assert(static_cast<int>(Field::weight) == GGX_FIELD_WEIGHT);
+static_assert(static_cast<int>(Field::u) == GGX_FIELD_U);
 static_assert(all_fields.size() == GGX_FIELD_COUNT, "every kernel field id has its ggxcl::Field");
-static_assert(GGX_PARAM_ARG_COUNT == GGX_PARAM_UNIFORM_COUNT + 3, "the uniform floats, then three buffers");
+static_assert(GGX_PARAM_ARG_COUNT == GGX_PARAM_UNIFORM_COUNT + 4, "the uniform floats, then four buffers");
+
+static_assert(static_cast<int>(Sequence::philox) == GGX_SEQUENCE_PHILOX);
+static_assert(static_cast<int>(Sequence::sobol) == GGX_SEQUENCE_SOBOL);
+static_assert(all_sequences.size() == GGX_SEQUENCE_COUNT, "every kernel sequence id has its ggxcl::Sequence");
 
 // The kernel's id of a method, and the -DGGX_WRITE_MASK bits of a field set
 // (FieldSet's bits are 1 << field id, the kernels' mask bits).
 constexpr int method_id(Method method) { return static_cast<int>(method); }
+constexpr int sequence_id(Sequence sequence) { return static_cast<int>(sequence); }
 inline unsigned write_mask(FieldSet fields) { return fields.bits(); }
 
 // Argument positions (ggx_contract.h) as cl_uint.

@@ -13,6 +13,7 @@ std::string_view field_name(Field field)
     case Field::pdf_m: return "pdf_m";
     case Field::pdf_o: return "pdf_o";
     case Field::weight: return "weight";
+    case Field::u: return "u";
     }
     return "unknown";
 }
@@ -22,12 +23,22 @@ Field parse_field(std::string_view name)
     for (Field field : all_fields)
         if (field_name(field) == name)
             return field;
-    throw InvalidArgument("field", std::string(name), "one of m, o, pdf_m, pdf_o, weight");
+    throw InvalidArgument("field", std::string(name), "one of " + field_list());
 }
 
 int field_columns(Field field)
 {
-    return (field == Field::m || field == Field::o) ? 3 : 1;
+    if (field == Field::m || field == Field::o)
+        return 3;
+    return field == Field::u ? 2 : 1;
+}
+
+std::string field_list()
+{
+    std::string list;
+    for (Field field : all_fields)
+        list += (list.empty() ? "" : ", ") + std::string(field_name(field));
+    return list;
 }
 
 std::vector<Field> parse_field_list(std::string_view list)

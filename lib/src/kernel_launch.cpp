@@ -21,9 +21,11 @@ std::string build_options(const SampleParams& params, unsigned write_mask, const
     if (params.precision == Precision::relaxed)
         options += " -cl-fast-relaxed-math";
     options += " -DGGX_WRITE_MASK=" + std::to_string(write_mask);
+    options += " -DGGX_SEQUENCE=" + std::to_string(sequence_id(params.sequence));
     options += flag("GGX_PER_SAMPLE_VIEW", inputs.view() != nullptr) +
                flag("GGX_PER_SAMPLE_ALPHA", inputs.alpha() != nullptr) +
-               flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr);
+               flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr) +
+               flag("GGX_PER_SAMPLE_UNIFORMS", inputs.uniforms() != nullptr);
     options += flag("GGX_ISOTROPIC", is_isotropic(params, inputs)) +
                flag("GGX_BELOW_HORIZON", !is_above_horizon(params, inputs)) +
                flag("GGX_WORLD_SPACE", params.world_space) + flag("GGX_GUARDS", guards) +
@@ -53,7 +55,7 @@ void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p
                                                    p.alpha_y, p.normal.x, p.normal.y, p.normal.z};
     for (cl_uint k = 0; k < GGX_PARAM_UNIFORM_COUNT; ++k)
         kernel.setArg(first_arg + k, values[k]);
-    const cl::Buffer* buffers[] = {&in.view, &in.alpha, &in.normal};
+    const cl::Buffer* buffers[] = {&in.view, &in.alpha, &in.normal, &in.uniforms};
     static_assert(GGX_PARAM_UNIFORM_COUNT + std::size(buffers) == GGX_PARAM_ARG_COUNT);
     for (cl_uint k = 0; k < std::size(buffers); ++k)
         kernel.setArg(first_arg + GGX_PARAM_UNIFORM_COUNT + k, *buffers[k]);

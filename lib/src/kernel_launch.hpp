@@ -15,7 +15,7 @@ namespace ggxcl::detail {
 
 constexpr std::size_t preferred_group_size = 256;
 
-// -D options selecting the method, the precision mode, the written fields, per-sample inputs
+// -D options selecting the method, the precision mode, the written fields, the sequence, per-sample inputs
 // and what the request needs (isotropic, views below the horizon, world space).
 // guards = false (benchmarks only) drops the fallbacks of docs/STABILITY.md.
 std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs,
@@ -25,7 +25,7 @@ bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
 
 // Arguments first_arg.. of every kernel: the GGX_PARAM_ARG_COUNT parameter
 // arguments of ggx_contract.h (the uniform floats, then the per-sample view,
-// alpha and normal buffers).
+// alpha, normal and uniforms buffers).
 void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in);
 
 void check_launch_count(std::uint64_t count, std::uint32_t stride);

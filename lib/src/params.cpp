@@ -51,6 +51,14 @@ void check_isotropic(const SampleParams& params, float alpha_x, float alpha_y)
                               "one value (alpha_x == alpha_y) in world space, where the normal fixes no tangent");
 }
 
+// u1 and u2 in [0, 1); NaN fails the compares.
+void check_uniforms(std::size_t index, const std::array<float, 2>& u)
+{
+    if (!(u[0] >= 0.0f && u[0] < 1.0f && u[1] >= 0.0f && u[1] < 1.0f))
+        throw InvalidArgument("uniforms[" + std::to_string(index) + "]", text(u[0]) + "," + text(u[1]),
+                              "two numbers in [0, 1)");
+}
+
 } // namespace
 
 std::string_view precision_name(Precision precision)
@@ -68,6 +76,31 @@ Precision parse_precision(std::string_view name)
         if (precision_name(p) == name)
             return p;
     throw InvalidArgument("precision", std::string(name), "one of precise, relaxed");
+}
+
+std::string_view sequence_name(Sequence sequence)
+{
+    switch (sequence) {
+    case Sequence::philox: return "philox";
+    case Sequence::sobol: return "sobol";
+    }
+    return "unknown";
+}
+
+Sequence parse_sequence(std::string_view name)
+{
+    for (Sequence s : all_sequences)
+        if (sequence_name(s) == name)
+            return s;
+    throw InvalidArgument("sequence", std::string(name), "one of philox, sobol");
+}
+
+std::string sequence_description(Sequence sequence)
+{
+    if (sequence == Sequence::sobol)
+        return "Sobol dimensions 1 and 2 of point index mod 2^32, each Owen-scrambled by Burley's hash keyed by "
+               "(seed, dimension, index / 2^32); u = top 24 bits times 2^-24";
+    return "Philox2x32-10, key seed, counter (index lo, index hi); u1 word 0, u2 word 1";
 }
 
 Vec3 unit_vector(const Vec3& v)
@@ -141,7 +174,7 @@ void validate(const SampleRange& range)
 {
     if (range.seed > max_seed)
         throw InvalidArgument("seed", std::to_string(range.seed),
-                              "0 .. 2^32 - 1 = " + std::to_string(max_seed) + " (the 32-bit key of Philox2x32-10)");
+                              "0 .. 2^32 - 1 = " + std::to_string(max_seed) + " (the generators' 32-bit key)");
     if (range.count == 0)
         throw InvalidArgument("count", "0", "at least 1 sample");
     if (range.count > std::numeric_limits<std::uint64_t>::max() - range.first)
@@ -169,6 +202,9 @@ void validate(const PerSampleInputs& inputs, const SampleParams& params, std::ui
         check_alpha("alpha_y", a[1]);
         check_isotropic(params, a[0], a[1]);
     }
+    check_size("uniforms", inputs.uniforms.size());
+    for (std::size_t j = 0; j < inputs.uniforms.size(); ++j)
+        check_uniforms(j, inputs.uniforms[j]);
 }
 
 } // namespace ggxcl

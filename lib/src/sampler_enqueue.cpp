@@ -5,6 +5,7 @@
 #include "ggxcl/sampler.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
 
 #include "cl_call.hpp"
@@ -35,7 +36,8 @@ using namespace detail;
 
 cl::Buffer& DeviceOutputs::of(Field field)
 {
-    cl::Buffer* buffers[] = {&m, &o, &pdf_m, &pdf_o, &weight};
+    cl::Buffer* buffers[] = {&m, &o, &pdf_m, &pdf_o, &weight, &u};
+    static_assert(std::size(buffers) == all_fields.size());
     return *buffers[static_cast<int>(field)];
 }
 
@@ -46,7 +48,8 @@ const cl::Buffer& DeviceOutputs::of(Field field) const
 
 std::vector<float>& SampleSet::column_source(Field field)
 {
-    std::vector<float>* planes[] = {&m, &o, &pdf_m, &pdf_o, &weight};
+    std::vector<float>* planes[] = {&m, &o, &pdf_m, &pdf_o, &weight, &u};
+    static_assert(std::size(planes) == all_fields.size());
     return *planes[static_cast<int>(field)];
 }
 
@@ -130,7 +133,7 @@ cl::Event Sampler::enqueue_variant(cl::CommandQueue& queue, const SampleParams& 
     check_launch_count(range.count, stride);
     unsigned mask = write_mask_of(outputs);
     if (mask == 0)
-        throw InvalidArgument("outputs", "none", "at least one output buffer (m, o, pdf_m, pdf_o or weight)");
+        throw InvalidArgument("outputs", "none", "at least one output buffer (" + field_list() + ")");
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
         std::string options = build_options(unit, mask, inputs, guards);
@@ -153,7 +156,7 @@ cl::Event Sampler::enqueue_variant(cl::CommandQueue& queue, const SampleParams& 
 void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceInputs& inputs)
 {
     if (fields.empty())
-        throw InvalidArgument("fields", "none", "at least one field to warm up (m, o, pdf_m, pdf_o or weight)");
+        throw InvalidArgument("fields", "none", "at least one field to warm up (" + field_list() + ")");
     // One whole work-group and a tail: both kernels of launch_split.
     const std::uint32_t count = std::uint32_t(work_group_size() + 1);
     translate_cl_errors([&] {
@@ -168,6 +171,7 @@ void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceI
         if (inputs.view() != nullptr) scratch_inputs.view = floats(3, unit_z);
         if (inputs.alpha() != nullptr) scratch_inputs.alpha = floats(2, half);
         if (inputs.normal() != nullptr) scratch_inputs.normal = floats(3, unit_z);
+        if (inputs.uniforms() != nullptr) scratch_inputs.uniforms = floats(2, half);
         DeviceOutputs outputs;
         for (Field f : all_fields)
             if (fields.has(f))

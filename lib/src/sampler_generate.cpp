@@ -4,6 +4,7 @@
 // out of memory.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "cl_call.hpp"
 #include "device_faults.hpp"
@@ -37,10 +38,12 @@ std::vector<float> planar_units(const std::vector<Vec3>& values, std::uint64_t s
     return planes;
 }
 
-std::vector<float> planar_alphas(const std::vector<std::array<float, 2>>& values, std::uint64_t start,
-                                 std::uint64_t n, std::uint64_t capacity)
+// Pairs (alphas, uniforms) [start, start+n) as two planes of stride `capacity`;
+// the unused rest holds 0.5, valid for both.
+std::vector<float> planar_pairs(const std::vector<std::array<float, 2>>& values, std::uint64_t start,
+                                std::uint64_t n, std::uint64_t capacity)
 {
-    std::vector<float> planes(2 * capacity, 1.0f);
+    std::vector<float> planes(2 * capacity, 0.5f);
     for (std::uint64_t j = 0; j < n; ++j) {
         planes[j] = values[start + j][0];
         planes[capacity + j] = values[start + j][1];
@@ -63,14 +66,16 @@ struct ChunkInputs {
         if (!in.views.empty()) buffers.view = make(3);
         if (!in.alphas.empty()) buffers.alpha = make(2);
         if (!in.normals.empty()) buffers.normal = make(3);
+        if (!in.uniforms.empty()) buffers.uniforms = make(2);
     }
 
     void upload(cl::CommandQueue& queue, const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
                 std::uint64_t capacity)
     {
         if (!in.views.empty()) write(queue, buffers.view, planar_units(in.views, start, n, capacity));
-        if (!in.alphas.empty()) write(queue, buffers.alpha, planar_alphas(in.alphas, start, n, capacity));
+        if (!in.alphas.empty()) write(queue, buffers.alpha, planar_pairs(in.alphas, start, n, capacity));
         if (!in.normals.empty()) write(queue, buffers.normal, planar_units(in.normals, start, n, capacity));
+        if (!in.uniforms.empty()) write(queue, buffers.uniforms, planar_pairs(in.uniforms, start, n, capacity));
     }
 
     static void write(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float>& data)
@@ -167,7 +172,7 @@ private:
     bool map_;
     DeviceOutputs out_;
     SampleSet host_;
-    float* mapped_[5] = {};
+    float* mapped_[all_fields.size()] = {};
     cl::Event ready_;
 };
 
@@ -183,7 +188,8 @@ std::uint64_t fitted_capacity(std::uint64_t max_alloc, std::uint64_t requested, 
 
 const float*& SampleView::column_source(Field field)
 {
-    const float** planes[] = {&m, &o, &pdf_m, &pdf_o, &weight};
+    const float** planes[] = {&m, &o, &pdf_m, &pdf_o, &weight, &u};
+    static_assert(std::size(planes) == all_fields.size());
     return *planes[int(field)];
 }
 
@@ -209,7 +215,7 @@ void Sampler::run_chunks(const SampleParams& params, const SampleRange& range, F
     validate(range);
     validate(per_sample, params, range.count);
     if (fields.empty())
-        throw InvalidArgument("fields", "none", "at least one of m, o, pdf_m, pdf_o, weight");
+        throw InvalidArgument("fields", "none", "at least one of " + field_list());
     translate_cl_errors([&] {
         std::uint64_t start = 0, chunk = fitted_capacity(max_alloc_, chunk_size_, range.count, 3);
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {

@@ -135,9 +135,17 @@ std::vector<Config> rough_bounded_grid()
 }
 
 ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& params, std::uint64_t seed,
-                                std::uint64_t count, ggxcl::FieldSet fields, ggxcl::Precision precision)
+                                std::uint64_t count, ggxcl::FieldSet fields, ggxcl::Precision precision,
+                                ggxcl::Sequence sequence)
 {
-    return sampler().generate(to_library(method, params, precision), {seed, 0, count}, fields);
+    ggxcl::SampleParams p = to_library(method, params, precision);
+    p.sequence = sequence;
+    return sampler().generate(p, {seed, 0, count}, fields);
+}
+
+std::array<double, 2> reference_uniforms(ggxcl::Sequence sequence, std::uint64_t seed, std::uint64_t index)
+{
+    return sequence == ggxcl::Sequence::sobol ? ggxref::sobol_uniforms(seed, index) : ggxref::uniforms(seed, index);
 }
 
 std::vector<std::uint64_t> histogram_of(const std::vector<float>& planar, std::uint64_t count, int nz, int nphi)

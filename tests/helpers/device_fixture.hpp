@@ -4,6 +4,7 @@
 // as reference vectors, and the configuration grids the tests sweep.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -48,7 +49,11 @@ std::vector<Config> rough_bounded_grid();
 // Device samples of one configuration: o (or m) as a directions set.
 ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& params, std::uint64_t seed,
                                 std::uint64_t count, ggxcl::FieldSet fields,
-                                ggxcl::Precision precision = ggxcl::Precision::precise);
+                                ggxcl::Precision precision = ggxcl::Precision::precise,
+                                ggxcl::Sequence sequence = ggxcl::Sequence::philox);
+
+// The reference's uniforms of sample `index` of stream `seed` in `sequence`.
+std::array<double, 2> reference_uniforms(ggxcl::Sequence sequence, std::uint64_t seed, std::uint64_t index);
 
 // Histogram of the o (planar) of a sample set in the reference binning.
 std::vector<std::uint64_t> histogram_of(const std::vector<float>& planar, std::uint64_t count, int nz, int nphi);

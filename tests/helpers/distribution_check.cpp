@@ -4,9 +4,9 @@
 namespace ggxtest {
 
 std::vector<std::uint64_t> device_histogram(ggxref::Method sampled, const ggxref::Params& params, std::uint64_t seed,
-                                            std::uint64_t count, ggxcl::Precision precision)
+                                            std::uint64_t count, ggxcl::Precision precision, ggxcl::Sequence sequence)
 {
-    ggxcl::SampleSet s = device_samples(sampled, params, seed, count, {ggxcl::Field::o}, precision);
+    ggxcl::SampleSet s = device_samples(sampled, params, seed, count, {ggxcl::Field::o}, precision, sequence);
     return histogram_of(s.o, s.count, bins_z, bins_phi);
 }
 

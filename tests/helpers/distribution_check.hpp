@@ -17,7 +17,8 @@ constexpr int configs_per_method = 20;
 // Histogram of the reflected directions the device draws for `sampled`.
 std::vector<std::uint64_t> device_histogram(ggxref::Method sampled, const ggxref::Params& params, std::uint64_t seed,
                                             std::uint64_t count = chi_square_samples,
-                                            ggxcl::Precision precision = ggxcl::Precision::precise);
+                                            ggxcl::Precision precision = ggxcl::Precision::precise,
+                                            ggxcl::Sequence sequence = ggxcl::Sequence::philox);
 
 // Goodness of fit of a histogram to `tested`'s pdf at `params`.
 ggxref::ChiSquare fit(const std::vector<std::uint64_t>& histogram, ggxref::Method tested,

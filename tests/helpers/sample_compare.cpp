@@ -30,10 +30,10 @@ double angle_between(const ggxref::Vec3& a, const ggxref::Vec3& b)
 }
 
 void compare_samples(const ggxcl::SampleSet& d, std::uint64_t seed, const ReferenceSampler& reference, bool is_ndf,
-                     const std::string& label, SampleErrors& errors)
+                     const std::string& label, SampleErrors& errors, ggxcl::Sequence sequence)
 {
     for (std::size_t j = 0; j < d.count; ++j) {
-        std::array<double, 2> u = ggxref::uniforms(seed, j);
+        std::array<double, 2> u = reference_uniforms(sequence, seed, j);
         ggxref::Sample r = reference(j, u[0], u[1]);
         ggxref::Vec3 dm = as_double(d.m_at(j)), dob = as_double(d.o_at(j));
         bool all_finite = finite(dm) && finite(dob) && finite(r.m) && finite(r.o) && std::isfinite(d.pdf_m[j]) &&

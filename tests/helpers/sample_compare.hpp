@@ -30,10 +30,11 @@ double angle_between(const ggxref::Vec3& a, const ggxref::Vec3& b);
 using ReferenceSampler = std::function<ggxref::Sample(std::size_t j, double u1, double u2)>;
 
 // Compares every sample of `device` (all fields, sample j from the uniforms of
-// (seed, j)) with `reference`.  For ndf, pdf_o = pdf_m / (4 |i.m|) is compared
+// (seed, j) in `sequence`) with `reference`.  For ndf, pdf_o = pdf_m / (4 |i.m|) is compared
 // only where |i.m| = |o.m| >= 1e-2: below it float cancellation in i.m exceeds the bound.
 void compare_samples(const ggxcl::SampleSet& device, std::uint64_t seed, const ReferenceSampler& reference,
-                     bool is_ndf, const std::string& label, SampleErrors& errors);
+                     bool is_ndf, const std::string& label, SampleErrors& errors,
+                     ggxcl::Sequence sequence = ggxcl::Sequence::philox);
 
 // No NaN/Inf and every error within its bounds.
 void check_sample_errors(const std::string& name, const SampleErrors& errors,

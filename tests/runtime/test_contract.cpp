@@ -52,7 +52,7 @@ Expected param_arguments(int first)
 {
     const char* names[GGX_PARAM_ARG_COUNT] = {"view_x",   "view_y",   "view_z",  "alpha_x",
                                               "alpha_y",  "normal_x", "normal_y", "normal_z",
-                                              "view_in",  "alpha_in", "normal_in"};
+                                              "view_in",  "alpha_in", "normal_in", "uniforms_in"};
     Expected e;
     for (int k = 0; k < GGX_PARAM_ARG_COUNT; ++k)
         e.push_back({first + k, names[k]});
@@ -86,7 +86,8 @@ TEST_CASE("every bulk kernel has the contract's argument at each of its position
                                      {GGX_ARG_OUTPUTS + GGX_FIELD_O, "o_out"},
                                      {GGX_ARG_OUTPUTS + GGX_FIELD_PDF_M, "pdf_m_out"},
                                      {GGX_ARG_OUTPUTS + GGX_FIELD_PDF_O, "pdf_o_out"},
-                                     {GGX_ARG_OUTPUTS + GGX_FIELD_WEIGHT, "weight_out"}};
+                                     {GGX_ARG_OUTPUTS + GGX_FIELD_WEIGHT, "weight_out"},
+                                     {GGX_ARG_OUTPUTS + GGX_FIELD_U, "u_out"}};
     for (const char* name : {"ggx_sample_bulk", "ggx_sample_bulk_tail"}) {
         CAPTURE(name);
         CHECK(mismatches(argument_names(bulk, method_options, name), with(sampling_head(), sample_outputs),

@@ -186,7 +186,7 @@ TEST_CASE("bad arguments throw InvalidArgument naming the parameter, value and r
           "invalid method 'walter': allowed is one of ndf, heitz, heitz2017, caps, caps-iso, bounded");
     CHECK(message_of<ggxcl::InvalidArgument>([&] { s.set_chunk_size(0); }).find("chunk size '0'") != std::string::npos);
     CHECK(message_of<ggxcl::InvalidArgument>([&] { s.generate(p, {ggxcl::max_seed + 1, 0, 10}, {Field::m}); }) ==
-          "invalid seed '4294967296': allowed is 0 .. 2^32 - 1 = 4294967295 (the 32-bit key of Philox2x32-10)");
+          "invalid seed '4294967296': allowed is 0 .. 2^32 - 1 = 4294967295 (the generators' 32-bit key)");
     CHECK_NOTHROW(s.generate(p, {ggxcl::max_seed, 0, 10}, {Field::m}));
 }
 

@@ -17,14 +17,16 @@ enum class Field {
     pdf_m = 2,  // density of m per steradian
     pdf_o = 3,  // density of o per steradian
     weight = 4, // f cos(o) / pdf(o) with Fresnel 1 and height-correlated G2; 0 when o is below the horizon
+    u = 5,      // the two uniforms (u1, u2) the sample was drawn from, 2 floats
 };
 
-inline constexpr std::array<Field, 5> all_fields = {Field::m, Field::o, Field::pdf_m, Field::pdf_o,
-                                                    Field::weight};
+inline constexpr std::array<Field, 6> all_fields = {Field::m,     Field::o,      Field::pdf_m,
+                                                    Field::pdf_o, Field::weight, Field::u};
 
-std::string_view field_name(Field field);   // "m", "o", "pdf_m", "pdf_o", "weight"
+std::string_view field_name(Field field);   // "m", "o", "pdf_m", "pdf_o", "weight", "u"
 Field parse_field(std::string_view name);   // throws InvalidArgument naming the allowed fields
-int field_columns(Field field);             // 3 for m and o, else 1
+int field_columns(Field field);             // 3 for m and o, 2 for u, else 1
+std::string field_list();                   // "m, o, pdf_m, pdf_o, weight, u"
 
 // Fields parsed from a comma-separated list such as "m,o,pdf_m", in the given order.
 std::vector<Field> parse_field_list(std::string_view list);

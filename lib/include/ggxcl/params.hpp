@@ -26,6 +26,23 @@ enum class Precision { precise = 0, relaxed = 1 };
 std::string_view precision_name(Precision precision);   // "precise", "relaxed"
 Precision parse_precision(std::string_view name);       // throws InvalidArgument naming the modes
 
+// Where the two uniforms of sample k of stream `seed` come from (both give
+// u1, u2 on the grid of 2^-24 in [0, 1), and sample k depends on (seed, k)
+// alone, so chunks, shards and device splits give the same bits):
+//   philox - Philox2x32-10 with key seed and counter k: independent numbers;
+//   sobol  - point k of the first two Sobol dimensions, Owen-scrambled by a
+//            hash keyed by seed (Burley 2020): the first 2^m points of a
+//            stream (first = 0) put one point in every elementary interval
+//            of area 2^-m, so estimates converge faster than with philox.
+// The caller's own uniforms (PerSampleInputs::uniforms,
+// DeviceInputs::uniforms) replace either.  docs/MATH.md "Uniforms".
+enum class Sequence { philox = 0, sobol = 1 };
+inline constexpr std::array<Sequence, 2> all_sequences = {Sequence::philox, Sequence::sobol};
+
+std::string_view sequence_name(Sequence sequence);  // "philox", "sobol"
+Sequence parse_sequence(std::string_view name);     // throws InvalidArgument naming the sequences
+std::string sequence_description(Sequence sequence);  // how its uniforms are made, for sidecars
+
 // Parameters shared by every sample of a batch.
 struct SampleParams {
     Method method = Method::caps;
@@ -34,6 +51,7 @@ struct SampleParams {
                                            // (world space for caps-iso); z < 0 is below the horizon
     Vec3 normal{0.0f, 0.0f, 1.0f};         // caps-iso and world space: the world-space surface normal
     Precision precision = Precision::precise;
+    Sequence sequence = Sequence::philox;  // where the uniforms come from (see Sequence)
     // World space for every method: view, normal and the returned m and o are
     // world-space vectors.  The tangent-space methods build a basis around the
     // normal (Duff et al. 2017) and transform in and out; caps-iso needs none.
@@ -51,9 +69,10 @@ bool uses_normal(const SampleParams& params);
 
 // Samples first .. first+count-1 of the stream `seed`.  Sample k depends on
 // (seed, k) alone, so any split into ranges gives the same values: its
-// uniforms are the two words of Philox2x32-10 with key seed and counter k
-// (u1 from word 0, u2 from word 1, each its top 24 bits times 2^-24).
-// Seeds are 0 .. max_seed (the generator's key is one 32-bit word).
+// uniforms are point k of SampleParams::sequence (with Philox, the two words
+// of Philox2x32-10 with key seed and counter k, u1 from word 0, u2 from
+// word 1, each its top 24 bits times 2^-24).  Seeds are 0 .. max_seed (the
+// generators' key is one 32-bit word).
 inline constexpr std::uint64_t max_seed = 0xffffffffull;
 struct SampleRange {
     std::uint64_t seed = 0;
@@ -62,11 +81,13 @@ struct SampleRange {
 };
 
 // Per-sample parameters held on the host; an empty vector means "use the
-// uniform value of SampleParams".  A non-empty vector has one entry per sample.
+// uniform value of SampleParams" (for uniforms: its sequence).  A non-empty
+// vector has one entry per sample.
 struct PerSampleInputs {
     std::vector<Vec3> views;
-    std::vector<std::array<float, 2>> alphas;  // (alpha_x, alpha_y)
+    std::vector<std::array<float, 2>> alphas;    // (alpha_x, alpha_y)
     std::vector<Vec3> normals;
+    std::vector<std::array<float, 2>> uniforms;  // the caller's (u1, u2), each in [0, 1)
 };
 
 // The view from polar angle theta and azimuth phi in degrees:
@@ -87,7 +108,8 @@ Vec3 unit_vector(const Vec3& v);
 // Largest count one range may hold (indices must not wrap around 2^64).
 void validate(const SampleRange& range);
 
-// Each non-empty per-sample vector must hold `count` entries of valid values.
+// Each non-empty per-sample vector must hold `count` entries of valid values
+// (uniforms finite and in [0, 1): the error names the first bad index).
 void validate(const PerSampleInputs& inputs, const SampleParams& params, std::uint64_t count);
 
 // What a request needs, which selects the program variant (see build options):

@@ -24,11 +24,12 @@ namespace ggxcl {
 class ProgramCache;  // the runtime's programs and kernels per context (internal)
 class KernelLease;
 
-// Samples on the host.  Vector fields are planar: m[c * count + j] is
-// component c (x, y, z) of sample j.  Fields not requested stay empty.
+// Samples on the host.  Fields of several columns are planar: m[c * count + j]
+// is component c (x, y, z) of sample j, u[c * count + j] its uniform u1 (c = 0)
+// or u2 (c = 1).  Fields not requested stay empty.
 struct SampleSet {
     std::uint64_t count = 0;
-    std::vector<float> m, o, pdf_m, pdf_o, weight;
+    std::vector<float> m, o, pdf_m, pdf_o, weight, u;
 
     Vec3 m_at(std::size_t j) const { return {m[j], m[count + j], m[2 * count + j]}; }
     Vec3 o_at(std::size_t j) const { return {o[j], o[count + j], o[2 * count + j]}; }
@@ -42,7 +43,7 @@ struct SampleSet {
 // requested are null.
 struct SampleView {
     std::uint64_t count = 0, stride = 0;
-    const float *m = nullptr, *o = nullptr, *pdf_m = nullptr, *pdf_o = nullptr, *weight = nullptr;
+    const float *m = nullptr, *o = nullptr, *pdf_m = nullptr, *pdf_o = nullptr, *weight = nullptr, *u = nullptr;
     const float* column_source(Field field) const;
     const float*& column_source(Field field);
 };
@@ -50,20 +51,23 @@ SampleView view_of(const SampleSet& set);  // its fields, stride = count
 
 // Per-sample parameters in the caller's buffers, planar with the stride of
 // the call: view and normal 3 planes (unit vectors), alpha 2 planes
-// (alpha_x, alpha_y).  A default-constructed buffer means "uniform".
+// (alpha_x, alpha_y), uniforms 2 planes (u1, u2 in [0, 1), used instead of
+// the sequence of SampleParams; a sample whose uniforms are not in [0, 1)
+// is the fallback m = o = n, pdfs and weight 0).  A default-constructed
+// buffer means "uniform" (for uniforms: from the sequence).
 // The two flags are promises about the buffers' contents that select a
 // cheaper program; leave them false when unsure.
 struct DeviceInputs {
-    cl::Buffer view, alpha, normal;
+    cl::Buffer view, alpha, normal, uniforms;
     bool views_above_horizon = false;  // every view has i.n >= 0 (iz >= 0 in tangent space)
     bool isotropic = false;            // every alpha pair has alpha_x == alpha_y
 };
 
 // Output buffers of the caller, planar with the stride of the call: m and o
-// hold 3 planes, the others one.  Only the fields whose buffer is set are
-// computed and written.
+// hold 3 planes, u 2, the others one.  Only the fields whose buffer is set
+// are computed and written.
 struct DeviceOutputs {
-    cl::Buffer m, o, pdf_m, pdf_o, weight;
+    cl::Buffer m, o, pdf_m, pdf_o, weight, u;
     cl::Buffer& of(Field field);  // the buffer of `field`
     const cl::Buffer& of(Field field) const;
 };

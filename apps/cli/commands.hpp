@@ -1,7 +1,8 @@
 // commands.hpp - the subcommands of the `ggx` tool.  Each registers its
 // options on a CLI11 subcommand and returns its prepare step, called after
-// parsing: it checks every option (touching no file and no device) and
-// returns the work to run, or nothing when its subcommand was not given.
+// parsing: it checks every option (writing no file and opening no device;
+// only `ggx sample --uniforms` reads its file here) and returns the work to
+// run, or nothing when its subcommand was not given.
 // Bad usage is thus reported before any device is opened or file written.
 #pragma once
 

@@ -13,7 +13,10 @@ void SampleOptions::add_view_options(CLI::App& cmd)
     cmd.add_option("--theta", theta, "view polar angle in degrees, 0..180 (above 90: below the horizon)")
         ->capture_default_str();
     cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360")->capture_default_str();
-    cmd.add_option("--seed", seed, "seed of the Philox stream, 0..2^32-1")->capture_default_str();
+    cmd.add_option("--seed", seed, "seed of the stream of uniforms, 0..2^32-1")->capture_default_str();
+    cmd.add_option("--sequence", sequence, "where the uniforms come from: philox (independent) or sobol "
+                                           "(Owen-scrambled Sobol points, keyed by --seed)")
+        ->capture_default_str();
     cmd.add_option("--precision", precision, "precise (IEEE arithmetic, sincos within 0.86 ulp) or relaxed "
                                              "(precise and -cl-fast-relaxed-math)")
         ->capture_default_str();
@@ -44,6 +47,16 @@ ggxcl::Method SampleOptions::parsed_method() const
 }
 
 std::uint64_t SampleOptions::parsed_seed() const { return parse_whole("--seed", seed, 0, ggxcl::max_seed); }
+
+ggxcl::Sequence SampleOptions::parsed_sequence() const
+{
+    try {
+        return ggxcl::parse_sequence(sequence);
+    } catch (const ggxcl::InvalidArgument&) {
+        throw UsageError("--sequence", sequence, "one of philox, sobol");
+    }
+}
+
 ggxcl::SampleRange SampleOptions::parsed_range(const std::string& first, const std::string& count) const
 {
     ggxcl::SampleRange range{parsed_seed(), parse_uint64("--first", first), parse_count("-n", count)};
@@ -77,8 +90,9 @@ ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m) const
     try {
         p.precision = ggxcl::parse_precision(precision);
     } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--precision", precision, "one of precise, fast, relaxed");
+        throw UsageError("--precision", precision, "one of precise, relaxed");
     }
+    p.sequence = parsed_sequence();
     if (!normal.empty()) {
         if (m != ggxcl::Method::caps_iso)
             throw UsageError("--normal", normal, "only with --method caps-iso (the others work in tangent space)");

@@ -23,8 +23,9 @@ struct SampleOptions {
     std::string seed = "0";
     std::string device;  // selector, else GGXCL_DEVICE, else the first device
     std::string precision = "precise";
+    std::string sequence = "philox";
 
-    void add_view_options(CLI::App& cmd);  // --alpha, --theta, --phi, --seed, --device, --precision
+    void add_view_options(CLI::App& cmd);  // --alpha, --theta, --phi, --seed, --sequence, --device, --precision
     void add_method_options(CLI::App& cmd); // --method, --normal
 
     // These options for a command that runs every method: caps-iso, which is
@@ -35,6 +36,7 @@ struct SampleOptions {
     ggxcl::SampleParams params_for(ggxcl::Method method) const;
     ggxcl::Method parsed_method() const;
     std::uint64_t parsed_seed() const;
+    ggxcl::Sequence parsed_sequence() const;
     // --seed, --first and -n; the range must end before index 2^64.
     ggxcl::SampleRange parsed_range(const std::string& first, const std::string& count) const;
     double parsed_theta() const;

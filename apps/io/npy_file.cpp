@@ -65,7 +65,17 @@ NpyArray read_npy(const std::string& path)
     return parse_npy(in, path);
 }
 
-NpyArray parse_npy(std::istream& in, const std::string& path)
+namespace {
+
+struct NpyHeader {
+    std::string descr;                  // '<f4' or '<f8'
+    std::uint64_t rows = 0, columns = 0;
+    std::uint64_t data_bytes = 0;       // what follows the header in the file
+};
+
+// The header of a 2-D C-order little-endian float32 or float64 .npy; the
+// stream is left at the first data byte.
+NpyHeader parse_header(std::istream& in, const std::string& path)
 {
     in.seekg(0, std::ios::end);
     const std::uint64_t size = std::uint64_t(in.tellg());
@@ -76,23 +86,63 @@ NpyArray parse_npy(std::istream& in, const std::string& path)
     std::size_t length = std::uint8_t(preamble[8]) | (std::uint8_t(preamble[9]) << 8);
     std::string dict(length, '\0');
     in.read(dict.data(), length);
-    static const std::regex shape(R"re(\{'descr': '<f4', 'fortran_order': False, 'shape': \((\d+), (\d+)\), \}\s*)re");
+    static const std::regex shape(
+        R"re(\{'descr': '(<f4|<f8)', 'fortran_order': False, 'shape': \((\d+), (\d+)\), \}\s*)re");
     std::smatch match;
     if (!in || !std::regex_match(dict, match, shape))
-        throw std::runtime_error("'" + path + "' is not a 2-D float32 C-order .npy file");
-    NpyArray array;
-    const std::string rows = match[1], columns = match[2];
+        throw std::runtime_error("'" + path + "' is not a 2-D float32 or float64 C-order .npy file");
+    NpyHeader header;
+    header.descr = match[1];
+    const std::string rows = match[2], columns = match[3];
     if (rows.size() > 19 || columns.size() > 19)  // beyond any file's size, and beyond stoull
         throw std::runtime_error("'" + path + "' is shorter than its shape says");
-    array.rows = std::stoull(rows);
-    array.columns = std::stoull(columns);
-    // The data must be exactly what remains after the header (checked before allocating).
-    const std::uint64_t header = 10 + length, remaining = size - std::min(size, header);
-    if (array.columns != 0 && array.rows > remaining / sizeof(float) / array.columns)
+    header.rows = std::stoull(rows);
+    header.columns = std::stoull(columns);
+    header.data_bytes = size - std::min<std::uint64_t>(size, 10 + length);
+    return header;
+}
+
+// Reads rows x columns values of type T (checked against the bytes left before allocating).
+template <class T> std::vector<T> read_values(std::istream& in, const NpyHeader& header, const std::string& path)
+{
+    if (header.columns != 0 && header.rows > header.data_bytes / sizeof(T) / header.columns)
         throw std::runtime_error("'" + path + "' is shorter than its shape says");
-    array.data.resize(array.rows * array.columns);
-    if (!in.read(reinterpret_cast<char*>(array.data.data()), array.data.size() * sizeof(float)))
+    std::vector<T> values(header.rows * header.columns);
+    if (!in.read(reinterpret_cast<char*>(values.data()), values.size() * sizeof(T)))
         throw std::runtime_error("'" + path + "' is shorter than its shape says");
+    return values;
+}
+
+} // namespace
+
+NpyArray parse_npy(std::istream& in, const std::string& path)
+{
+    NpyHeader header = parse_header(in, path);
+    if (header.descr != "<f4")
+        throw std::runtime_error("'" + path + "' is not a 2-D float32 C-order .npy file");
+    NpyArray array;
+    array.rows = header.rows;
+    array.columns = header.columns;
+    array.data = read_values<float>(in, header, path);
+    return array;
+}
+
+NpyDoubles read_npy_doubles(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw std::runtime_error("cannot read '" + path + "'");
+    NpyHeader header = parse_header(in, path);
+    NpyDoubles array;
+    array.rows = header.rows;
+    array.columns = header.columns;
+    array.float64 = header.descr == "<f8";
+    if (array.float64) {
+        array.data = read_values<double>(in, header, path);
+    } else {
+        std::vector<float> floats = read_values<float>(in, header, path);
+        array.data.assign(floats.begin(), floats.end());
+    }
     return array;
 }
 

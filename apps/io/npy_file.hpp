@@ -1,6 +1,7 @@
 // npy_file.hpp - NumPy .npy version 1.0 files of little-endian float32 with
 // shape (rows, columns), C order: a streaming writer (rows arrive in
-// chunks, the file is renamed into place when complete) and a reader.
+// chunks, the file is renamed into place when complete) and readers (of
+// float32, and of float32 or float64 as doubles).
 #pragma once
 
 #include <cstdint>
@@ -39,5 +40,13 @@ void write_npy_f64(const std::string& path, std::uint64_t rows, std::uint64_t co
 // on anything else (another format, a shape its bytes do not fill).
 NpyArray read_npy(const std::string& path);
 NpyArray parse_npy(std::istream& in, const std::string& name);
+
+// A float32 or float64 C-order 2-D .npy, its values as doubles (exact).
+struct NpyDoubles {
+    std::uint64_t rows = 0, columns = 0;
+    bool float64 = false;      // the file's type
+    std::vector<double> data;  // row-major
+};
+NpyDoubles read_npy_doubles(const std::string& path);
 
 } // namespace ggxapp

@@ -36,7 +36,7 @@ void rows_for(std::size_t columns, const float* const* planes, std::size_t count
     ((columns == counts + 1 ? rows_from_planes<counts + 1>(planes, 0, count, rows) : void()), ...);
 }
 
-// The chunk's requested fields as rows (count x columns, 1 to 9 columns), in
+// The chunk's requested fields as rows (count x columns, 1 to 11 columns), in
 // `fields` order, into `rows`.
 void interleave(const ggxcl::SampleView& chunk, const std::vector<ggxcl::Field>& fields, std::size_t columns,
                 std::vector<float>& rows)
@@ -46,7 +46,7 @@ void interleave(const ggxcl::SampleView& chunk, const std::vector<ggxcl::Field>&
     for (ggxcl::Field field : fields)
         for (int c = 0; c < ggxcl::field_columns(field); ++c)
             planes.push_back(chunk.column_source(field) + c * chunk.stride);
-    rows_for(columns, planes.data(), chunk.count, rows.data(), std::make_integer_sequence<int, 9>{});
+    rows_for(columns, planes.data(), chunk.count, rows.data(), std::make_integer_sequence<int, 11>{});
 }
 
 std::string device_names(const std::vector<ggxcl::Sampler*>& samplers)
@@ -65,6 +65,10 @@ nlohmann::json sidecar(const std::vector<ggxcl::Sampler*>& samplers, const Sampl
     if (job.format == Format::ply)
         doc["ply"] = "vertices are the first three columns, colored by log10 of the fourth over [-2, 3]";
     doc["shape"] = {job.range.count, column_names(job.fields).size()};
+    if (!job.uniforms_file.empty()) {
+        doc.erase("sequence");
+        doc["generator"] = "the caller's uniforms, rows of " + job.uniforms_file;
+    }
     doc["device"] = device_names(samplers);
     return doc;
 }
@@ -87,7 +91,8 @@ nlohmann::json describe_sampling(const ggxcl::SampleParams& p, double theta_degr
     doc["seed"] = range.seed;
     doc["first"] = range.first;
     doc["count"] = range.count;
-    doc["generator"] = "Philox2x32-10, key seed, counter (index lo, index hi); u1 word 0, u2 word 1";
+    doc["sequence"] = std::string(ggxcl::sequence_name(p.sequence));
+    doc["generator"] = ggxcl::sequence_description(p.sequence);
     doc["ggxcl_version"] = ggxcl::version();
     return doc;
 }
@@ -100,6 +105,9 @@ std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields)
         if (ggxcl::field_columns(field) == 3)
             for (const char* axis : {"_x", "_y", "_z"})
                 names.push_back(base + axis);
+        else if (ggxcl::field_columns(field) == 2)
+            for (const char* index : {"1", "2"})
+                names.push_back(base + index);
         else
             names.push_back(base);
     }
@@ -144,7 +152,7 @@ void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJo
     };
     const ggxcl::FieldSet fields(job.fields);
     if (samplers.size() == 1)
-        samplers.front()->generate_chunk_views(job.params, job.range, fields, write_chunk);
+        samplers.front()->generate_chunk_views(job.params, job.range, fields, write_chunk, job.per_sample);
     else
         ggxcl::generate_split(samplers, job.params, job.range, fields,
                               [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {

@@ -20,11 +20,13 @@ struct SampleJob {
     std::vector<ggxcl::Field> fields;  // column order of the file; for .ply a direction and its pdf
     std::string out;                   // output path
     Format format = Format::npy;
+    ggxcl::PerSampleInputs per_sample;  // the caller's uniforms (one device only), else empty
+    std::string uniforms_file;          // where they were read from, for the sidecar
 };
 
 // What every sidecar and summary records of how samples were drawn: method,
 // roughness, precision, view (angles and vector), normal for caps-iso,
-// seed and range, generator and library version.
+// seed and range, sequence and its generator, and library version.
 nlohmann::json describe_sampling(const ggxcl::SampleParams& params, double theta_degrees, double phi_degrees,
                                  const ggxcl::SampleRange& range);
 

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "ggx_reference.hpp"
 #include "npy_file.hpp"
 
 namespace fs = std::filesystem;
@@ -40,8 +41,20 @@ bool only_file_is(const fs::path& dir, std::size_t expected)
 {
     std::size_t n = 0;
     for (const auto& entry : fs::directory_iterator(dir))
-        n += entry.path().filename() != "stderr.txt";
+        n += entry.path().filename() != "stderr.txt" && entry.path().filename() != "inputs";
     return n == expected;
+}
+
+// A float64 .npy of `rows` x `columns` values 0.5 but entry `bad` (row-major) = `value`,
+// in the inputs folder (not counted as output); its path.
+std::string bad_uniforms(const std::string& name, std::size_t rows, std::size_t columns, std::size_t bad, double value)
+{
+    fs::path dir = scratch() / "inputs";
+    fs::create_directories(dir);
+    std::vector<double> data(rows * columns, 0.5);
+    data[bad] = value;
+    ggxapp::write_npy_f64((dir / name).string(), rows, columns, data);
+    return (dir / name).string();
 }
 
 } // namespace
@@ -75,6 +88,46 @@ TEST_CASE("ggx sample writes the requested columns and a sidecar")
     CHECK(!doc["ggxcl_version"].get<std::string>().empty());
     fs::remove(out);
     fs::remove(scratch() / "s.json");
+}
+
+TEST_CASE("ggx sample --uniforms draws from the caller's uniforms; --sequence sobol is recorded")
+{
+    const std::uint64_t n = 3000, seed = 4;
+    fs::path dir = scratch() / "uniforms";
+    fs::create_directories(dir);
+    std::vector<double> u64(2 * n);
+    std::vector<float> u32(2 * n);
+    for (std::uint64_t j = 0; j < n; ++j)
+        for (int c = 0; c < 2; ++c)
+            u32[2 * j + c] = float(u64[2 * j + c] = ggxref::sobol_uniforms(seed, j)[c]);
+    ggxapp::write_npy_f64((dir / "u64.npy").string(), n, 2, u64);
+    ggxapp::NpyWriter f32((dir / "u32.npy").string(), n, 2);
+    f32.append(u32);
+    f32.commit();
+    const std::string common = "sample --method heitz --alpha 0.2,0.5 --theta 40 --fields m,o,pdf_o,u --out ";
+    REQUIRE(ggx(common + (dir / "seq.npy").string() + " --sequence sobol --seed 4 -n 3000").status == 0);
+    REQUIRE(ggx(common + (dir / "f64.npy").string() + " --uniforms " + (dir / "u64.npy").string()).status == 0);
+    REQUIRE(ggx(common + (dir / "f32.npy").string() + " --uniforms " + (dir / "u32.npy").string() + " -n 3000")
+                .status == 0);
+    ggxapp::NpyArray sequence = ggxapp::read_npy((dir / "seq.npy").string());
+    CHECK(sequence.columns == 9);
+    CHECK(sequence.data == ggxapp::read_npy((dir / "f64.npy").string()).data);
+    CHECK(sequence.data == ggxapp::read_npy((dir / "f32.npy").string()).data);
+    CHECK(sequence.data[7] == u32[0]);  // the u columns
+    CHECK(sequence.data[9 * 2999 + 8] == u32[2 * 2999 + 1]);
+    nlohmann::json seq = nlohmann::json::parse(read_all(dir / "seq.json"));
+    CHECK(seq["sequence"] == "sobol");
+    CHECK(seq["columns"].back() == "u2");
+    CHECK(seq["generator"].get<std::string>().find("Owen-scrambled") != std::string::npos);
+    nlohmann::json given = nlohmann::json::parse(read_all(dir / "f64.json"));
+    CHECK(given.count("sequence") == 0);
+    CHECK(given["generator"].get<std::string>().find("u64.npy") != std::string::npos);
+    CHECK(given["count"] == n);
+    // Control: the default sequence gives other samples.
+    REQUIRE(ggx(common + (dir / "philox.npy").string() + " --seed 4 -n 3000").status == 0);
+    CHECK(sequence.data != ggxapp::read_npy((dir / "philox.npy").string()).data);
+    CHECK(nlohmann::json::parse(read_all(dir / "philox.json"))["sequence"] == "philox");
+    fs::remove_all(dir);
 }
 
 TEST_CASE("ggx demo writes clouds, histograms and a summary page for every method")
@@ -123,6 +176,16 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"sample --method caps -n 10 --fields m,o --out " + (scratch() / "x.ply").string(), "--fields"},
         {"sample --method caps -n 10 --device no-such-device" + out, "--device"},
         {"sample --method caps -n 10 --devices 0,no-such-device" + out, "--device"},
+        {"sample --method caps -n 10 --sequence halton" + out, "--sequence"},
+        {"sample --method caps" + out, "-n"},
+        {"sample --method caps --uniforms " + (scratch() / "missing.npy").string() + out, "--uniforms"},
+        {"sample --method caps --uniforms " + bad_uniforms("three.npy", 4, 3, 3, 0.5) + out, "--uniforms"},
+        {"sample --method caps --uniforms " + bad_uniforms("one.npy", 4, 2, 5, 1.0) + out, "row 2: 0.5,1"},
+        {"sample --method caps --uniforms " + bad_uniforms("nan.npy", 4, 2, 6, std::nan("")) + out, "row 3"},
+        {"sample --method caps -n 5 --uniforms " + bad_uniforms("ok.npy", 4, 2, 0, 0.5) + out, "-n"},
+        {"sample --method caps --sequence sobol --uniforms " + bad_uniforms("ok.npy", 4, 2, 0, 0.5) + out,
+         "--sequence"},
+        {"sample --method caps --devices 0,0 --uniforms " + bad_uniforms("ok.npy", 4, 2, 0, 0.5) + out, "--uniforms"},
         {"histogram --method walter" + out, "--method"},
         {"histogram --method caps --alpha 0" + out, "--alpha"},
         {"histogram --method caps --theta 200" + out, "--theta"},
@@ -134,6 +197,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"histogram --method caps --against nope" + out, "--against"},
         {"histogram --method caps --of x" + out, "--of"},
         {"histogram --method caps --precision turbo" + out, "--precision"},
+        {"histogram --method caps --sequence sobel" + out, "--sequence"},
         {"bench --repeats 2", "--repeats"},
         {"bench --methods walter", "--methods"},
         {"bench --methods caps,", "--methods"},

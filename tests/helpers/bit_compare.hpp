@@ -18,7 +18,7 @@ inline bool same_bits(const std::vector<float>& a, const std::vector<float>& b)
 inline bool same_bits(const ggxcl::SampleSet& a, const ggxcl::SampleSet& b)
 {
     return a.count == b.count && same_bits(a.m, b.m) && same_bits(a.o, b.o) && same_bits(a.pdf_m, b.pdf_m) &&
-           same_bits(a.pdf_o, b.pdf_o) && same_bits(a.weight, b.weight);
+           same_bits(a.pdf_o, b.pdf_o) && same_bits(a.weight, b.weight) && same_bits(a.u, b.u);
 }
 
 // what() of the Exception that `body` throws, or "(nothing thrown)".

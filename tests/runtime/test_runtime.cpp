@@ -4,6 +4,8 @@
 // errors for bad arguments and failed builds.
 #include <doctest/doctest.h>
 
+#include <iterator>
+
 #include <cstdlib>
 #include <cstring>
 
@@ -55,7 +57,9 @@ TEST_CASE("chunk views (mapped on CPU devices) give generate's samples, chunk by
     s.set_chunk_size(4099);
     ggxcl::SampleSet gathered;
     gathered.count = count;
-    std::vector<float>* parts[] = {&gathered.m, &gathered.o, &gathered.pdf_m, &gathered.pdf_o, &gathered.weight};
+    std::vector<float>* parts[] = {&gathered.m,     &gathered.o,      &gathered.pdf_m,
+                                   &gathered.pdf_o, &gathered.weight, &gathered.u};
+    static_assert(std::size(parts) == ggxcl::all_fields.size());
     std::uint64_t expected_offset = 0;
     int chunks = 0;
     s.generate_chunk_views(p, {5, 123, count}, ggxcl::FieldSet::all(), [&](const ggxcl::SampleView& v, std::uint64_t offset) {

@@ -56,11 +56,13 @@ SampleView view_of(const SampleSet& set);  // its fields, stride = count
 // is the fallback m = o = n, pdfs and weight 0).  A default-constructed
 // buffer means "uniform" (for uniforms: from the sequence).
 // The two flags are promises about the buffers' contents that select a
-// cheaper program; leave them false when unsure.
+// cheaper program; leave them false when unsure.  (uniforms comes last so
+// that {view, alpha, normal, flags...} initializers keep their meaning.)
 struct DeviceInputs {
-    cl::Buffer view, alpha, normal, uniforms;
+    cl::Buffer view, alpha, normal;
     bool views_above_horizon = false;  // every view has i.n >= 0 (iz >= 0 in tangent space)
     bool isotropic = false;            // every alpha pair has alpha_x == alpha_y
+    cl::Buffer uniforms;
 };
 
 // Output buffers of the caller, planar with the stride of the call: m and o

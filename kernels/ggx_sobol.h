@@ -11,7 +11,7 @@
 //   x1 = bits of the low word of index reversed (van der Corput),
 //   x2 = the low word of index times the Pascal matrix mod 2 (Sobol's second
 //        dimension: direction numbers v_0 = 2^31, v_j = v_{j-1} xor v_{j-1}/2),
-//   each scrambled by ggx_owen_scramble with its own key from (seed,
+//   each scrambled by ggx_owen_scramble_digits with its own key from (seed,
 //   dimension, high word of index): a stream beyond 2^32 samples continues
 //   with new scrambles; u = top 24 bits times 2^-24, as for Philox.
 #ifndef GGX_SOBOL_H
@@ -19,43 +19,72 @@
 
 #include "ggx_philox.h"
 
-// The 32 bits of x in reverse order.
+#ifndef GGX_NO_BITREVERSE
+#define GGX_NO_BITREVERSE 0
+#endif
+
+#if GGX_NO_BITREVERSE
+// The low 8 bits of b in reverse order, by multiplies that no compiler turns
+// into llvm.bitreverse (spread 4 copies, pick one bit of each, gather).
+GGX_INLINE uint ggx_reverse_byte(uint b)
+{
+    return (uint)(((((ulong)(b & 0xffu)) * 0x80200802ul) & 0x0884422110ul) * 0x0101010101ul >> 32) & 0xffu;
+}
+#endif
+
+// The 32 bits of x in reverse order.  Compilers turn the masks and shifts
+// into one llvm.bitreverse; -DGGX_NO_BITREVERSE=1 (set by the runtime for
+// Oclgrind, whose LLVM does not know that intrinsic) reverses byte by byte.
 GGX_INLINE uint ggx_reverse_bits(uint x)
 {
+#if GGX_NO_BITREVERSE
+    return (ggx_reverse_byte(x) << 24) | (ggx_reverse_byte(x >> 8) << 16) | (ggx_reverse_byte(x >> 16) << 8) |
+           ggx_reverse_byte(x >> 24);
+#else
     x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
     x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
     x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
     x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
     return (x >> 16) | (x << 16);
+#endif
 }
 
-// Sobol's second dimension of point k: the xor of the direction numbers of k's set bits.
-GGX_INLINE uint ggx_sobol_second(uint k)
+// The digits of Sobol's second dimension of point k as bits (digit i of the
+// binary fraction = bit i): digit i is the parity of the bits j of k with
+// binom(j, i) odd, that is with the bits of i a subset of those of j
+// (Lucas), summed over the supersets one index bit at a time.  Straight-line
+// code: a loop over k's bits here keeps PoCL from vectorizing the kernels.
+GGX_INLINE uint ggx_sobol_second_digits(uint k)
 {
-    uint x = 0u, v = 0x80000000u;
-#pragma unroll
-    for (int bit = 0; bit < 32; ++bit) {
-        x ^= ((k >> bit) & 1u) ? v : 0u;
-        v ^= v >> 1;
-    }
-    return x;
+    k ^= (k >> 1) & 0x55555555u;
+    k ^= (k >> 2) & 0x33333333u;
+    k ^= (k >> 4) & 0x0f0f0f0fu;
+    k ^= (k >> 8) & 0x00ff00ffu;
+    k ^= (k >> 16) & 0x0000ffffu;
+    return k;
 }
 
-// A nested uniform (Owen) scramble of the binary fraction x / 2^32 with key
-// `key`: with the bits reversed, digit i of the fraction is bit i, and each
-// step below changes bit i by a function of bits 0 .. i - 1 alone (adding
-// the key carries only upward; x * c with c even moves bits only upward), so
-// digit i is flipped by a function of the digits above it: an Owen scramble
-// (Burley 2020, sec. 3, with his Laine-Karras-style constants).
-GGX_INLINE uint ggx_owen_scramble(uint x, uint key)
+// A nested uniform (Owen) scramble with key `key` of the binary fraction
+// whose digit i is bit i of `digits`, returned as a 32-bit fraction (most
+// significant digit in the top bit): each step below changes bit i by a
+// function of bits 0 .. i - 1 alone (adding the key carries only upward;
+// x * c with c even moves bits only upward), so digit i is flipped by a
+// function of the digits above it: an Owen scramble (Burley 2020, sec. 3,
+// with his Laine-Karras-style constants).
+GGX_INLINE uint ggx_owen_scramble_digits(uint digits, uint key)
 {
-    x = ggx_reverse_bits(x);
-    x += key;
+    uint x = digits + key;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
     return ggx_reverse_bits(x);
+}
+
+// The same for a 32-bit fraction x.
+GGX_INLINE uint ggx_owen_scramble(uint x, uint key)
+{
+    return ggx_owen_scramble_digits(ggx_reverse_bits(x), key);
 }
 
 // A 32-bit mix (xorshift-multiply, full avalanche) for the scramble keys.
@@ -80,8 +109,9 @@ GGX_INLINE uint ggx_sobol_key(uint seed, uint dimension, uint block)
 GGX_INLINE void ggx_sobol_words(ulong seed, ulong index, uint* w1, uint* w2)
 {
     uint k = (uint)index, block = (uint)(index >> 32);
-    *w1 = ggx_owen_scramble(ggx_reverse_bits(k), ggx_sobol_key((uint)seed, 0u, block));
-    *w2 = ggx_owen_scramble(ggx_sobol_second(k), ggx_sobol_key((uint)seed, 1u, block));
+    // van der Corput's digits are the bits of k themselves.
+    *w1 = ggx_owen_scramble_digits(k, ggx_sobol_key((uint)seed, 0u, block));
+    *w2 = ggx_owen_scramble_digits(ggx_sobol_second_digits(k), ggx_sobol_key((uint)seed, 1u, block));
 }
 
 // The two uniforms of sample `index` in stream `seed` from the scrambled Sobol points.

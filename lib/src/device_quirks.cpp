@@ -16,7 +16,7 @@ std::string device_quirk_options(const cl::Device& device)
 {
     std::string options;
     if (platform_name(device).find("Oclgrind") != std::string::npos)
-        options += " -DGGX_NO_RESTRICT=1";
+        options += " -DGGX_NO_RESTRICT=1 -DGGX_NO_BITREVERSE=1";
     if (!(device.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>() & CL_FP_FMA))
         options += " -DGGX_NO_FMA=1";
     return options;

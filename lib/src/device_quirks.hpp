@@ -13,7 +13,9 @@ namespace ggxcl::detail {
 // " -DGGX_NO_RESTRICT=1" for Oclgrind: its LLVM does not know the
 // llvm.experimental.noalias.scope.decl intrinsic that clang emits when a
 // function with restrict pointers is inlined, and such kernels fail to be
-// created (CL_INVALID_KERNEL_NAME).  " -DGGX_NO_FMA=1" for a device whose
+// created (CL_INVALID_KERNEL_NAME); " -DGGX_NO_BITREVERSE=1" there too: the
+// same holds for llvm.bitreverse, which clang makes of the Sobol points' bit
+// reversal (kernels/ggx_sobol.h).  " -DGGX_NO_FMA=1" for a device whose
 // single-precision config lacks CL_FP_FMA: there fma() is a slow software
 // routine and kernels/ggx_sincos.h uses a * b + c.  Empty for most devices.
 std::string device_quirk_options(const cl::Device& device);

@@ -19,7 +19,8 @@
 // What runs: `ggx sample` for every method in precise and relaxed mode with
 // every field (1000 samples: three whole work-groups of 256 and a partial
 // one, so the `_tail` kernels run too; plus a view below the horizon, a
-// tilted caps-iso normal and an exact multiple of 256), `ggx histogram
+// tilted caps-iso normal, an exact multiple of 256, Sobol points across the
+// 2^32 block boundary and the caller's uniforms from a .npy), `ggx histogram
 // --no-png` (o and m, 20000 samples: two work-groups of 256 x 64 samples),
 // `ggx stress` (every method, precise, the whole grid), and through
 // oclgrind_driver the kernels the command line does not reach: per-sample
@@ -340,6 +341,15 @@ TEST_CASE("ggx sample under Oclgrind: every method, precise and relaxed, every f
     runs.push_back({{"--method", "caps-iso", "--normal", "0,0.6,0.8", "--theta", "30"}, 1000});  // tilted normal
     runs.push_back({{"--method", "caps", "--theta", "120"}, 1000});                            // below the horizon
     runs.push_back({{"--method", "bounded", "--first", "4294967000"}, 512});                     // whole groups only
+    runs.push_back({{"--method", "heitz", "--sequence", "sobol", "--first", "4294966900"}, 1000});  // Sobol points
+    std::vector<double> uniforms(2 * 1000);
+    for (std::size_t j = 0; j < 1000; ++j) {
+        uniforms[2 * j] = (double(j) + 0.5) / 1000.0;
+        uniforms[2 * j + 1] = std::fmod(double(j) * 0.6180339887498949, 1.0);
+    }
+    const fs::path uniforms_file = scratch() / "uniforms.npy";
+    ggxapp::write_npy_f64(uniforms_file.string(), 1000, 2, uniforms);
+    runs.push_back({{"--method", "bounded", "--uniforms", uniforms_file.string()}, 1000});  // the caller's uniforms
     int k = 0;
     for (Extra& r : runs) {
         const fs::path out = scratch() / ("sample-" + std::to_string(++k) + ".npy");

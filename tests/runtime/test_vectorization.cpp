@@ -1,7 +1,7 @@
 // test_vectorization.cpp - on PoCL, every bulk kernel must vectorize in
 // both precision modes (a kernel PoCL cannot vectorize runs about 10-20x
-// slower).  Each method's sample kernel (and, in the default mode, its
-// fused estimator and world-space kernels) is compiled in a child process
+// slower).  Each method's sample kernel (and, in the default mode, with
+// Sobol points, and its fused estimator and world-space kernels) is compiled in a child process
 // with PoCL's vectorizer remarks on and a fresh kernel cache, and its
 // remarks must report a vectorized work-item loop and no loop left
 // unvectorized.  Negative control: a kernel calling the built-in sin, built
@@ -42,12 +42,13 @@ std::string remarks_of_run(const std::string& ggx_arguments, const fs::path& cac
     return text.str();
 }
 
-// The sample kernel with every field written.
-std::string remarks_of(const std::string& method, const std::string& precision, const fs::path& dir)
+// The sample kernel with every field written, its uniforms from `sequence`.
+std::string remarks_of(const std::string& method, const std::string& precision, const fs::path& dir,
+                       const std::string& sequence = "philox")
 {
-    return remarks_of_run("sample --method " + method + " --precision " + precision +
-                              " -n 4096 --fields m,o,pdf_m,pdf_o,weight --out " + (dir / "v.npy").string(),
-                          dir / (method + precision), dir);
+    return remarks_of_run("sample --method " + method + " --precision " + precision + " --sequence " + sequence +
+                              " -n 4096 --fields m,o,pdf_m,pdf_o,weight,u --out " + (dir / "v.npy").string(),
+                          dir / (method + precision + sequence), dir);
 }
 
 // The fused estimator and the world-space sample kernel, through `ggx bench`.
@@ -104,6 +105,12 @@ TEST_CASE("every bulk sample kernel vectorizes on PoCL in both precision modes")
             CHECK(remarks.find("vectorized loop (vectorization width") != std::string::npos);
             CHECK(remarks.find("loop not vectorized") == std::string::npos);
         }
+    for (ggxcl::Method method : ggxcl::all_methods) {  // the Sobol points in the default mode
+        std::string remarks = remarks_of(std::string(ggxcl::method_name(method)), "precise", dir, "sobol");
+        CAPTURE(ggxcl::method_name(method));
+        CHECK(remarks.find("vectorized loop (vectorization width") != std::string::npos);
+        CHECK(remarks.find("loop not vectorized") == std::string::npos);
+    }
     for (ggxcl::Method method : ggxcl::all_methods) {
         std::string remarks = furnace_and_world_remarks(std::string(ggxcl::method_name(method)), dir);
         CAPTURE(ggxcl::method_name(method));

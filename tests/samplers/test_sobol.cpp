@@ -1,7 +1,7 @@
 // test_sobol.cpp - the Owen-scrambled Sobol uniforms (kernels/ggx_sobol.h):
 //  - device words are bit-identical to the host reference's independent
 //    construction (reference/ggx_sobol.cpp), for several seeds and index
-//    ranges, across the 2^32 block boundary;
+//    ranges, across the 2^32 block boundary, with either bit reversal;
 //  - the first 2^m points, from index 0, form a (0, m, 2)-net for m = 1..16
 //    and several seeds: every elementary interval of area 2^-m holds exactly
 //    one point (so do the unscrambled points); negative control: Philox
@@ -32,10 +32,14 @@ __kernel void sobol_words(ulong seed, ulong first, __global uint* out)
 
 using Words = std::vector<std::array<std::uint32_t, 2>>;
 
-Words device_words(std::uint32_t seed, std::uint64_t first, std::size_t n)
+// With `byte_reversal`, the bit reversal that Oclgrind needs (-DGGX_NO_BITREVERSE=1).
+Words device_words(std::uint32_t seed, std::uint64_t first, std::size_t n, bool byte_reversal = false)
 {
     auto& s = ggxtest::sampler();
-    static cl::Program program = ggxcl::build_user_program(s.context(), s.device(), sobol_kernel);
+    static cl::Program plain = ggxcl::build_user_program(s.context(), s.device(), sobol_kernel);
+    static cl::Program bytes =
+        ggxcl::build_user_program(s.context(), s.device(), sobol_kernel, "-DGGX_NO_BITREVERSE=1");
+    cl::Program& program = byte_reversal ? bytes : plain;
     cl::Kernel kernel(program, "sobol_words");
     cl::Buffer out(s.context(), CL_MEM_WRITE_ONLY, 2 * n * sizeof(cl_uint));
     kernel.setArg(0, cl_ulong(seed));
@@ -74,10 +78,10 @@ TEST_CASE("device Sobol words equal the host reference's, bit for bit")
         for (std::uint64_t first : {std::uint64_t(0), (std::uint64_t(1) << 32) - 2048, std::uint64_t(1) << 63}) {
             CAPTURE(seed);
             CAPTURE(first);
-            const Words device = device_words(seed, first, 4096);
+            const Words device = device_words(seed, first, 4096), by_bytes = device_words(seed, first, 4096, true);
             std::size_t differ = 0;
             for (std::size_t k = 0; k < device.size(); ++k)
-                differ += device[k] != ggxref::sobol_words(seed, first + k);
+                differ += device[k] != ggxref::sobol_words(seed, first + k) || by_bytes[k] != device[k];
             CHECK(differ == 0);
         }
 }

@@ -8,7 +8,6 @@
 // and the report (docs/BENCHMARKS.md is made by it).
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -23,18 +22,11 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "plot.hpp"
+#include "report_text.hpp"
 
 namespace ggxapp {
 
 namespace {
-
-std::string today()
-{
-    std::time_t now = std::time(nullptr);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-    return text;
-}
 
 BenchRow row_of(const std::string& method, const std::string& precision, const std::string& job, Timing timing)
 {
@@ -139,14 +131,6 @@ void measure_native_if_available(const BenchPlan& plan, BenchReport& report)
     }
 }
 
-std::string relative_to(const std::string& path, const std::string& markdown)
-{
-    if (markdown.empty())
-        return path;
-    std::filesystem::path folder = std::filesystem::absolute(markdown).parent_path();
-    return std::filesystem::relative(std::filesystem::absolute(path), folder).string();
-}
-
 void write_outputs(const BenchCommand& cmd, const BenchReport& report)
 {
     std::string csv = bench_csv(report);
@@ -175,7 +159,7 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
             check_writable_folder(path == cmd.csv ? "--csv" : path == cmd.markdown ? "--markdown" : "--charts", path);
     BenchReport report = plan.settings;
     report.command = command_line();
-    report.date = today();
+    report.date = utc_now();
     report.machine = machine_description();
     ggxcl::Sampler sampler(cmd.device);
     report.device = sampler.device_name();

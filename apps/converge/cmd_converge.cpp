@@ -1,0 +1,108 @@
+// cmd_converge.cpp - `ggx converge`: how fast each method's estimates
+// converge with each sequence of uniforms (philox, sobol): RMSE against the
+// sample count for integrals the reference knows exactly, the fitted slope,
+// and RMSE at equal time with the methods' speeds.  Prints the Markdown
+// report; --csv, --charts and --markdown write the data, the PNG charts and
+// the report.
+#include <filesystem>
+#include <iostream>
+
+#include "atomic_file.hpp"
+#include "cli_values.hpp"
+#include "commands.hpp"
+#include "converge_report.hpp"
+#include "plot.hpp"
+#include "report_text.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+void draw_charts(const ConvergeCommand& cmd, const std::string& csv, const std::string& speeds,
+                 const std::string& device)
+{
+    const std::string csv_path = cmd.charts + ".plot.csv", speeds_path = cmd.charts + ".speeds.csv";
+    write_text_file(csv_path, csv);
+    write_text_file(speeds_path, speeds);
+    try {
+        run_plot_script("plot_converge.py", {csv_path, speeds_path, cmd.charts, device});
+    } catch (...) {
+        std::filesystem::remove(csv_path);
+        std::filesystem::remove(speeds_path);
+        throw;
+    }
+    std::filesystem::remove(csv_path);
+    std::filesystem::remove(speeds_path);
+}
+
+void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan)
+{
+    for (const auto& [path, flag] : {std::pair{cmd.csv, "--csv"}, {cmd.markdown, "--markdown"}, {cmd.charts, "--charts"}})
+        if (!path.empty())
+            check_writable_folder(flag, path);
+    ggxcl::Sampler sampler(cmd.device);
+    std::cerr << "converge: " << plan.methods.size() * plan.sequences.size() * plan.configs.size() << " cells of "
+              << plan.randomizations << " streams of 2^" << plan.max_exponent << " samples on "
+              << sampler.device_name() << "\n";
+    std::vector<ConvergeSpeed> speeds = measure_speeds(sampler, plan);
+    std::vector<ConvergeCurve> curves = measure_convergence(sampler, plan);
+    const std::string csv = converge_csv(curves, plan.randomizations);
+    if (!cmd.csv.empty())
+        write_text_file(cmd.csv, csv);
+    ConvergeReportInfo info{command_line(), utc_now(), sampler.device_name(), "", plan.randomizations};
+    if (!cmd.charts.empty()) {
+        draw_charts(cmd, csv, speeds_csv(speeds), info.device);
+        info.charts_prefix = relative_to(cmd.charts, cmd.markdown);
+    }
+    const std::string md = converge_markdown(info, plan, curves, speeds);
+    if (!cmd.markdown.empty())
+        write_text_file(cmd.markdown, md);
+    std::cout << md;
+}
+
+// The streams the command draws, for tests and fuzz/fuzz_cli.
+std::vector<Batch> converge_batches(const ConvergePlan& plan)
+{
+    std::vector<Batch> batches;
+    for (ggxcl::Method method : plan.methods)
+        for (ggxcl::Sequence sequence : plan.sequences)
+            for (const ConvergeConfig& config : plan.configs)
+                batches.push_back({converge_params(method, sequence, config, plan.precision),
+                                   {plan.seed, 0, std::uint64_t(1) << plan.max_exponent}});
+    return batches;
+}
+
+} // namespace
+
+Prepare add_converge_command(CLI::App& app)
+{
+    auto s = std::make_shared<ConvergeCommand>();
+    CLI::App* cmd = app.add_subcommand("converge", "Error against sample count of every method's estimates with "
+                                                   "independent (philox) and Sobol uniforms");
+    cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
+    cmd->add_option("--sequences", s->sequences, "comma-separated sequences: philox, sobol")->capture_default_str();
+    cmd->add_option("--integrands", s->integrands, "comma-separated: albedo (L = 1), lobe (max(0, o.l)^16 about the "
+                                                   "mirror direction), disk (a 10-degree disk light)")->capture_default_str();
+    cmd->add_option("--alphas", s->alphas, "comma-separated roughnesses, 0.01..2")->capture_default_str();
+    cmd->add_option("--thetas", s->thetas, "comma-separated view angles in degrees, 0..89")->capture_default_str();
+    cmd->add_option("--min-n", s->min_n, "smallest sample count, a power of two")->capture_default_str();
+    cmd->add_option("--max-n", s->max_n, "largest sample count, a power of two up to 2^24")->capture_default_str();
+    cmd->add_option("--randomizations", s->randomizations, "independent streams (seeds) per point, 4..4096")
+        ->capture_default_str();
+    cmd->add_option("--seed", s->seed, "seed of the first stream")->capture_default_str();
+    cmd->add_option("--precision", s->precision, "precise or relaxed")->capture_default_str();
+    cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
+    cmd->add_option("--speed-n", s->speed_n, "samples per timed launch of the speed runs")->capture_default_str();
+    cmd->add_flag("--no-speed", s->no_speed, "skip the speed runs (and the chart at equal time)");
+    cmd->add_option("--csv", s->csv, "write every point of every curve to this CSV file");
+    cmd->add_option("--charts", s->charts, "write PREFIX-<integrand>.png and PREFIX-time.png");
+    cmd->add_option("--markdown", s->markdown, "write the report to this Markdown file");
+    return [cmd, s]() -> std::optional<Work> {
+        if (!*cmd)
+            return std::nullopt;
+        ConvergePlan plan = plan_convergence(*s);
+        return Work{[s, plan] { run_converge(*s, plan); }, converge_batches(plan)};
+    };
+}
+
+} // namespace ggxapp

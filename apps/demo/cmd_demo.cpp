@@ -53,6 +53,10 @@ std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult
           "angle, against the counts its pdf predicts (chi-square, sparse bins pooled). Throughput is device "
           "sampling and binning in "
        << demo.options.precision << " mode" << (demo.options.precision == "precise" ? " (the default)" : "")
+       << ", uniforms from the " << demo.options.sequence << " sequence"
+       << (demo.options.sequence == "philox" ? " (the default)"
+                                             : " (a net spreads its points more evenly than independent draws, so "
+                                               "the chi-square statistic runs below its law and p-values near 1)")
        << ".\n\n"
        << "| method | chi-square | dof | p-value | samples/s | files |\n|---|---|---|---|---|---|\n";
     for (const MethodResult& r : results) {

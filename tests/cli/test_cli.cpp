@@ -146,6 +146,7 @@ TEST_CASE("ggx demo writes clouds, histograms and a summary page for every metho
         CHECK(page.find("| " + std::string(method) + " |") != std::string::npos);
     }
     CHECK(page.find("binning in precise mode (the default)") != std::string::npos);  // the mode of the throughput
+    CHECK(page.find("uniforms from the philox sequence (the default)") != std::string::npos);
     fs::remove_all(dir);
 }
 

@@ -2,8 +2,8 @@
 // (SampleParams::sequence):
 //  - with Sobol points every method matches the double-precision reference
 //    fed the reference's own Sobol uniforms, sample by sample, with the
-//    bounds of test_per_sample; the u field is bit for bit the reference's
-//    uniforms, for philox and sobol;
+//    bounds of test_per_sample but 2e-2 for the worst pdf (below); the u
+//    field is bit for bit the reference's uniforms, for philox and sobol;
 //  - the Sobol stream is the same whatever the chunk size or the split into
 //    ranges (sample k is point k), and the first 2^m samples of a stream
 //    are a (0, m, 2)-net in the u the kernels used;
@@ -25,6 +25,12 @@ using ggxcl::Sequence;
 
 constexpr std::uint64_t samples_per_config = 1024;
 constexpr std::uint64_t seed = 977;
+
+// The worst sample's pdf bound is twice test_per_sample's: a Sobol point
+// lands near caps' cap rim (alpha (0.2, 2), view 60 degrees, u2 = 0.9985),
+// where c + v cancels and i.m = 2.2e-3 carries its absolute rounding into
+// pdf_m = 4 (i.m) pdf_o: 1.4e-2 relative on rusticl (no fma), 3e-3 on PoCL.
+constexpr ggxtest::ErrorBound sobol_pdf_bound{"relative error of pdf_m and pdf_o", 2e-4, 2e-2};
 
 ggxcl::SampleParams caps_at(double alpha, double theta, Sequence sequence)
 {
@@ -68,7 +74,8 @@ TEST_CASE("with Sobol points every method matches the reference sample by sample
                                      Sequence::sobol);
         }
         CHECK(differing == 0);
-        ggxtest::check_sample_errors(std::string(ggxref::method_name(method)) + " sobol", errors);
+        ggxtest::check_sample_errors(std::string(ggxref::method_name(method)) + " sobol", errors,
+                                     ggxtest::angle_bound, sobol_pdf_bound);
     }
 }
 

@@ -38,7 +38,7 @@ GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GG
 {
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
     float u1, u2;
-    ggx_bulk_uniforms(seed, first + j, p, &u1, &u2);
+    ggx_bulk_uniforms(seed, first, j, p, &u1, &u2);
     ggx_sample s = ggx_bulk_sample_of(p, u1, u2);
 #if GGX_WRITE_M
     ggx_store3(m_out, j, stride, s.m);

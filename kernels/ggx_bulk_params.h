@@ -109,17 +109,17 @@ GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
     return p;
 }
 
-// The two uniforms of sample `index` of stream `seed`: the caller's (read
-// into p), or the sequence's.
-GGX_INLINE void ggx_bulk_uniforms(ulong seed, ulong index, ggx_params p, float* u1, float* u2)
+// The two uniforms of sample first + j of stream `seed` (j < 2^32): the
+// caller's (read into p), or the sequence's.
+GGX_INLINE void ggx_bulk_uniforms(ulong seed, ulong first, uint j, ggx_params p, float* u1, float* u2)
 {
 #if GGX_PER_SAMPLE_UNIFORMS
     *u1 = p.u1;
     *u2 = p.u2;
 #elif GGX_SEQUENCE == GGX_SEQUENCE_SOBOL
-    ggx_sobol_uniforms(seed, index, u1, u2);
+    ggx_sobol_launch_uniforms(seed, first, j, u1, u2);
 #else
-    ggx_uniforms(seed, index, u1, u2);
+    ggx_uniforms(seed, first + j, u1, u2);
 #endif
 }
 
@@ -152,11 +152,11 @@ GGX_INLINE ggx_sample ggx_bulk_sample_of(ggx_params p, float u1, float u2)
     return s;
 }
 
-// Sample `index` of stream `seed` with parameters p.
-GGX_INLINE ggx_sample ggx_bulk_sample(ulong seed, ulong index, ggx_params p)
+// Sample first + j of stream `seed` with parameters p.
+GGX_INLINE ggx_sample ggx_bulk_sample(ulong seed, ulong first, uint j, ggx_params p)
 {
     float u1, u2;
-    ggx_bulk_uniforms(seed, index, p, &u1, &u2);
+    ggx_bulk_uniforms(seed, first, j, p, &u1, &u2);
     return ggx_bulk_sample_of(p, u1, u2);
 }
 

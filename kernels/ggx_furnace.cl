@@ -30,7 +30,7 @@ __kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride,
         uint index = item * GGX_FURNACE_PER_ITEM + k;
         uint j = min(index, count - 1u);  // past `count`: recompute the last sample, then count it as 0
         ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
-        ggx_sample s = ggx_bulk_sample(seed, first + j, p);
+        ggx_sample s = ggx_bulk_sample(seed, first, j, p);
         float w = index < count ? s.weight : 0.0f;
         w_total += w;
         w2_total += w * w;

@@ -80,7 +80,7 @@ GGX_INLINE uint ggx_bin_of(ggx_vec3 d)
 GGX_INLINE uint ggx_sample_bin(ulong seed, ulong first, uint j, uint count, GGX_PARAM_ARGS)
 {
     ggx_params p = ggx_load_params(j, count, GGX_PARAM_VALUES);
-    ggx_sample s = ggx_bulk_sample(seed, first + j, p);
+    ggx_sample s = ggx_bulk_sample(seed, first, j, p);
     return ggx_bin_of(GGX_BIN_M ? s.m : s.o);
 }
 

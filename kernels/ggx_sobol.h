@@ -105,13 +105,21 @@ GGX_INLINE uint ggx_sobol_key(uint seed, uint dimension, uint block)
     return ggx_mix32(seed ^ ggx_mix32(block ^ ggx_mix32(dimension + 0x9e3779b9u)));
 }
 
+// The two scrambled 32-bit coordinates of point k (the index's low word)
+// with the scramble keys of its block.  van der Corput's digits are the bits
+// of k themselves.
+GGX_INLINE void ggx_sobol_words_keyed(uint k, uint key1, uint key2, uint* w1, uint* w2)
+{
+    *w1 = ggx_owen_scramble_digits(k, key1);
+    *w2 = ggx_owen_scramble_digits(ggx_sobol_second_digits(k), key2);
+}
+
 // The two scrambled 32-bit coordinates of sample `index` of stream `seed`.
 GGX_INLINE void ggx_sobol_words(ulong seed, ulong index, uint* w1, uint* w2)
 {
-    uint k = (uint)index, block = (uint)(index >> 32);
-    // van der Corput's digits are the bits of k themselves.
-    *w1 = ggx_owen_scramble_digits(k, ggx_sobol_key((uint)seed, 0u, block));
-    *w2 = ggx_owen_scramble_digits(ggx_sobol_second_digits(k), ggx_sobol_key((uint)seed, 1u, block));
+    uint block = (uint)(index >> 32);
+    ggx_sobol_words_keyed((uint)index, ggx_sobol_key((uint)seed, 0u, block), ggx_sobol_key((uint)seed, 1u, block), w1,
+                          w2);
 }
 
 // The two uniforms of sample `index` in stream `seed` from the scrambled Sobol points.
@@ -119,6 +127,23 @@ GGX_INLINE void ggx_sobol_uniforms(ulong seed, ulong index, float* u1, float* u2
 {
     uint w1, w2;
     ggx_sobol_words(seed, index, &w1, &w2);
+    *u1 = ggx_word_to_unit(w1);
+    *u2 = ggx_word_to_unit(w2);
+}
+
+// The same for sample first + j of a launch of fewer than 2^32 samples,
+// which crosses at most one 2^32 block: the keys of both candidate blocks
+// depend on (seed, first) alone, so a compiler computes them once per launch
+// instead of once per sample (the points cost a third less on PoCL).
+GGX_INLINE void ggx_sobol_launch_uniforms(ulong seed, ulong first, uint j, float* u1, float* u2)
+{
+    uint block = (uint)(first >> 32);
+    uint key1 = ggx_sobol_key((uint)seed, 0u, block), key2 = ggx_sobol_key((uint)seed, 1u, block);
+    uint next1 = ggx_sobol_key((uint)seed, 0u, block + 1u), next2 = ggx_sobol_key((uint)seed, 1u, block + 1u);
+    ulong index = first + j;
+    int next = (uint)(index >> 32) != block;
+    uint w1, w2;
+    ggx_sobol_words_keyed((uint)index, next ? next1 : key1, next ? next2 : key2, &w1, &w2);
     *u1 = ggx_word_to_unit(w1);
     *u2 = ggx_word_to_unit(w2);
 }

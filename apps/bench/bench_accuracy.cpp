@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ggx_quadrature.hpp"
 #include "reference_bridge.hpp"
 
 namespace ggxapp {
@@ -18,11 +19,13 @@ ggxref::Vec3 as_double(const ggxcl::Vec3& v)
     return {v.x, v.y, v.z};
 }
 
-ggxcl::SampleParams params_of(ggxcl::Method method, ggxcl::Precision precision, double alpha, double cos_theta)
+ggxcl::SampleParams params_of(ggxcl::Method method, ggxcl::Precision precision, double alpha, double cos_theta,
+                              ggxcl::Sequence sequence = ggxcl::Sequence::philox)
 {
     ggxcl::SampleParams p;
     p.method = method;
     p.precision = precision;
+    p.sequence = sequence;
     p.alpha_x = p.alpha_y = float(alpha);
     p.view = ggxcl::view_from_angles(std::acos(cos_theta) * 180.0 / 3.14159265358979323846, 0.0);
     return ggxcl::normalized(p);
@@ -33,8 +36,7 @@ void add_errors(const ggxcl::SampleSet& d, ggxcl::Method method, const ggxref::P
 {
     ggxref::Method ref_method = ggxbridge::reference_method(method);
     for (std::size_t j = 0; j < d.count; ++j) {
-        std::array<double, 2> u = ggxref::uniforms(accuracy_seed, j);
-        ggxref::Sample r = ggxref::sample(ref_method, ref, u[0], u[1]);
+        ggxref::Sample r = ggxref::sample(ref_method, ref, d.u[j], d.u[d.count + j]);  // the device's own uniforms
         double angle = std::max(angle_between(as_double(d.m_at(j)), r.m), angle_between(as_double(d.o_at(j)), r.o));
         if (!std::isfinite(angle) || !std::isfinite(d.pdf_m[j]) || !std::isfinite(d.pdf_o[j])) {
             ++non_finite;
@@ -78,14 +80,16 @@ std::vector<ggxcl::SampleParams> accuracy_configs(ggxcl::Method method, ggxcl::P
     return configs;
 }
 
-NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision)
+NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+                               ggxcl::Sequence sequence)
 {
     std::vector<double> angles, pdfs;
     NumericalError error;
-    for (const ggxcl::SampleParams& p : accuracy_configs(method, precision)) {
+    for (ggxcl::SampleParams p : accuracy_configs(method, precision)) {
+        p.sequence = sequence;
         ggxcl::SampleSet d = sampler.generate(p, {accuracy_seed, 0, accuracy_samples},
                                               {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_m,
-                                               ggxcl::Field::pdf_o});
+                                               ggxcl::Field::pdf_o, ggxcl::Field::u});
         add_errors(d, method, ggxbridge::reference_params(p), angles, pdfs, error.non_finite);
     }
     percentiles(angles, error.angle_p99, error.angle_max);
@@ -108,6 +112,33 @@ SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, ggxcl::Method metho
     scene.variance /= double(size) * size;
     scene.mean_albedo /= double(size) * size;
     return scene;
+}
+
+std::vector<double> albedo_table(int size)
+{
+    std::vector<double> exact;
+    for (int a = 0; a < size; ++a)
+        for (int v = 0; v < size; ++v)
+            exact.push_back(ggxref::albedo(ggxbridge::reference_params(
+                params_of(ggxcl::Method::caps, ggxcl::Precision::precise, (a + 0.5) / size, (v + 0.5) / size))));
+    return exact;
+}
+
+double albedo_table_rmse(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+                         ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
+                         const std::vector<double>& exact)
+{
+    double squared = 0.0;
+    std::uint64_t seed = 5000;
+    for (int a = 0; a < size; ++a)
+        for (int v = 0; v < size; ++v) {
+            ggxcl::SampleParams p = params_of(method, precision, (a + 0.5) / size, (v + 0.5) / size, sequence);
+            for (int s = 0; s < streams; ++s) {
+                const double e = sampler.furnace(p, {++seed, 0, samples_per_cell}).mean() - exact[a * size + v];
+                squared += e * e;
+            }
+        }
+    return std::sqrt(squared / (double(size) * size * streams));
 }
 
 } // namespace ggxapp

@@ -7,7 +7,9 @@
 //  - Statistical: the per-sample variance of the white-furnace (albedo)
 //    estimator, averaged over the cells of a size x size table of views
 //    (cos theta = (k + 1/2)/size) and roughnesses (alpha = (k + 1/2)/size):
-//    the table a renderer precomputes for energy compensation.
+//    the table a renderer precomputes for energy compensation; and the
+//    table's RMSE measured against its exact albedos at a sample count.
+//  Both take the device's uniforms from the u field, so any sequence works.
 #pragma once
 
 #include <cstdint>
@@ -25,7 +27,8 @@ struct NumericalError {
     std::uint64_t non_finite = 0;
 };
 
-NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision);
+NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+                               ggxcl::Sequence sequence = ggxcl::Sequence::philox);
 
 // What the device and the native baseline are both measured on: the 9
 // configurations (normalized parameters), samples 0 .. 2^13 - 1 of this seed.
@@ -46,5 +49,16 @@ struct SceneVariance {
 
 SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
                                     int size, std::uint64_t samples_per_cell);
+
+// The exact albedo of every cell of the size x size table (reference
+// quadrature), cell a * size + v.
+std::vector<double> albedo_table(int size);
+
+// The table's RMSE against `exact` from `samples_per_cell` samples per cell
+// of `sequence`, over `streams` independent streams (seeds; for Sobol points
+// independent scrambles) of each cell: measured, for any sequence.
+double albedo_table_rmse(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+                         ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
+                         const std::vector<double>& exact);
 
 } // namespace ggxapp

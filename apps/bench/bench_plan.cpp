@@ -40,7 +40,10 @@ BenchPlan plan_bench(const BenchCommand& cmd)
 {
     BenchPlan plan{parse_name_list("--methods", cmd.methods, method_names()),
                    parse_name_list("--precisions", cmd.precisions, {"precise", "relaxed"}),
-                   parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world", "per-sample"}), {}, {}};
+                   parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world", "per-sample"}), {}, {}, {}};
+    for (const std::string& name : parse_name_list("--sequences", cmd.sequences, {"philox", "sobol"}))
+        if (name != "philox")  // always timed
+            plan.sequences.push_back(name);
     plan_settings(cmd, plan.settings);
     std::array<float, 2> alpha = parse_alpha("--alpha", cmd.alpha);
     if (alpha[0] != alpha[1])

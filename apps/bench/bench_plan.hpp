@@ -16,6 +16,7 @@ namespace ggxapp {
 struct BenchCommand {
     std::string alpha = "0.3", theta = "60", device;
     std::string methods = "all", precisions = "precise,relaxed", jobs = "write,furnace,world,per-sample";
+    std::string sequences = "philox,sobol";
     std::string count = "2^24", native_count = "2^22", repeats = "7", threads = "2";
     std::string scene = "16", cell_samples = "2^14", budget_ms = "1";
     bool no_native = false, no_accuracy = false, no_startup = false;
@@ -24,6 +25,7 @@ struct BenchCommand {
 
 struct BenchPlan {
     std::vector<std::string> methods, precisions, jobs;
+    std::vector<std::string> sequences;  // besides philox: timed in precise mode, write and furnace jobs
     ggxcl::SampleParams base;  // the speed runs' roughness and view
     BenchReport settings;      // count, native_count, repeats, threads, scene_size,
                                // samples_per_cell, budget_ms, alpha, theta

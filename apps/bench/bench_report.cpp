@@ -1,6 +1,7 @@
 // bench_report.cpp - CSV and Markdown of `ggx bench`, with the target checks.
 #include "bench_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -25,10 +26,10 @@ const std::vector<std::string>& method_order()
 const char* const device_modes[] = {"precise", "relaxed"};
 
 const BenchRow* find_row(const BenchReport& r, const std::string& method, const std::string& precision,
-                         const std::string& job)
+                         const std::string& job, const std::string& sequence = "philox")
 {
     for (const BenchRow& row : r.rows)
-        if (row.method == method && row.precision == precision && row.job == job)
+        if (row.method == method && row.precision == precision && row.job == job && row.sequence == sequence)
             return &row;
     return nullptr;
 }
@@ -274,7 +275,32 @@ void write_variance_table(std::ostream& md, const BenchReport& r)
         }
 }
 
+// Precise mode with each sequence: speed, numerical error and the albedo
+// table's RMSE at the budget, measured (the model's RMSE assumes independent
+// uniforms).
+void write_sequence_table(std::ostream& md, const BenchReport& r)
+{
+    md << "| method | sequence | write ns | fused ns | angle p99 (rad) | samples per cell | RMSE in "
+       << fixed(r.budget_ms, 1) << " ms, measured |\n|---|---|---|---|---|---|---|\n";
+    for (const std::string& m : method_order())
+        for (const char* sequence : {"philox", "sobol"}) {
+            const BenchRow* w = find_row(r, m, "precise", "write", sequence);
+            const BenchRow* f = find_row(r, m, "precise", "furnace", sequence);
+            if (!f || f->rmse_measured == 0)
+                continue;
+            md << "| " << m << " | " << sequence << " | " << ns_cell(w) << " | " << ns_cell(f) << " | "
+               << (w && w->has_error ? sci(w->error.angle_p99) : "–") << " | " << samples_at_budget(*f, r) << " | "
+               << sci(f->rmse_measured) << " |\n";
+        }
+}
+
 } // namespace
+
+std::uint64_t samples_at_budget(const BenchRow& row, const BenchReport& report)
+{
+    double cells = double(report.scene_size) * report.scene_size;
+    return std::max<std::uint64_t>(1, std::uint64_t(report.budget_ms * 1e6 / (cells * row.timing.median)));
+}
 
 double efficiency(const BenchRow& row)
 {
@@ -305,7 +331,7 @@ std::string bench_csv(const BenchReport& r)
     std::ostringstream csv;
     csv << std::setprecision(6)
         << "method,precision,job,ns_median,ns_min,ns_max,gsamples_per_s,angle_p99,angle_max,pdf_rel_p99,pdf_rel_max,"
-           "albedo_variance,mean_albedo,efficiency,rmse_at_budget\n";
+           "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured\n";
     for (const BenchRow& row : r.rows) {
         csv << row.method << "," << row.precision << "," << row.job << "," << row.timing.median << ","
             << row.timing.low << "," << row.timing.high << "," << 1.0 / row.timing.median << ",";
@@ -315,14 +341,17 @@ std::string bench_csv(const BenchReport& r)
         else
             csv << ",,,,";
         if (row.variance > 0)
-            csv << row.variance << "," << row.mean_albedo << "," << efficiency(row) << "," << rmse_at_budget(row, r)
-                << "\n";
+            csv << row.variance << "," << row.mean_albedo << "," << efficiency(row) << "," << rmse_at_budget(row, r);
         else
-            csv << ",,,\n";
+            csv << ",,,";
+        csv << "," << row.sequence << ",";
+        if (row.rmse_measured > 0)
+            csv << row.rmse_measured;
+        csv << "\n";
     }
     if (r.has_ceiling)
         csv << "caps,native-vectorized,furnace," << r.ceiling.median << "," << r.ceiling.low << "," << r.ceiling.high
-            << "," << 1.0 / r.ceiling.median << ",,,,,,,,\n";
+            << "," << 1.0 / r.ceiling.median << ",,,,,,,,,philox,\n";
     return csv.str();
 }
 
@@ -361,6 +390,15 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
     if (!speed_rmse_png.empty())
         md << "![ns per sample against RMSE at equal time](" << speed_rmse_png << ")\n\n";
     write_variance_table(md, r);
+    md << "\n## Sequences: independent uniforms against Sobol points\n\nPrecise mode with each sequence of "
+          "uniforms (SampleParams::sequence): the write and fused jobs' speed, the numerical error (each sample "
+          "against the reference on the uniforms it used), and the albedo table's RMSE per cell when the whole "
+          "table gets "
+       << r.budget_ms << " ms at that fused speed, measured against the table's exact albedos over "
+       << r.rmse_streams << " independent streams per cell (for Sobol points, scrambles); the variance model above "
+          "holds for independent uniforms only. The RMSE chart plots Sobol rows with hollow markers at their "
+          "measured RMSE.\n\n";
+    write_sequence_table(md, r);
     if (r.startup.measured)
         md << "\n## Start-up\n\nProcess start to first result (`ggx sample -n 1`): " << fixed(r.startup.cold_ms, 0)
            << " ms with an empty kernel cache, " << fixed(r.startup.warm_ms.median, 0) << " ms warm (median; "

@@ -14,11 +14,13 @@ namespace ggxapp {
 
 struct BenchRow {
     std::string method, precision, job;
+    std::string sequence = "philox";  // where the uniforms came from (precise rows also with sobol)
     Timing timing;                // ns per sample
     bool has_error = false;       // numerical error measured
     NumericalError error;
     double variance = 0;          // albedo estimator variance per sample (0: not measured)
     double mean_albedo = 0;       // mean over the table's cells of the albedo estimate
+    double rmse_measured = 0;     // precise furnace rows: the table's RMSE at the budget, measured (0: not)
 };
 
 struct StartupTiming {
@@ -52,6 +54,7 @@ struct BenchReport {
     int repeats = 0, threads = 0, scene_size = 0;
     std::uint64_t samples_per_cell = 0;
     double budget_ms = 1.0;       // time budget of the whole albedo table for the RMSE column
+    int rmse_streams = 8;         // independent streams per cell of the measured RMSE
     double alpha = 0, theta = 0;  // the speed runs' configuration
     std::vector<BenchRow> rows;
     bool has_ceiling = false;
@@ -63,7 +66,11 @@ struct BenchReport {
 };
 
 // 1 / (variance x seconds per sample), and the RMSE of each cell of the table
-// after the budget is spent on it: sqrt(variance / (budget / (cells x time))).
+// after the budget is spent on it: sqrt(variance / (budget / (cells x time))),
+// the Monte Carlo model, true for independent uniforms only (rmse_measured
+// holds the measured one, which Sobol points need).
+// The samples per cell the budget buys at the row's speed.
+std::uint64_t samples_at_budget(const BenchRow& row, const BenchReport& report);
 double efficiency(const BenchRow& row);
 double rmse_at_budget(const BenchRow& row, const BenchReport& report);
 

@@ -50,6 +50,11 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
                 tasks.push_back({job_named(job_text), p});
                 if (mode == "precise" && job_text == "write")  // the guards' cost, side by side
                     tasks.push_back({BenchJob::write, p, false});
+                if (mode == "precise" && (job_text == "write" || job_text == "furnace"))
+                    for (const std::string& sequence : plan.sequences) {  // the other sequences, side by side
+                        p.sequence = ggxcl::parse_sequence(sequence);
+                        tasks.push_back({job_named(job_text), p});
+                    }
             }
     const bool writes = std::find(plan.jobs.begin(), plan.jobs.end(), "write") != plan.jobs.end();
     if (writes)  // the write job's ceiling, once: the same bytes stored, nothing computed
@@ -60,6 +65,7 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
     report.device_clock = timer.clock_description();
     if (timer.wall_clock())
         std::cerr << "device rows timed by wall clock: " << report.device_clock << "\n";
+    std::vector<double> exact;  // the albedo table's exact values, once
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         const ggxcl::SampleParams& p = tasks[t].params;
         std::string precision(ggxcl::precision_name(p.precision));
@@ -70,19 +76,26 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
         const bool guarded = tasks[t].guards;
         BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), guarded ? precision : precision + "-unguarded",
                               job_name(tasks[t].job), timings[t]);
+        row.sequence = std::string(ggxcl::sequence_name(p.sequence));
         if (!guarded) {  // measured for its speed only
             report.rows.push_back(row);
             continue;
         }
         if (!cmd.no_accuracy && tasks[t].job == BenchJob::write) {
             row.has_error = true;
-            row.error = numerical_error(sampler, p.method, p.precision);
+            row.error = numerical_error(sampler, p.method, p.precision, p.sequence);
         }
-        if (!cmd.no_accuracy && tasks[t].job == BenchJob::furnace) {
+        if (!cmd.no_accuracy && tasks[t].job == BenchJob::furnace && p.sequence == ggxcl::Sequence::philox) {
             SceneVariance scene =
                 albedo_scene_variance(sampler, p.method, p.precision, report.scene_size, report.samples_per_cell);
             row.variance = scene.variance;
             row.mean_albedo = scene.mean_albedo;
+        }
+        if (!cmd.no_accuracy && tasks[t].job == BenchJob::furnace && p.precision == ggxcl::Precision::precise) {
+            if (exact.empty())
+                exact = albedo_table(report.scene_size);
+            row.rmse_measured = albedo_table_rmse(sampler, p.method, p.precision, p.sequence, report.scene_size,
+                                                  samples_at_budget(row, report), report.rmse_streams, exact);
         }
         report.rows.push_back(row);
     }
@@ -108,7 +121,7 @@ void measure_native(const BenchPlan& plan, BenchReport& report)
             }
             for (const BenchRow& device : report.rows)
                 if (job == BenchJob::furnace && device.method == name && device.precision == "precise" &&
-                    device.job == "furnace")
+                    device.job == "furnace" && device.sequence == "philox")
                     row.variance = device.variance, row.mean_albedo = device.mean_albedo;
             std::cerr << "  " << name << " native " << job_text << ": " << row.timing.median << " ns\n";
             rows.push_back(row);
@@ -201,6 +214,8 @@ Prepare add_bench_command(CLI::App& app)
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
     cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
     cmd->add_option("--precisions", s->precisions, "comma-separated precision modes")->capture_default_str();
+    cmd->add_option("--sequences", s->sequences, "sequences of uniforms timed in precise mode (write and furnace "
+                                                 "jobs): philox (always), sobol")->capture_default_str();
     cmd->add_option("--jobs", s->jobs, "comma-separated jobs: write (m + pdf_m), furnace (fused estimator), "
                                        "world (world-space o), per-sample (a view and alpha per sample read)")->capture_default_str();
     cmd->add_option("-n,--count", s->count, "samples per timed device run")->capture_default_str();

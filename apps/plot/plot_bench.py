@@ -3,8 +3,10 @@
                    angle error of m and o against the reference (y);
   SPEED_RMSE.png:  ns per sample (x, fused estimator) against the RMSE of the
                    albedo table at equal time (y).
-One point per method and precision mode (color: method, marker: mode); both
-axes logarithmic.  Lower left is better.
+One point per method and precision mode (color: method, marker: mode), and
+in precise mode one per sequence of uniforms (filled: philox, hollow: sobol,
+whose RMSE is the measured one: the variance model holds for independent
+uniforms only); both axes logarithmic.  Lower left is better.
 
 Usage: python3 plot_bench.py BENCH.csv SPEED_ERROR.png SPEED_RMSE.png TITLE
 """
@@ -27,18 +29,30 @@ def rows_of(path):
         return list(csv.DictReader(f))
 
 
+def y_of(row, y_column):
+    """The row's y: Sobol rows' RMSE is measured, the others' from the variance model."""
+    if row.get("sequence") == "sobol" and y_column == "rmse_at_budget":
+        return row.get("rmse_measured", "")
+    return row[y_column]
+
+
 def chart(rows, job, y_column, y_label, title, out_path):
     fig, ax = plt.subplots(figsize=(8, 5.5), dpi=100)
     for row in rows:
-        if row["job"] != job or not row[y_column] or row["precision"] not in MARKERS:
+        y_text = y_of(row, y_column)
+        if row["job"] != job or not y_text or row["precision"] not in MARKERS:
             continue
-        x, y = float(row["ns_median"]), max(float(row[y_column]), 1e-9)
-        ax.scatter(x, y, color=COLORS[row["method"]], marker=MARKERS[row["precision"]], s=55)
-        ax.annotate(row["method"], (x, y), textcoords="offset points", xytext=(5, 4), fontsize=7)
+        x, y = float(row["ns_median"]), max(float(y_text), 1e-9)
+        hollow = row.get("sequence") == "sobol"
+        ax.scatter(x, y, marker=MARKERS[row["precision"]], s=55, facecolors="none" if hollow else COLORS[row["method"]],
+                   edgecolors=COLORS[row["method"]])
+        ax.annotate(row["method"] + (" sobol" if hollow else ""), (x, y), textcoords="offset points", xytext=(5, 4),
+                    fontsize=7)
     for method in METHODS:
         ax.scatter([], [], color=COLORS[method], marker="o", label=method)
     for mode, marker in MARKERS.items():
         ax.scatter([], [], color="black", marker=marker, label=mode)
+    ax.scatter([], [], facecolors="none", edgecolors="black", marker="o", label="precise, sobol")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("ns per sample (median)")

@@ -204,6 +204,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"bench --methods caps,", "--methods"},
         {"bench --precisions turbo", "--precisions"},
         {"bench --jobs write,read", "--jobs"},
+        {"bench --sequences philox,halton", "--sequences"},
         {"bench --alpha 0.2,0.5", "--alpha"},
         {"bench --theta 95", "--theta"},
         {"bench --scene 1", "--scene"},
@@ -248,20 +249,26 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
     REQUIRE(run.status == 0);
     const std::string csv = read_all(dir / "b.csv");
     CHECK(csv.rfind("method,precision,job,ns_median", 0) == 0);
-    int device_rows = 0, native_rows = 0, ceiling_rows = 0;
+    int device_rows = 0, native_rows = 0, ceiling_rows = 0, sobol_rows = 0, measured_rmse = 0;
     for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(csv)) {
         CAPTURE(row.line);
         CHECK(row.ns_median > 0.0);
-        device_rows += row.precision == "precise";
+        const bool sobol = row.line.find(",sobol,") != std::string::npos;
+        device_rows += row.precision == "precise" && !sobol;
+        sobol_rows += sobol;
+        measured_rmse += row.job == "furnace" && row.line.back() != ',';  // rmse_measured, the last column
         native_rows += row.precision == "native";
         ceiling_rows += row.precision == "native-vectorized";
     }
     CHECK(device_rows == 6);  // 2 methods x 3 jobs
+    CHECK(sobol_rows == 4);   // 2 methods x write and furnace in precise mode
+    CHECK(measured_rmse == 4);  // precise furnace rows, philox and sobol
     CHECK(native_rows == 6);
     CHECK(ceiling_rows == 1);
     std::string md = read_all(dir / "B.md");
     for (const char* part : {"## Targets", "## Speed (ns per sample)", "b-speed-error.png", "b-speed-rmse.png",
-                             "| caps | precise |", "| heitz | native |", "ggx bench --methods caps,heitz"})
+                             "| caps | precise |", "| heitz | native |", "ggx bench --methods caps,heitz",
+                             "## Sequences", "| caps | sobol |"})
         CHECK(md.find(part) != std::string::npos);
     for (const char* png : {"b-speed-error.png", "b-speed-rmse.png"})
         CHECK(read_all(dir / png).substr(1, 3) == "PNG");

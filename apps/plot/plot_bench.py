@@ -44,8 +44,10 @@ def chart(rows, job, y_column, y_label, title, out_path):
             continue
         x, y = float(row["ns_median"]), max(float(y_text), 1e-9)
         hollow = row.get("sequence") == "sobol"
-        ax.scatter(x, y, marker=MARKERS[row["precision"]], s=55, facecolors="none" if hollow else COLORS[row["method"]],
-                   edgecolors=COLORS[row["method"]])
+        if hollow:
+            ax.scatter(x, y, marker=MARKERS[row["precision"]], s=55, facecolors="none", edgecolors=COLORS[row["method"]])
+        else:
+            ax.scatter(x, y, marker=MARKERS[row["precision"]], s=55, color=COLORS[row["method"]])
         ax.annotate(row["method"] + (" sobol" if hollow else ""), (x, y), textcoords="offset points", xytext=(5, 4),
                     fontsize=7)
     for method in METHODS:

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <ggxcl/ggxcl.hpp>
+
 #include "cli_values.hpp"
 #include "npy_file.hpp"
 
@@ -21,12 +23,6 @@ std::string row_text(std::size_t row, double u1, double u2)
 }
 
 } // namespace
-
-float uniform_to_float(double u)
-{
-    float f = float(u);
-    return (f == 1.0f && u < 1.0) ? std::nextafter(1.0f, 0.0f) : f;
-}
 
 std::vector<std::array<float, 2>> read_uniforms(const std::string& path)
 {
@@ -45,7 +41,7 @@ std::vector<std::array<float, 2>> read_uniforms(const std::string& path)
         double u1 = array.data[2 * j], u2 = array.data[2 * j + 1];
         if (!(u1 >= 0.0 && u1 < 1.0 && u2 >= 0.0 && u2 < 1.0))
             throw UsageError("--uniforms", path + " " + row_text(j, u1, u2), "rows of two numbers in [0, 1)");
-        rows[j] = {uniform_to_float(u1), uniform_to_float(u2)};
+        rows[j] = {ggxcl::uniform_to_float(u1), ggxcl::uniform_to_float(u2)};
     }
     return rows;
 }

@@ -16,7 +16,4 @@ namespace ggxapp {
 // bad row with its values).
 std::vector<std::array<float, 2>> read_uniforms(const std::string& path);
 
-// The float of a double uniform in [0, 1), as read_uniforms rounds it.
-float uniform_to_float(double u);
-
 } // namespace ggxapp

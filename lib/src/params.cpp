@@ -103,6 +103,12 @@ std::string sequence_description(Sequence sequence)
     return "Philox2x32-10, key seed, counter (index lo, index hi); u1 word 0, u2 word 1";
 }
 
+float uniform_to_float(double u)
+{
+    const float f = float(u);
+    return (f == 1.0f && u < 1.0) ? std::nextafter(1.0f, 0.0f) : f;
+}
+
 Vec3 unit_vector(const Vec3& v)
 {
     double len = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);

@@ -202,6 +202,11 @@ TEST_CASE("the host refuses uniforms outside [0, 1), naming the first bad index"
     given.uniforms[6] = {std::numeric_limits<float>::quiet_NaN(), 0.5f};
     CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] { s.generate(p, {0, 0, 10}, {Field::m}, given); }) ==
           "invalid uniforms[6] 'nan,0.5': allowed is two numbers in [0, 1)");
+    // Doubles become floats in [0, 1): rounded, but never up to 1 (control: a plain cast gives 1).
+    CHECK(ggxcl::uniform_to_float(0.999999999) == std::nextafter(1.0f, 0.0f));
+    CHECK(float(0.999999999) == 1.0f);
+    CHECK(ggxcl::uniform_to_float(0.25) == 0.25f);
+    CHECK(ggxcl::uniform_to_float(0.1) == 0.1f);
     given.uniforms.resize(9);
     CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] { s.generate(p, {0, 0, 10}, {Field::m}, given); }) ==
           "invalid uniforms '9 entries': allowed is 0 (uniform) or one per sample (10)");

@@ -108,6 +108,11 @@ Vec3 unit_vector(const Vec3& v);
 // Largest count one range may hold (indices must not wrap around 2^64).
 void validate(const SampleRange& range);
 
+// A uniform in [0, 1) given as a double, as a float for PerSampleInputs:
+// rounded to the nearest float, and one below 1 that rounds up to 1 becomes
+// the largest float below 1 (1 - 2^-24), so that it stays in [0, 1).
+float uniform_to_float(double u);
+
 // Each non-empty per-sample vector must hold `count` entries of valid values
 // (uniforms finite and in [0, 1): the error names the first bad index).
 void validate(const PerSampleInputs& inputs, const SampleParams& params, std::uint64_t count);

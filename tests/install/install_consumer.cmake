@@ -6,7 +6,8 @@
 # `pkg-config --cflags --libs ggxcl` and against the build tree's export
 # (ggxcl_DIR = the build tree), runs both, and removes the prefix.
 # Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, LIBDIR, INCLUDEDIR, BINDIR,
-# GENERATOR, CXX, CXX_FLAGS, LINKER_FLAGS, SAMPLES, HAS_GGX.
+# GENERATOR, CXX, CXX_FLAGS, LINKER_FLAGS, SAMPLES, HAS_GGX, and PYTHON with
+# PYTHON_DIR (the package's folder under the prefix) when the module is built.
 cmake_minimum_required(VERSION 3.20)
 set(prefix ${WORK_DIR}/prefix)
 separate_arguments(cxx_flags UNIX_COMMAND "${CXX_FLAGS}")
@@ -106,5 +107,16 @@ step("configure consumer against the build tree" ${CMAKE_COMMAND} -S ${SOURCE_DI
 step("build consumer against the build tree" ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer-build -j2)
 step("run consumer (build tree)" ${WORK_DIR}/consumer-build/consumer)
 message(STATUS "${step_output}")
+
+# 6. The installed Python package imports from under the prefix and samples
+# (no semicolons in the code: step() would split it as a CMake list).
+if(PYTHON)
+  step("import the installed Python package" ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c
+    "import ggxcl\nd = ggxcl.Sampler().sample('caps', 1000, fields=('o',))\nassert d['o'].shape == (1000, 3)\nprint(ggxcl.__file__)")
+  if(NOT step_output MATCHES "^${prefix}/${PYTHON_DIR}/ggxcl/__init__.py")
+    fail("the Python package came from ${step_output}, not from ${prefix}/${PYTHON_DIR}")
+  endif()
+  message(STATUS "Python package: ${step_output}")
+endif()
 
 file(REMOVE_RECURSE ${WORK_DIR})

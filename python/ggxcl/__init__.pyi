@@ -1,0 +1,107 @@
+"""Type stubs of the ggxcl Python package (see __init__.py)."""
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+methods: Tuple[str, ...]
+
+class InvalidArgument(ValueError):
+    parameter: str
+
+class DeviceError(RuntimeError): ...
+
+class BuildError(DeviceError):
+    log: str
+
+class DeviceLost(DeviceError): ...
+
+Alpha = Union[float, Tuple[float, float], npt.NDArray[np.floating[Any]]]
+Vector = Union[Sequence[float], npt.NDArray[np.floating[Any]]]
+
+def devices() -> List[Dict[str, Any]]:
+    """Every OpenCL device: index, platform, name, type, label, compute_units, opencl_version."""
+
+class Sampler:
+    """GGX samplers on one OpenCL device (`device`: an index or part of a label; default GGXCL_DEVICE, else the first)."""
+
+    def __init__(self, device: Optional[Union[int, str]] = None) -> None: ...
+    @property
+    def device_name(self) -> str: ...
+    chunk_size: int
+    def sample(
+        self,
+        method: str,
+        n: int,
+        *,
+        alpha: Alpha = 0.3,
+        theta: float = 60.0,
+        phi: float = 0.0,
+        view: Optional[Vector] = None,
+        normal: Optional[Vector] = None,
+        seed: int = 0,
+        first: int = 0,
+        fields: Sequence[str] = ("m", "o", "pdf_m", "pdf_o", "weight"),
+        precision: Optional[str] = None,
+        sequence: str = "philox",
+        uniforms: Optional[npt.NDArray[np.floating[Any]]] = None,
+        world_space: bool = False,
+        out: Optional[Mapping[str, npt.NDArray[np.float32]]] = None,
+    ) -> Dict[str, npt.NDArray[np.float32]]:
+        """Samples first .. first + n - 1 of stream `seed` of `method`: a dict of float32 arrays, m and o (n, 3),
+        pdf_m, pdf_o, weight (n,), u (n, 2). The view is (theta, phi) in degrees unless `view` is given (a vector,
+        or (n, 3) per sample); alpha is a number, a pair (alpha_x, alpha_y) or an (n,) or (n, 2) array; `normal` is
+        caps-iso's and world space's normal; `uniforms` (n, 2) replaces the sequence (philox or sobol); `out` maps
+        fields to preallocated float32 arrays (a numpy.memmap too) that are filled instead."""
+    def pdf(
+        self,
+        method: str,
+        directions: npt.NDArray[np.floating[Any]],
+        *,
+        alpha: Alpha = 0.3,
+        theta: float = 60.0,
+        phi: float = 0.0,
+        view: Optional[Vector] = None,
+        normal: Optional[Vector] = None,
+        precision: Optional[str] = None,
+        world_space: bool = False,
+    ) -> npt.NDArray[np.float32]:
+        """The pdf (per steradian) of each direction (n, 3) for `method`'s sampler."""
+    def furnace(
+        self,
+        method: str,
+        n: int,
+        *,
+        alpha: Alpha = 0.3,
+        theta: float = 60.0,
+        phi: float = 0.0,
+        view: Optional[Vector] = None,
+        normal: Optional[Vector] = None,
+        seed: int = 0,
+        first: int = 0,
+        precision: Optional[str] = None,
+        sequence: str = "philox",
+    ) -> Dict[str, float]:
+        """The fused white-furnace estimator: {'mean': albedo estimate, 'variance': per sample, 'count'}."""
+    def histogram(
+        self,
+        method: str,
+        n: int,
+        *,
+        alpha: Alpha = 0.3,
+        theta: float = 60.0,
+        phi: float = 0.0,
+        normal: Optional[Vector] = None,
+        seed: int = 0,
+        first: int = 0,
+        bins_z: int = 32,
+        bins_phi: int = 64,
+        of: str = "o",
+        against: Optional[str] = None,
+        precision: Optional[str] = None,
+        sequence: str = "philox",
+    ) -> Dict[str, Any]:
+        """Counts of o (or m) in bins of equal solid angle over (cos theta, phi), binned on the device:
+        {'counts': (bins_z, bins_phi) uint64, 'expected': float64 from `against`'s pdf (default: the method's),
+        'chi_square', 'dof', 'p_value', 'non_finite'}."""

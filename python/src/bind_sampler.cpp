@@ -1,0 +1,253 @@
+// bind_sampler.cpp - the Python Sampler: each call checks its arguments,
+// releases the GIL while the device works, and between chunks takes it back
+// to check for signals, so Ctrl-C stops a long call with KeyboardInterrupt.
+#include "bind_sampler.hpp"
+
+#include <cstring>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "arrays.hpp"
+#include "ggx_quadrature.hpp"
+#include "ggx_stats.hpp"
+#include "reference_bridge.hpp"
+#include "request.hpp"
+
+namespace py = pybind11;
+
+namespace ggxpy {
+
+namespace {
+
+
+// Raises KeyboardInterrupt (or what a signal handler raised) in the middle of a call.
+void check_signals()
+{
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0)
+        throw py::error_already_set();
+}
+
+std::vector<ggxcl::Field> fields_of(const py::object& fields)
+{
+    std::vector<ggxcl::Field> list;
+    for (const py::handle item : py::reinterpret_borrow<py::iterable>(fields)) {
+        ggxcl::Field f = ggxcl::parse_field(item.cast<std::string>());
+        for (ggxcl::Field seen : list)
+            if (seen == f)
+                throw ggxcl::InvalidArgument("fields", std::string(py::repr(fields)), "each field at most once");
+        list.push_back(f);
+    }
+    if (list.empty())
+        throw ggxcl::InvalidArgument("fields", "()", "at least one of " + ggxcl::field_list());
+    return list;
+}
+
+// Copies a planar chunk of `field` into rows [offset, offset + count) of `out`.
+void copy_rows(const ggxcl::SampleSet& chunk, ggxcl::Field field, std::uint64_t offset, float* out)
+{
+    const std::vector<float>& planes = chunk.column_source(field);
+    const int columns = ggxcl::field_columns(field);
+    for (std::uint64_t j = 0; j < chunk.count; ++j)
+        for (int c = 0; c < columns; ++c)
+            out[(offset + j) * columns + c] = planes[c * chunk.count + j];
+}
+
+py::dict sample(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first,
+                const py::object& fields, const py::object& out)
+{
+    if (args.count == 0)
+        throw ggxcl::InvalidArgument("n", "0", "at least 1 sample");
+    const Request r = make_request(args);
+    const std::vector<ggxcl::Field> list = fields_of(fields);
+    py::dict result;
+    std::vector<std::pair<ggxcl::Field, float*>> targets;
+    for (ggxcl::Field f : list) {
+        py::array_t<float> a = output_array(out, f, args.count);
+        targets.push_back({f, a.mutable_data()});
+        result[py::str(std::string(ggxcl::field_name(f)))] = a;
+    }
+    {
+        py::gil_scoped_release released;
+        s.generate_chunks(r.params, {seed, first, args.count}, ggxcl::FieldSet(list),
+                          [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
+                              for (const auto& [field, data] : targets)
+                                  copy_rows(chunk, field, offset, data);
+                              check_signals();
+                          },
+                          r.per_sample);
+    }
+    return result;
+}
+
+py::array_t<float> pdf(ggxcl::Sampler& s, RequestArgs args, const py::object& directions)
+{
+    if (!is_array(directions))
+        throw ggxcl::InvalidArgument("directions", std::string(py::repr(directions)), "a NumPy array of shape (n, 3)");
+    args.count = std::size_t(py::reinterpret_borrow<py::array>(directions).shape(0));
+    const std::vector<ggxcl::Vec3> o = read_vectors(directions, "directions", args.count);
+    const Request r = make_request(args);
+    std::vector<float> values;
+    {
+        py::gil_scoped_release released;
+        values = s.pdf(r.params, o, r.per_sample);
+    }
+    return py::array_t<float>(values.size(), values.data());
+}
+
+py::dict furnace(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first)
+{
+    const Request r = make_request(args);
+    ggxcl::FurnaceSums sums;
+    {
+        py::gil_scoped_release released;
+        sums = s.furnace(r.params, {seed, first, args.count});
+    }
+    py::dict result;
+    result["mean"] = sums.mean();
+    result["variance"] = sums.variance();
+    result["count"] = sums.count;
+    return result;
+}
+
+py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first, int bins_z,
+                   int bins_phi, const std::string& of, const py::object& against)
+{
+    const Request r = make_request(args);
+    const ggxcl::Field direction = ggxcl::parse_field(of);
+    if (direction != ggxcl::Field::o && direction != ggxcl::Field::m)
+        throw ggxcl::InvalidArgument("of", of, "o or m");
+    const ggxcl::Method expected_of = against.is_none() ? r.params.method : ggxcl::parse_method(against.cast<std::string>());
+    ggxcl::Histogram counts;
+    std::vector<double> probabilities;
+    {
+        py::gil_scoped_release released;
+        counts = s.histogram(r.params, {seed, first, args.count}, bins_z, bins_phi, direction);
+        const ggxref::Method m = ggxbridge::reference_method(expected_of);
+        const ggxref::Params p = ggxbridge::reference_params(ggxcl::normalized(r.params));
+        probabilities = direction == ggxcl::Field::m ? ggxref::bin_probabilities_m(m, p, bins_z, bins_phi)
+                                                      : ggxref::bin_probabilities(m, p, bins_z, bins_phi);
+    }
+    const ggxref::ChiSquare fit = ggxref::chi_square_gof_float(counts.counts, probabilities);
+    py::array_t<std::uint64_t> observed({bins_z, bins_phi});
+    py::array_t<double> expected({bins_z, bins_phi});
+    std::memcpy(observed.mutable_data(), counts.counts.data(), counts.counts.size() * sizeof(std::uint64_t));
+    for (std::size_t b = 0; b < probabilities.size(); ++b)
+        expected.mutable_data()[b] = probabilities[b] * double(args.count);
+    py::dict result;
+    result["counts"] = observed;
+    result["expected"] = expected;
+    result["chi_square"] = fit.statistic;
+    result["dof"] = fit.dof;
+    result["p_value"] = fit.p_value;
+    result["non_finite"] = counts.non_finite;
+    return result;
+}
+
+RequestArgs args_of(const std::string& method, std::size_t n, const py::object& alpha, double theta, double phi,
+                    const py::object& view, const py::object& normal, const py::object& precision,
+                    const std::string& sequence, const py::object& uniforms, bool world_space)
+{
+    RequestArgs a;
+    a.method = method;
+    a.count = n;
+    a.alpha = alpha;
+    a.theta = theta;
+    a.phi = phi;
+    a.view = view;
+    a.normal = normal;
+    a.precision = precision;
+    a.sequence = sequence;
+    a.uniforms = uniforms;
+    a.world_space = world_space;
+    return a;
+}
+
+py::list devices()
+{
+    py::list list;
+    for (const ggxcl::DeviceInfo& d : ggxcl::list_devices()) {
+        py::dict info;
+        info["index"] = d.index;
+        info["platform"] = d.platform;
+        info["name"] = d.name;
+        info["type"] = d.type;
+        info["label"] = d.label();
+        info["compute_units"] = d.compute_units;
+        info["opencl_version"] = d.opencl_version;
+        list.append(info);
+    }
+    return list;
+}
+
+} // namespace
+
+void register_sampler(py::module_& m)
+{
+    m.def("devices", &devices, "Every OpenCL device as a dict (index, platform, name, type, label, ...); "
+                               "an index or a part of the label is a selector for Sampler(device=...).");
+    py::class_<ggxcl::Sampler>(m, "Sampler", "GGX samplers on one OpenCL device.")
+        .def(py::init([](const py::object& device) {
+                 std::string selector = device.is_none() ? "" : std::string(py::str(device));
+                 return std::make_unique<ggxcl::Sampler>(selector);
+             }),
+             py::arg("device") = py::none())
+        .def_property_readonly("device_name", &ggxcl::Sampler::device_name)
+        .def_property("chunk_size", &ggxcl::Sampler::chunk_size, &ggxcl::Sampler::set_chunk_size)
+        .def(
+            "sample",
+            [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
+               double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
+               const py::object& fields, const py::object& precision, const std::string& sequence,
+               const py::object& uniforms, bool world_space, const py::object& out) {
+                return sample(s, args_of(method, n, alpha, theta, phi, view, normal, precision, sequence, uniforms,
+                                         world_space),
+                              seed, first, fields, out);
+            },
+            py::arg("method"), py::arg("n"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
+            py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(), py::arg("seed") = 0,
+            py::arg("first") = 0, py::arg("fields") = py::make_tuple("m", "o", "pdf_m", "pdf_o", "weight"),
+            py::arg("precision") = py::none(), py::arg("sequence") = "philox", py::arg("uniforms") = py::none(),
+            py::arg("world_space") = false, py::arg("out") = py::none())
+        .def(
+            "pdf",
+            [](ggxcl::Sampler& s, const std::string& method, const py::object& directions, const py::object& alpha,
+               double theta, double phi, const py::object& view, const py::object& normal, const py::object& precision,
+               bool world_space) {
+                return pdf(s, args_of(method, 0, alpha, theta, phi, view, normal, precision, "philox", py::none(),
+                                      world_space),
+                           directions);
+            },
+            py::arg("method"), py::arg("directions"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
+            py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
+            py::arg("precision") = py::none(), py::arg("world_space") = false)
+        .def(
+            "furnace",
+            [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
+               double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
+               const py::object& precision, const std::string& sequence) {
+                return furnace(s, args_of(method, n, alpha, theta, phi, view, normal, precision, sequence, py::none(),
+                                          false),
+                               seed, first);
+            },
+            py::arg("method"), py::arg("n"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
+            py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(), py::arg("seed") = 0,
+            py::arg("first") = 0, py::arg("precision") = py::none(), py::arg("sequence") = "philox")
+        .def(
+            "histogram",
+            [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
+               double phi, const py::object& normal, std::uint64_t seed, std::uint64_t first, int bins_z, int bins_phi,
+               const std::string& of, const py::object& against, const py::object& precision,
+               const std::string& sequence) {
+                return histogram(s, args_of(method, n, alpha, theta, phi, py::none(), normal, precision, sequence,
+                                            py::none(), false),
+                                 seed, first, bins_z, bins_phi, of, against);
+            },
+            py::arg("method"), py::arg("n"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
+            py::arg("phi") = 0.0, py::arg("normal") = py::none(), py::arg("seed") = 0, py::arg("first") = 0,
+            py::arg("bins_z") = 32, py::arg("bins_phi") = 64, py::arg("of") = "o", py::arg("against") = py::none(),
+            py::arg("precision") = py::none(), py::arg("sequence") = "philox");
+}
+
+} // namespace ggxpy

@@ -1,0 +1,22 @@
+// module.cpp - the compiled part of the ggxcl Python package (ggxcl._ggxcl);
+// ggxcl/__init__.py re-exports it with the documentation.
+#include <pybind11/pybind11.h>
+
+#include <ggxcl/ggxcl.hpp>
+
+#include "bind_sampler.hpp"
+#include "errors.hpp"
+
+PYBIND11_MODULE(_ggxcl, m)
+{
+    m.doc() = "GGX microfacet importance samplers on OpenCL devices (ggxcl)";
+    m.attr("__version__") = std::string(ggxcl::version());
+    m.attr("methods") = [] {
+        pybind11::list names;
+        for (ggxcl::Method method : ggxcl::all_methods)
+            names.append(std::string(ggxcl::method_name(method)));
+        return pybind11::tuple(names);
+    }();
+    ggxpy::register_errors(m);
+    ggxpy::register_sampler(m);
+}

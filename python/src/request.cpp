@@ -1,0 +1,97 @@
+// request.cpp - keyword arguments into SampleParams and PerSampleInputs.
+#include "request.hpp"
+
+#include <pybind11/numpy.h>
+
+#include "arrays.hpp"
+
+namespace py = pybind11;
+
+namespace ggxpy {
+
+namespace {
+
+// A Python number or sequence of `n` numbers.
+std::vector<float> numbers(const py::handle& value, const char* name, std::size_t low, std::size_t high)
+{
+    std::vector<float> out;
+    try {
+        if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value)) {
+            for (const py::handle item : py::reinterpret_borrow<py::sequence>(value))
+                out.push_back(item.cast<float>());
+        } else {
+            out.push_back(value.cast<float>());
+        }
+    } catch (const py::cast_error&) {
+        throw ggxcl::InvalidArgument(name, std::string(py::repr(value)), "a number or a sequence of numbers");
+    }
+    if (out.size() < low || out.size() > high)
+        throw ggxcl::InvalidArgument(name, std::string(py::repr(value)),
+                                     low == high ? std::to_string(low) + " numbers" : "one or two numbers");
+    return out;
+}
+
+void set_alpha(const RequestArgs& args, Request& r)
+{
+    if (is_array(args.alpha)) {  // (n,) isotropic or (n, 2)
+        const py::array a = py::reinterpret_borrow<py::array>(args.alpha);
+        if (a.ndim() == 1) {
+            for (double x : read_array(args.alpha, "alpha", args.count, 0))
+                r.per_sample.alphas.push_back({float(x), float(x)});
+        } else {
+            r.per_sample.alphas = read_pairs(args.alpha, "alpha", args.count);
+        }
+        return;
+    }
+    std::vector<float> a = numbers(args.alpha, "alpha", 1, 2);
+    r.params.alpha_x = a[0];
+    r.params.alpha_y = a.back();
+}
+
+// A uniform vector, or per-sample vectors into `rows`.
+void set_vector(const py::object& value, const char* name, std::size_t count, ggxcl::Vec3& uniform,
+                std::vector<ggxcl::Vec3>& rows)
+{
+    if (is_array(value) && py::reinterpret_borrow<py::array>(value).ndim() == 2) {
+        rows = read_vectors(value, name, count);
+        return;
+    }
+    std::vector<float> v = numbers(value, name, 3, 3);
+    uniform = {v[0], v[1], v[2]};
+}
+
+void set_uniforms(const RequestArgs& args, Request& r)
+{
+    std::vector<double> u = read_array(args.uniforms, "uniforms", args.count, 2);
+    r.per_sample.uniforms.resize(args.count);
+    for (std::size_t j = 0; j < args.count; ++j)
+        r.per_sample.uniforms[j] = {ggxcl::uniform_to_float(u[2 * j]), ggxcl::uniform_to_float(u[2 * j + 1])};
+}
+
+} // namespace
+
+Request make_request(const RequestArgs& args)
+{
+    Request r;
+    r.params.method = ggxcl::parse_method(args.method);
+    r.params.world_space = args.world_space;
+    set_alpha(args, r);
+    if (args.view.is_none()) {
+        if (!(args.theta >= 0.0 && args.theta <= 180.0))
+            throw ggxcl::InvalidArgument("theta", std::to_string(args.theta), "0 .. 180 degrees");
+        r.params.view = ggxcl::view_from_angles(args.theta, args.phi);
+    } else {
+        set_vector(args.view, "view", args.count, r.params.view, r.per_sample.views);
+    }
+    if (!args.normal.is_none())
+        set_vector(args.normal, "normal", args.count, r.params.normal, r.per_sample.normals);
+    if (!args.precision.is_none())
+        r.params.precision = ggxcl::parse_precision(args.precision.cast<std::string>());
+    r.params.sequence = ggxcl::parse_sequence(args.sequence);
+    if (!args.uniforms.is_none())
+        set_uniforms(args, r);
+    ggxcl::validate(r.params);
+    return r;
+}
+
+} // namespace ggxpy

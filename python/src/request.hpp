@@ -1,0 +1,34 @@
+// request.hpp - the keyword arguments of Sampler.sample, pdf, furnace and
+// histogram turned into the library's parameters: the method by name, alpha
+// as a number, a pair or a per-sample array, the view from (theta, phi)
+// degrees or as a vector or per-sample array, the normal likewise, the
+// precision mode, the sequence and the caller's uniforms.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include <pybind11/pybind11.h>
+
+#include <ggxcl/ggxcl.hpp>
+
+namespace ggxpy {
+
+struct RequestArgs {
+    std::string method;
+    std::size_t count = 0;  // samples (or directions): the rows of per-sample arrays
+    pybind11::object alpha, view, normal, precision, uniforms;
+    double theta = 60.0, phi = 0.0;
+    std::string sequence = "philox";
+    bool world_space = false;
+};
+
+struct Request {
+    ggxcl::SampleParams params;
+    ggxcl::PerSampleInputs per_sample;
+};
+
+// Throws ggxcl::InvalidArgument naming the argument at fault.
+Request make_request(const RequestArgs& args);
+
+} // namespace ggxpy

@@ -1,0 +1,148 @@
+"""test_ggxcl.py - the ggxcl Python module against the C++ library and the
+`ggx` tool: the same seed and range give the bits `ggx sample` writes for
+every method; pdf equals the pdf_o field; the histogram passes its
+chi-square and rejects another method's pdf (negative control); the furnace
+equals the mean of the weights; per-sample arrays and the caller's
+uniforms; out= arrays; bad input raises errors naming the argument; a
+signal raises KeyboardInterrupt in the middle of a long call.
+
+Run by CTest (test_python) with PYTHONPATH at the build tree's python/ and
+GGX_BINARY the `ggx` tool.
+"""
+import json
+import os
+import signal
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import ggxcl
+
+GGX = os.environ.get("GGX_BINARY", "ggx")
+FIELDS = ("m", "o", "pdf_m", "pdf_o", "weight")
+
+
+@pytest.fixture(scope="module")
+def sampler():
+    return ggxcl.Sampler()
+
+
+def read_npy(path):
+    return np.load(path)
+
+
+@pytest.mark.parametrize("method", ggxcl.methods)
+def test_sample_equals_ggx_sample_bit_for_bit(sampler, tmp_path, method):
+    alpha = "0.25" if method == "caps-iso" else "0.2,0.5"
+    out = tmp_path / "s.npy"
+    subprocess.run([GGX, "sample", "--method", method, "--alpha", alpha, "--theta", "50", "--phi", "20", "-n", "5000",
+                    "--seed", "7", "--first", "123", "--fields", "m,o,pdf_m,pdf_o,weight,u", "--out", str(out)],
+                   check=True, stdout=subprocess.DEVNULL)
+    rows = read_npy(out)
+    a = tuple(float(x) for x in alpha.split(","))
+    d = sampler.sample(method, 5000, alpha=a if len(a) == 2 else a[0], theta=50, phi=20, seed=7, first=123,
+                       fields=FIELDS + ("u",))
+    columns = np.concatenate([d["m"], d["o"], d["pdf_m"][:, None], d["pdf_o"][:, None], d["weight"][:, None],
+                              d["u"]], axis=1)
+    assert columns.dtype == np.float32 and columns.shape == rows.shape == (5000, 11)
+    assert np.array_equal(columns.view(np.uint32), rows.view(np.uint32))
+    side = json.loads((tmp_path / "s.json").read_text())
+    assert side["method"] == method
+
+
+def test_sobol_and_the_callers_uniforms(sampler):
+    d = sampler.sample("heitz", 4096, alpha=0.4, sequence="sobol", seed=3, fields=("o", "u"))
+    again = sampler.sample("heitz", 4096, alpha=0.4, uniforms=d["u"].astype(np.float64), fields=("o", "u"))
+    assert np.array_equal(d["o"], again["o"]) and np.array_equal(d["u"], again["u"])
+    philox = sampler.sample("heitz", 4096, alpha=0.4, seed=3, fields=("o",))
+    assert not np.array_equal(d["o"], philox["o"])  # control
+    # The first 2^12 Sobol points are a net: every cell of 2^-6 x 2^-6 holds one.
+    cells = (d["u"][:, 0] * 64).astype(int) * 64 + (d["u"][:, 1] * 64).astype(int)
+    assert len(np.unique(cells)) == 4096
+
+
+def test_pdf_equals_the_pdf_o_field(sampler):
+    d = sampler.sample("bounded", 3000, alpha=(0.3, 0.6), theta=40, seed=2, fields=("o", "pdf_o"))
+    p = sampler.pdf("bounded", d["o"], alpha=(0.3, 0.6), theta=40)
+    assert p.shape == (3000,) and p.dtype == np.float32
+    assert np.allclose(p, d["pdf_o"], rtol=1e-4, atol=0)
+
+
+def test_histogram_passes_its_chi_square_and_rejects_another_pdf(sampler):
+    h = sampler.histogram("caps", 10 ** 6, alpha=0.3, theta=60, seed=5, bins_z=16, bins_phi=32)
+    assert h["counts"].shape == (16, 32) and h["counts"].dtype == np.uint64
+    assert int(h["counts"].sum()) == 10 ** 6 and h["non_finite"] == 0
+    assert h["p_value"] > 1e-3
+    assert abs(h["expected"].sum() - 10 ** 6) < 1.0
+    wrong = sampler.histogram("ndf", 10 ** 6, alpha=0.3, theta=60, seed=5, bins_z=16, bins_phi=32, against="caps")
+    assert wrong["p_value"] < 1e-6
+
+
+def test_furnace_equals_the_mean_weight(sampler):
+    f = sampler.furnace("caps", 2 ** 16, alpha=0.5, theta=70, seed=9)
+    w = sampler.sample("caps", 2 ** 16, alpha=0.5, theta=70, seed=9, fields=("weight",))["weight"]
+    assert f["count"] == 2 ** 16
+    assert f["mean"] == pytest.approx(float(np.mean(w, dtype=np.float64)), rel=1e-5)
+    assert f["variance"] == pytest.approx(float(np.var(w, dtype=np.float64, ddof=1)), rel=1e-3)
+
+
+def test_per_sample_arrays_and_out(sampler):
+    n = 2000
+    rng = np.random.default_rng(1)
+    alpha = rng.uniform(0.05, 1.0, size=n).astype(np.float32)
+    theta = rng.uniform(0, np.pi / 2 * 0.95, size=n)
+    view = np.stack([np.sin(theta), np.zeros(n), np.cos(theta)], axis=1)
+    d = sampler.sample("caps", n, alpha=alpha, view=view, seed=4, fields=("m", "pdf_m"))
+    for j in (0, 777, n - 1):  # sample j equals a uniform request for its own parameters
+        one = sampler.sample("caps", 1, alpha=float(alpha[j]), view=view[j].tolist(), seed=4, first=j,
+                             fields=("m", "pdf_m"))
+        assert np.array_equal(one["m"][0], d["m"][j]) and one["pdf_m"][0] == d["pdf_m"][j]
+    out = {"o": np.zeros((n, 3), np.float32), "weight": np.zeros(n, np.float32)}
+    got = sampler.sample("ndf", n, seed=8, fields=("o", "weight"), out=out)
+    assert got["o"] is out["o"] and np.all(np.linalg.norm(out["o"], axis=1) > 0.999)
+
+
+@pytest.mark.parametrize("kwargs, parameter", [
+    (dict(method="walter"), "method"),
+    (dict(alpha=float("nan")), "alpha_x"),
+    (dict(alpha=np.zeros((5, 3), np.float32)), "alpha"),
+    (dict(alpha=np.ones(5, np.int32)), "alpha"),
+    (dict(view=np.ones((5, 3), np.float32)[:, ::2].copy()), "view"),
+    (dict(view=np.ones((10, 3), np.float32)[::2]), "view"),
+    (dict(fields=("m", "x")), "field"),
+    (dict(fields=("m", "m")), "fields"),
+    (dict(uniforms=np.full((5, 2), 1.0)), "uniforms[0]"),
+    (dict(sequence="halton"), "sequence"),
+    (dict(precision="turbo"), "precision"),
+    (dict(seed=2 ** 32), "seed"),
+    (dict(out={"m": np.zeros((5, 3), np.float64)}), "out[m]"),
+])
+def test_bad_input_names_the_argument(sampler, kwargs, parameter):
+    args = dict(method="caps", n=5, fields=("m",))
+    args.update(kwargs)
+    with pytest.raises(ggxcl.InvalidArgument) as error:
+        sampler.sample(args.pop("method"), args.pop("n"), **args)
+    assert error.value.parameter == parameter
+    assert isinstance(error.value, ValueError)
+
+
+def test_device_errors_are_runtime_errors():
+    with pytest.raises(ggxcl.DeviceError) as error:
+        ggxcl.Sampler("no-such-device")
+    assert isinstance(error.value, RuntimeError)
+    assert len(ggxcl.devices()) >= 1 and "label" in ggxcl.devices()[0]
+
+
+def test_a_signal_interrupts_a_long_call(sampler):
+    # 2^30 weights (4 GiB, allocated lazily) take seconds; SIGINT after 0.3 s stops the call between chunks.
+    sampler.chunk_size = 1 << 16
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            sampler.sample("caps", 1 << 30, fields=("weight",))
+    finally:
+        timer.cancel()
+        sampler.chunk_size = 1 << 20

@@ -15,7 +15,7 @@ packages=(
   doctest-dev                         # tests
   libcli11-dev nlohmann-json3-dev     # CLI parsing, JSON sidecars
   python3-matplotlib python3-numpy    # histogram figures (ggx histogram, ggx demo)
-  python3-dev pybind11-dev python3-pytest  # the ggxcl Python module and its tests
+  python3-dev pybind11-dev python3-pytest python3-pyopencl  # the ggxcl Python module and its tests
   libstb-dev                          # PNG decoding in the tests, PNG encoding in examples/albedo_table
   pkgconf                             # the install test builds a consumer with pkg-config
 )

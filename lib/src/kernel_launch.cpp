@@ -69,6 +69,30 @@ void check_launch_count(std::uint64_t count, std::uint32_t stride)
         throw InvalidArgument("stride", std::to_string(stride), "0 (= count) or at least count");
 }
 
+void check_buffer_size(const cl::Buffer& buffer, const std::string& name, int planes, std::uint64_t stride)
+{
+    if (buffer() == nullptr)
+        return;
+    const std::uint64_t needed = std::uint64_t(planes) * stride * sizeof(float);
+    const std::uint64_t size = buffer.getInfo<CL_MEM_SIZE>();
+    if (size < needed)
+        throw InvalidArgument(name, std::to_string(size) + " bytes",
+                              "at least " + std::to_string(needed) + " bytes (" + std::to_string(planes) +
+                                  " planes of stride " + std::to_string(stride) + " floats)");
+}
+
+void check_buffer_sizes(const DeviceOutputs* outputs, const DeviceInputs& inputs, const SampleParams& params,
+                        std::uint64_t stride)
+{
+    if (outputs)
+        for (Field f : all_fields)
+            check_buffer_size(outputs->of(f), "outputs." + std::string(field_name(f)), field_columns(f), stride);
+    check_buffer_size(inputs.view, "inputs.view", 3, stride);
+    check_buffer_size(inputs.alpha, "inputs.alpha", is_isotropic(params, inputs) ? 1 : 2, stride);
+    check_buffer_size(inputs.normal, "inputs.normal", 3, stride);
+    check_buffer_size(inputs.uniforms, "inputs.uniforms", 2, stride);
+}
+
 std::size_t group_size(std::size_t device_max, std::size_t requested)
 {
     return requested ? requested : std::min(preferred_group_size, device_max);

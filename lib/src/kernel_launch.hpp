@@ -30,6 +30,14 @@ void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p
 
 void check_launch_count(std::uint64_t count, std::uint32_t stride);
 
+// Throws InvalidArgument naming `name` when `buffer` (if set) holds fewer
+// than planes x stride floats.
+void check_buffer_size(const cl::Buffer& buffer, const std::string& name, int planes, std::uint64_t stride);
+// The same for every buffer of a launch of `stride` (outputs and per-sample
+// inputs; alpha has one plane where the program is isotropic).
+void check_buffer_sizes(const DeviceOutputs* outputs, const DeviceInputs& inputs, const SampleParams& params,
+                        std::uint64_t stride);
+
 // The work-group size of a launch: `requested`, or for 0 the default within the device's maximum.
 std::size_t group_size(std::size_t device_max, std::size_t requested);
 

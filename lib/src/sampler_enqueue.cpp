@@ -136,6 +136,7 @@ cl::Event Sampler::enqueue_variant(cl::CommandQueue& queue, const SampleParams& 
         throw InvalidArgument("outputs", "none", "at least one output buffer (" + field_list() + ")");
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
+        check_buffer_sizes(&outputs, inputs, unit, stride ? stride : range.count);
         std::string options = build_options(unit, mask, inputs, guards);
         auto make = [&](const std::string& name) {
             KernelLease lease = kernel(bulk_file, name, options);

@@ -12,6 +12,10 @@ that `ggx sample` writes and the C++ Sampler::generate returns.  Per-sample
 parameters come as arrays: alpha (n,) or (n, 2), view and normal (n, 3),
 uniforms (n, 2) in [0, 1) (the caller's own, in place of `sequence`).
 
+In a pyopencl pipeline: Sampler(device=pyopencl_device, context=pyopencl_context)
+and sampler.enqueue(queue, method, n, outputs={"m": buffer, ...}) write into
+pyopencl Buffers on a pyopencl queue and return a pyopencl.Event.
+
 Errors: InvalidArgument (a ValueError; .parameter names the argument),
 DeviceError (a RuntimeError), BuildError (.log) and DeviceLost.  The device
 works without the GIL; Ctrl-C stops a long call between chunks with

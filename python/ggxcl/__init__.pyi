@@ -26,7 +26,35 @@ def devices() -> List[Dict[str, Any]]:
 class Sampler:
     """GGX samplers on one OpenCL device (`device`: an index or part of a label; default GGXCL_DEVICE, else the first)."""
 
-    def __init__(self, device: Optional[Union[int, str]] = None) -> None: ...
+    def __init__(self, device: Optional[Any] = None, context: Optional[Any] = None) -> None:
+        """`device`: an index or part of a label (default GGXCL_DEVICE, else the first); with a pyopencl.Context
+        `context`, the sampler works on that context and `device` is a pyopencl.Device."""
+    def enqueue(
+        self,
+        queue: Any,
+        method: str,
+        n: int,
+        *,
+        outputs: Mapping[str, Any],
+        seed: int = 0,
+        first: int = 0,
+        stride: int = 0,
+        alpha: Union[float, Tuple[float, float]] = 0.3,
+        theta: float = 60.0,
+        phi: float = 0.0,
+        view: Optional[Sequence[float]] = None,
+        normal: Optional[Sequence[float]] = None,
+        precision: Optional[str] = None,
+        sequence: str = "philox",
+        inputs: Optional[Mapping[str, Any]] = None,
+        views_above_horizon: bool = False,
+        isotropic: bool = False,
+        wait_for: Optional[Sequence[Any]] = None,
+    ) -> Any:
+        """Samples first .. first + n - 1 into pyopencl Buffers (outputs={'m': buffer, ...}: planar, plane c of a
+        field at c * stride floats, stride 0 meaning n) on a pyopencl queue of this sampler's context, after the
+        events of `wait_for`; per-sample inputs as Buffers too (inputs={'view', 'alpha', 'normal', 'uniforms'}).
+        Returns a pyopencl.Event. A buffer too small raises InvalidArgument naming it."""
     @property
     def device_name(self) -> str: ...
     chunk_size: int

@@ -9,6 +9,7 @@
 #include <pybind11/stl.h>
 
 #include "arrays.hpp"
+#include "bind_pyopencl.hpp"
 #include "ggx_quadrature.hpp"
 #include "ggx_stats.hpp"
 #include "reference_bridge.hpp"
@@ -187,12 +188,17 @@ void register_sampler(py::module_& m)
 {
     m.def("devices", &devices, "Every OpenCL device as a dict (index, platform, name, type, label, ...); "
                                "an index or a part of the label is a selector for Sampler(device=...).");
-    py::class_<ggxcl::Sampler>(m, "Sampler", "GGX samplers on one OpenCL device.")
-        .def(py::init([](const py::object& device) {
+    py::class_<ggxcl::Sampler> sampler(m, "Sampler", "GGX samplers on one OpenCL device.");
+    sampler
+        .def(py::init([](const py::object& device, const py::object& context) {
+                 if (!context.is_none())  // pyopencl objects
+                     return sampler_on(context, device);
                  std::string selector = device.is_none() ? "" : std::string(py::str(device));
                  return std::make_unique<ggxcl::Sampler>(selector);
              }),
-             py::arg("device") = py::none())
+             py::arg("device") = py::none(), py::arg("context") = py::none(),
+             "A sampler on the device `device` names (an index or part of a label; default GGXCL_DEVICE, else the "
+             "first), or, with a pyopencl `context`, on that context and the pyopencl `device`.")
         .def_property_readonly("device_name", &ggxcl::Sampler::device_name)
         .def_property("chunk_size", &ggxcl::Sampler::chunk_size, &ggxcl::Sampler::set_chunk_size)
         .def(
@@ -248,6 +254,7 @@ void register_sampler(py::module_& m)
             py::arg("phi") = 0.0, py::arg("normal") = py::none(), py::arg("seed") = 0, py::arg("first") = 0,
             py::arg("bins_z") = 32, py::arg("bins_phi") = 64, py::arg("of") = "o", py::arg("against") = py::none(),
             py::arg("precision") = py::none(), py::arg("sequence") = "philox");
+    add_enqueue(sampler);
 }
 
 } // namespace ggxpy

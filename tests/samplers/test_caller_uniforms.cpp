@@ -232,3 +232,22 @@ TEST_CASE("the fused estimator takes the caller's uniforms")
     // Control: the Philox stream of the same seed gives another estimate.
     CHECK(s.furnace(params_of(ggxcl::Method::heitz), {2, 0, n}).mean() != doctest::Approx(given / n).epsilon(1e-6));
 }
+
+TEST_CASE("enqueue refuses buffers smaller than their planes of the stride, naming them")
+{
+    auto& s = ggxtest::sampler();
+    const std::uint32_t n = 1000, stride = 1024;
+    ggxcl::DeviceOutputs out;
+    out.m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * stride * sizeof(float) - 4);
+    CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] {
+              s.enqueue(s.queue(), params_of(ggxcl::Method::caps), {0, 0, n}, out, stride);
+          }) == "invalid outputs.m '12284 bytes': allowed is at least 12288 bytes (3 planes of stride 1024 floats)");
+    out.m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * stride * sizeof(float));
+    ggxcl::DeviceInputs in;
+    in.uniforms = cl::Buffer(s.context(), CL_MEM_READ_ONLY, stride * sizeof(float));  // one plane of two
+    CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] {
+              s.enqueue(s.queue(), params_of(ggxcl::Method::caps), {0, 0, n}, out, stride, in);
+          }).find("invalid inputs.uniforms '4096 bytes'") == 0);
+    in.uniforms = planar_buffer(sequence_uniforms(Sequence::philox, 0, 0, n), stride);  // control: big enough
+    CHECK_NOTHROW(s.enqueue(s.queue(), params_of(ggxcl::Method::caps), {0, 0, n}, out, stride, in).wait());
+}

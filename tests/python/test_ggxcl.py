@@ -152,8 +152,13 @@ def test_device_errors_are_runtime_errors():
 
 def test_a_signal_interrupts_a_long_call(sampler):
     # 2^30 weights (4 GiB, allocated lazily) take seconds; SIGINT after 0.3 s stops the call between chunks.
+    # Not on Mesa rusticl: there the interrupted process crashed later (abort or segmentation fault) in most
+    # runs, also with the signal sent to the main thread only; on PoCL it never did. Not isolated yet.
+    if any(d["platform"] == "rusticl" and d["name"] == sampler.device_name for d in ggxcl.devices()):
+        pytest.skip("a signal during a call on rusticl crashes the process later")
     sampler.chunk_size = 1 << 16
-    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    main = threading.main_thread().ident
+    timer = threading.Timer(0.3, lambda: signal.pthread_kill(main, signal.SIGINT))
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):
@@ -164,13 +169,9 @@ def test_a_signal_interrupts_a_long_call(sampler):
 
 
 def pyopencl_device_of(sampler):
-    """The pyopencl device that `sampler` runs on (same platform and name). Not on Mesa rusticl: there
-    pyopencl's device enumeration, after the earlier tests of this suite, crashed the process in some runs
-    (abort or segmentation fault inside clGetDeviceIDs; alone it does not), a cause not isolated."""
-    cl = pytest.importorskip("pyopencl")
+    """The pyopencl device that `sampler` runs on (same platform and name)."""
     platforms = {d["platform"] for d in ggxcl.devices() if d["name"] == sampler.device_name}
-    if "rusticl" in platforms:
-        pytest.skip("pyopencl's device enumeration is not reliable on rusticl in this process")
+    cl = pytest.importorskip("pyopencl")
     for platform in cl.get_platforms():
         if platform.name in platforms:
             for device in platform.get_devices():

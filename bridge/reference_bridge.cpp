@@ -1,6 +1,8 @@
 // reference_bridge.cpp - library types to reference types and back.
 #include "reference_bridge.hpp"
 
+#include "ggx_quadrature.hpp"
+
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -71,6 +73,15 @@ ggxcl::SampleParams library_params(ggxref::Method method, const ggxref::Params& 
     out.view = {float(p.i.x), float(p.i.y), float(p.i.z)};
     out.normal = {float(p.n.x), float(p.n.y), float(p.n.z)};
     return out;
+}
+
+std::vector<double> bin_probabilities(ggxcl::Method method, const ggxcl::SampleParams& params, int bins_z,
+                                      int bins_phi, ggxcl::Field direction)
+{
+    const ggxref::Method m = reference_method(method);
+    const ggxref::Params p = reference_params(params);
+    return direction == ggxcl::Field::m ? ggxref::bin_probabilities_m(m, p, bins_z, bins_phi)
+                                        : ggxref::bin_probabilities(m, p, bins_z, bins_phi);
 }
 
 } // namespace ggxbridge

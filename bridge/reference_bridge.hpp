@@ -5,6 +5,8 @@
 // point); only this bridge knows both.
 #pragma once
 
+#include <vector>
+
 #include <ggxcl/ggxcl.hpp>
 
 #include "ggx_reference.hpp"
@@ -20,5 +22,11 @@ ggxref::Params reference_params(const ggxcl::SampleParams& params);
 // The reference's parameters as the library's, rounded to float, in `precision`.
 ggxcl::SampleParams library_params(ggxref::Method method, const ggxref::Params& params,
                                    ggxcl::Precision precision = ggxcl::Precision::precise);
+
+// The probability of each bin of a device histogram of `direction` (o or m)
+// under `method`'s pdf at the (normalized) params: what `ggx histogram` and
+// the Python Sampler.histogram test their counts against.
+std::vector<double> bin_probabilities(ggxcl::Method method, const ggxcl::SampleParams& params, int bins_z,
+                                      int bins_phi, ggxcl::Field direction);
 
 } // namespace ggxbridge

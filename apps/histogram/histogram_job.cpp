@@ -46,10 +46,7 @@ nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, c
 std::future<std::vector<double>> start_expectation(const HistogramJob& job)
 {
     return std::async(std::launch::async, [job] {
-        const ggxref::Method method = ggxbridge::reference_method(job.against);
-        const ggxref::Params params = ggxbridge::reference_params(job.params);
-        return job.direction == ggxcl::Field::m ? ggxref::bin_probabilities_m(method, params, job.bins_z, job.bins_phi)
-                                                : ggxref::bin_probabilities(method, params, job.bins_z, job.bins_phi);
+        return ggxbridge::bin_probabilities(job.against, job.params, job.bins_z, job.bins_phi, job.direction);
     });
 }
 

@@ -45,8 +45,7 @@ py::object enqueue(ggxcl::Sampler& s, const py::object& queue, const RequestArgs
                    bool views_above_horizon, bool isotropic, const py::object& wait_for)
 {
     cl::CommandQueue q = handle_of<cl::CommandQueue>(queue, "queue", "CommandQueue");
-    RequestArgs uniform = args;
-    const Request r = make_request(uniform);
+    const Request r = make_request(args);
     ggxcl::DeviceOutputs out;
     buffers_of(outputs, "outputs", [&](const std::string& name) -> cl::Buffer& { return out.of(ggxcl::parse_field(name)); });
     ggxcl::DeviceInputs in;
@@ -79,19 +78,9 @@ void add_enqueue(py::class_<ggxcl::Sampler>& sampler)
            const py::object& alpha, double theta, double phi, const py::object& view, const py::object& normal,
            const py::object& precision, const std::string& sequence, const py::object& inputs,
            bool views_above_horizon, bool isotropic, const py::object& wait_for) {
-            RequestArgs args;
-            args.method = method;
-            args.count = n;
-            args.alpha = alpha;
-            args.theta = theta;
-            args.phi = phi;
-            args.view = view;
-            args.normal = normal;
-            args.precision = precision;
-            args.sequence = sequence;
-            args.uniforms = py::none();
-            return enqueue(s, queue, args, seed, first, stride, outputs, inputs, views_above_horizon, isotropic,
-                           wait_for);
+            return enqueue(s, queue,
+                           args_of(method, n, alpha, theta, phi, view, normal, precision, sequence, py::none(), false),
+                           seed, first, stride, outputs, inputs, views_above_horizon, isotropic, wait_for);
         },
         py::arg("queue"), py::arg("method"), py::arg("n"), py::kw_only(), py::arg("outputs"), py::arg("seed") = 0,
         py::arg("first") = 0, py::arg("stride") = 0, py::arg("alpha") = 0.3, py::arg("theta") = 60.0,

@@ -10,7 +10,6 @@
 
 #include "arrays.hpp"
 #include "bind_pyopencl.hpp"
-#include "ggx_quadrature.hpp"
 #include "ggx_stats.hpp"
 #include "reference_bridge.hpp"
 #include "request.hpp"
@@ -125,10 +124,8 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     {
         py::gil_scoped_release released;
         counts = s.histogram(r.params, {seed, first, args.count}, bins_z, bins_phi, direction);
-        const ggxref::Method m = ggxbridge::reference_method(expected_of);
-        const ggxref::Params p = ggxbridge::reference_params(ggxcl::normalized(r.params));
-        probabilities = direction == ggxcl::Field::m ? ggxref::bin_probabilities_m(m, p, bins_z, bins_phi)
-                                                      : ggxref::bin_probabilities(m, p, bins_z, bins_phi);
+        probabilities =
+            ggxbridge::bin_probabilities(expected_of, ggxcl::normalized(r.params), bins_z, bins_phi, direction);
     }
     const ggxref::ChiSquare fit = ggxref::chi_square_gof_float(counts.counts, probabilities);
     py::array_t<std::uint64_t> observed({bins_z, bins_phi});
@@ -144,25 +141,6 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     result["p_value"] = fit.p_value;
     result["non_finite"] = counts.non_finite;
     return result;
-}
-
-RequestArgs args_of(const std::string& method, std::size_t n, const py::object& alpha, double theta, double phi,
-                    const py::object& view, const py::object& normal, const py::object& precision,
-                    const std::string& sequence, const py::object& uniforms, bool world_space)
-{
-    RequestArgs a;
-    a.method = method;
-    a.count = n;
-    a.alpha = alpha;
-    a.theta = theta;
-    a.phi = phi;
-    a.view = view;
-    a.normal = normal;
-    a.precision = precision;
-    a.sequence = sequence;
-    a.uniforms = uniforms;
-    a.world_space = world_space;
-    return a;
 }
 
 py::list devices()

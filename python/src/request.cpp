@@ -70,6 +70,25 @@ void set_uniforms(const RequestArgs& args, Request& r)
 
 } // namespace
 
+RequestArgs args_of(const std::string& method, std::size_t n, const py::object& alpha, double theta, double phi,
+                    const py::object& view, const py::object& normal, const py::object& precision,
+                    const std::string& sequence, const py::object& uniforms, bool world_space)
+{
+    RequestArgs a;
+    a.method = method;
+    a.count = n;
+    a.alpha = alpha;
+    a.theta = theta;
+    a.phi = phi;
+    a.view = view;
+    a.normal = normal;
+    a.precision = precision;
+    a.sequence = sequence;
+    a.uniforms = uniforms;
+    a.world_space = world_space;
+    return a;
+}
+
 Request make_request(const RequestArgs& args)
 {
     Request r;

@@ -28,6 +28,11 @@ struct Request {
     ggxcl::PerSampleInputs per_sample;
 };
 
+// The keyword arguments as the bindings receive them.
+RequestArgs args_of(const std::string& method, std::size_t n, const pybind11::object& alpha, double theta, double phi,
+                    const pybind11::object& view, const pybind11::object& normal, const pybind11::object& precision,
+                    const std::string& sequence, const pybind11::object& uniforms, bool world_space);
+
 // Throws ggxcl::InvalidArgument naming the argument at fault.
 Request make_request(const RequestArgs& args);
 

@@ -95,13 +95,19 @@ void read_planes(cl::CommandQueue& queue, const cl::Buffer& buffer, int planes, 
 
 // Waits for everything on the queue when it goes out of scope, so that no
 // copy into a host vector is in flight when the vector is freed (a sink or
-// a launch that throws leaves commands behind).
+// a launch that throws leaves commands behind).  It waits on a marker, which
+// completes after every command before it: Mesa rusticl's clFinish returns
+// at once when a clFlush came just before it (measured: the last fetch's
+// marker still CL_QUEUED after clFinish, and the read then wrote into freed
+// memory).
 struct QueueDrain {
     cl::CommandQueue& queue;
     ~QueueDrain()
     {
         try {
-            queue.finish();
+            cl::Event all_done;
+            queue.enqueueMarkerWithWaitList(nullptr, &all_done);
+            all_done.wait();
         } catch (...) {  // a lost device: nothing more will run
         }
     }

@@ -37,7 +37,7 @@ bool is_device_lost(int code)
     return code == CL_DEVICE_NOT_AVAILABLE || code == CL_INVALID_COMMAND_QUEUE;
 }
 
-void retry_with_smaller_chunks(std::uint64_t& capacity, std::uint64_t smallest, std::uint64_t& retries,
+void retry_with_smaller_chunks(std::uint64_t& capacity, std::uint64_t smallest, std::atomic<std::uint64_t>& retries,
                                const std::function<void(std::uint64_t capacity)>& pass, std::uint64_t granule)
 {
     for (;;) {

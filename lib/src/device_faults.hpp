@@ -3,6 +3,7 @@
 // faults that tests inject (GGXCL_INJECT_FAULT, fault_injection.hpp) strike.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 
@@ -29,7 +30,7 @@ bool is_device_lost(int code);
 // `retries`, and the next pass runs with the smaller capacity, a multiple
 // of `granule`.  At `smallest` the out-of-memory error goes to the caller,
 // as a ClError that says so.
-void retry_with_smaller_chunks(std::uint64_t& capacity, std::uint64_t smallest, std::uint64_t& retries,
+void retry_with_smaller_chunks(std::uint64_t& capacity, std::uint64_t smallest, std::atomic<std::uint64_t>& retries,
                                const std::function<void(std::uint64_t capacity)>& pass, std::uint64_t granule = 1);
 
 } // namespace ggxcl::detail

@@ -1,12 +1,71 @@
 // program_cache.cpp - building and caching programs per (device, options),
-// in memory and (as binaries) on disk.
+// in memory and (as binaries) on disk, and each thread's own kernels.
 #include "program_cache.hpp"
+
+#include <atomic>
+#include <set>
+#include <unordered_map>
 
 #include "build_program.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/kernel_sources.hpp"
 
 namespace ggxcl {
+
+namespace {
+
+// The serials of the caches alive, and how many caches have gone: a thread
+// looks at the set only when that count changed since its last lease.
+std::atomic<std::uint64_t> next_serial{1}, caches_gone{0};
+std::mutex live_mutex;
+std::set<std::uint64_t> live_serials;
+
+// One thread's kernels, by cache serial, device, file, options and name.
+struct ThreadKernels {
+    struct Entry {
+        std::uint64_t serial;
+        cl::Kernel kernel;
+        bool busy = false;
+    };
+    std::unordered_map<std::string, Entry> entries;  // node-based: an Entry stays put while leased
+    std::uint64_t gone_seen = 0;
+
+    // Releases the kernels of caches that have gone (their programs and contexts with them).
+    void forget_gone_caches()
+    {
+        const std::uint64_t gone = caches_gone.load(std::memory_order_acquire);
+        if (gone == gone_seen)
+            return;
+        gone_seen = gone;
+        std::lock_guard<std::mutex> lock(live_mutex);
+        for (auto it = entries.begin(); it != entries.end();)
+            it = live_serials.count(it->second.serial) || it->second.busy ? std::next(it) : entries.erase(it);
+    }
+};
+
+thread_local ThreadKernels thread_kernels;
+
+std::string kernel_key(std::uint64_t serial, cl_device_id device, const std::string& file, const std::string& options,
+                       const std::string& name)
+{
+    return std::to_string(serial) + '\n' + std::to_string(reinterpret_cast<std::uintptr_t>(device)) + '\n' + file +
+           '\n' + name + '\n' + options;
+}
+
+} // namespace
+
+ProgramCache::ProgramCache(cl::Context context) : context_(std::move(context)), serial_(next_serial++)
+{
+    std::lock_guard<std::mutex> lock(live_mutex);
+    live_serials.insert(serial_);
+}
+
+ProgramCache::~ProgramCache()
+{
+    std::lock_guard<std::mutex> lock(live_mutex);
+    live_serials.erase(serial_);
+    caches_gone.fetch_add(1, std::memory_order_release);
+}
 
 std::shared_ptr<ProgramCache> ProgramCache::for_context(const cl::Context& context)
 {
@@ -23,10 +82,9 @@ std::shared_ptr<ProgramCache> ProgramCache::for_context(const cl::Context& conte
     return cache;
 }
 
-// Called with mutex_ held.
-ProgramCache::Variant& ProgramCache::variant(const cl::Device& device, const std::string& file,
-                                             const std::string& options)
+cl::Program ProgramCache::get(const cl::Device& device, const std::string& file, const std::string& options)
 {
+    std::lock_guard<std::mutex> lock(mutex_);
     auto key = std::make_pair(device(), file + "\n" + options);
     auto found = programs_.find(key);
     if (found != programs_.end())
@@ -36,41 +94,24 @@ ProgramCache::Variant& ProgramCache::variant(const cl::Device& device, const std
     cl::Program program =
         detail::build_program(context_, device, kernel_source(file), options + " -cl-std=CL1.2", true, &from_disk);
     loaded_from_disk_ += from_disk ? 1 : 0;
-    return programs_.emplace(key, Variant{program, {}}).first->second;
-}
-
-cl::Program ProgramCache::get(const cl::Device& device, const std::string& file, const std::string& options)
-{
-    std::lock_guard<std::mutex> lock(mutex_);
-    return variant(device, file, options).program;
+    return programs_.emplace(key, program).first->second;
 }
 
 KernelLease ProgramCache::kernel(const cl::Device& device, const std::string& file, const std::string& options,
                                  const std::string& name)
 {
-    std::unique_lock<std::mutex> lock(mutex_);
-    Variant& v = variant(device, file, options);
-    std::vector<cl::Kernel>* idle = &v.idle[name];
-    if (!idle->empty()) {
-        cl::Kernel k = std::move(idle->back());
-        idle->pop_back();
-        return KernelLease(this, idle, std::move(k));
-    }
-    cl::Program program = v.program;
-    lock.unlock();
-    return KernelLease(this, idle, cl::Kernel(program, name.c_str()));
-}
-
-void ProgramCache::give_back(std::vector<cl::Kernel>* idle, cl::Kernel kernel)
-{
-    std::lock_guard<std::mutex> lock(mutex_);
-    idle->push_back(std::move(kernel));
-}
-
-KernelLease::~KernelLease()
-{
-    if (cache_ && kernel_() != nullptr)
-        cache_->give_back(idle_, std::move(kernel_));
+    ThreadKernels& mine = thread_kernels;
+    mine.forget_gone_caches();
+    const std::string key = kernel_key(serial_, device(), file, options, name);
+    auto found = mine.entries.find(key);
+    if (found != mine.entries.end() && !found->second.busy)
+        return KernelLease(&found->second.kernel, &found->second.busy);
+    cl::Kernel fresh(get(device, file, options), name.c_str());
+    if (found != mine.entries.end())  // this thread holds its kernel already (a lease within a lease)
+        return KernelLease(std::move(fresh));
+    ThreadKernels::Entry& entry = mine.entries[key];
+    entry = {serial_, std::move(fresh), false};
+    return KernelLease(&entry.kernel, &entry.busy);
 }
 
 std::size_t ProgramCache::loaded_from_disk() const

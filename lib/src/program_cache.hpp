@@ -7,50 +7,62 @@
 // ~/.cache/ggxcl/programs (or $XDG_CACHE_HOME/ggxcl/programs).
 // GGXCL_PROGRAM_CACHE=DIR uses DIR for every platform; "off" turns it off.
 //
-// Kernel objects are kept too, per program and kernel name, and lent out
-// one caller at a time (a cl::Kernel's arguments are not safe to set from
-// two threads): a lease takes an idle kernel or creates one, and gives it
-// back when it goes out of scope, after the launch has captured its
-// arguments.  Every Sampler on one context shares that context's cache.
+// Kernel objects are per thread: a cl::Kernel's arguments are not safe to
+// set from two threads, so each thread keeps its own kernel per program and
+// name and leases it to itself, with no lock once the thread has used the
+// variant (the program map's mutex is taken only on a thread's first use of
+// a variant, and for builds).  A thread's kernels of a cache that has gone
+// are released at its next lease, and all of them when the thread ends.
+// Every Sampler on one context shares that context's cache.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <utility>
-#include <vector>
 
 #include "ggxcl/opencl.hpp"
 
 namespace ggxcl {
 
-class ProgramCache;
-
-// A kernel lent by a ProgramCache to one caller until the lease ends.
+// A kernel lent to one caller on the calling thread until the lease ends:
+// the thread's own kernel of that name, or (when the thread already holds
+// that one) a kernel of the lease's own.
 class KernelLease {
 public:
-    KernelLease(ProgramCache* cache, std::vector<cl::Kernel>* idle, cl::Kernel kernel)
-        : cache_(cache), idle_(idle), kernel_(std::move(kernel)) {}
+    explicit KernelLease(cl::Kernel own) : own_(std::move(own)), kernel_(&own_), busy_(nullptr) {}
+    KernelLease(cl::Kernel* threads, bool* busy) : kernel_(threads), busy_(busy) { *busy_ = true; }
     KernelLease(KernelLease&& other) noexcept
-        : cache_(std::exchange(other.cache_, nullptr)), idle_(other.idle_), kernel_(std::move(other.kernel_)) {}
+        : own_(std::move(other.own_)), kernel_(other.busy_ ? other.kernel_ : &own_),
+          busy_(std::exchange(other.busy_, nullptr))
+    {
+    }
     KernelLease(const KernelLease&) = delete;
     KernelLease& operator=(const KernelLease&) = delete;
     KernelLease& operator=(KernelLease&&) = delete;
-    ~KernelLease();
+    ~KernelLease()
+    {
+        if (busy_)
+            *busy_ = false;
+    }
 
-    cl::Kernel& operator*() { return kernel_; }
-    cl::Kernel* operator->() { return &kernel_; }
+    cl::Kernel& operator*() { return *kernel_; }
+    cl::Kernel* operator->() { return kernel_; }
 
 private:
-    ProgramCache* cache_;
-    std::vector<cl::Kernel>* idle_;
-    cl::Kernel kernel_;
+    cl::Kernel own_;     // a kernel of the lease's own, when the thread's was busy
+    cl::Kernel* kernel_; // &own_ or the thread's kernel
+    bool* busy_;         // the thread's flag for its kernel, null for a kernel of the lease's own
 };
 
 class ProgramCache {
 public:
-    explicit ProgramCache(cl::Context context) : context_(std::move(context)) {}
+    explicit ProgramCache(cl::Context context);
+    ~ProgramCache();
+    ProgramCache(const ProgramCache&) = delete;
+    ProgramCache& operator=(const ProgramCache&) = delete;
 
     // The cache every Sampler on `context` shares, created on first use and
     // kept while a Sampler holds it.
@@ -59,7 +71,7 @@ public:
     // The program of embedded file `file` built for `device` with `options`.
     cl::Program get(const cl::Device& device, const std::string& file, const std::string& options);
 
-    // Kernel `name` of that program, lent until the lease ends.
+    // Kernel `name` of that program, lent to the calling thread until the lease ends.
     KernelLease kernel(const cl::Device& device, const std::string& file, const std::string& options,
                        const std::string& name);
 
@@ -69,17 +81,10 @@ public:
     std::size_t loaded_from_disk() const;
 
 private:
-    friend class KernelLease;
-    struct Variant {
-        cl::Program program;
-        std::map<std::string, std::vector<cl::Kernel>> idle;  // by kernel name
-    };
-    Variant& variant(const cl::Device& device, const std::string& file, const std::string& options);
-    void give_back(std::vector<cl::Kernel>* idle, cl::Kernel kernel);
-
     cl::Context context_;
+    const std::uint64_t serial_;  // unique in the process: names this cache in the threads' kernel tables
     mutable std::mutex mutex_;
-    std::map<std::pair<cl_device_id, std::string>, Variant> programs_;  // std::map: stable addresses
+    std::map<std::pair<cl_device_id, std::string>, cl::Program> programs_;
     std::size_t loaded_from_disk_ = 0;
 };
 

@@ -8,6 +8,7 @@
 //                                         {ggxcl::Field::m, ggxcl::Field::pdf_m});
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -231,8 +232,9 @@ private:
     cl::Device device_;
     cl::CommandQueue queue_;
     std::shared_ptr<ProgramCache> programs_;
-    std::uint64_t chunk_size_ = 1u << 20;
-    std::size_t work_group_size_ = 0;     // 0: automatic
+    // Settings and the counter are atomic: any thread may set or read them while others draw.
+    std::atomic<std::uint64_t> chunk_size_{1u << 20};
+    std::atomic<std::size_t> work_group_size_{0};  // 0: automatic
     // What the launches need to know of the device, read once.
     std::size_t device_max_group_ = 1;   // CL_DEVICE_MAX_WORK_GROUP_SIZE
     std::uint64_t max_alloc_ = 0;        // CL_DEVICE_MAX_MEM_ALLOC_SIZE
@@ -240,7 +242,7 @@ private:
     std::uint32_t compute_units_ = 1;    // CL_DEVICE_MAX_COMPUTE_UNITS
     bool cpu_ = false;                   // CL_DEVICE_TYPE includes CL_DEVICE_TYPE_CPU
     bool host_unified_ = false;          // CL_DEVICE_HOST_UNIFIED_MEMORY
-    std::uint64_t memory_retries_ = 0;
+    std::atomic<std::uint64_t> memory_retries_{0};
 };
 
 } // namespace ggxcl

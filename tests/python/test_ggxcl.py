@@ -1,6 +1,6 @@
 """test_ggxcl.py - the ggxcl Python module against the C++ library and the
-`ggx` tool: the same seed and range give the bits `ggx sample` writes for
-every method; pdf equals the pdf_o field; the histogram passes its
+`ggx` tool: the same seed and range give the bits `ggx sample` writes and
+the bits C++ `Sampler::generate` returns, for every method; pdf equals the pdf_o field; the histogram passes its
 chi-square and rejects another method's pdf (negative control); the furnace
 equals the mean of the weights; per-sample arrays and the caller's
 uniforms; out= arrays; bad input raises errors naming the argument; a
@@ -8,8 +8,9 @@ signal raises KeyboardInterrupt in the middle of a long call; pyopencl
 buffers written by Sampler.enqueue on a pyopencl queue equal sample(), its
 events chain, and a buffer too small raises InvalidArgument.
 
-Run by CTest (test_python) with PYTHONPATH at the build tree's python/ and
-GGX_BINARY the `ggx` tool.
+Run by CTest (test_python) with PYTHONPATH at the build tree's python/,
+GGX_BINARY the `ggx` tool and GGX_GENERATE_DUMP generate_dump (a C++
+program writing generate's planar floats).
 """
 import json
 import os
@@ -23,6 +24,7 @@ import pytest
 import ggxcl
 
 GGX = os.environ.get("GGX_BINARY", "ggx")
+GENERATE_DUMP = os.environ.get("GGX_GENERATE_DUMP")
 FIELDS = ("m", "o", "pdf_m", "pdf_o", "weight")
 
 
@@ -52,6 +54,25 @@ def test_sample_equals_ggx_sample_bit_for_bit(sampler, tmp_path, method):
     assert np.array_equal(columns.view(np.uint32), rows.view(np.uint32))
     side = json.loads((tmp_path / "s.json").read_text())
     assert side["method"] == method
+
+
+@pytest.mark.parametrize("method", ggxcl.methods)
+def test_sample_equals_cpp_generate_bit_for_bit(sampler, tmp_path, method):
+    if GENERATE_DUMP is None:
+        pytest.fail("GGX_GENERATE_DUMP is not set (CTest sets it to the generate_dump program)")
+    n, alpha = 3001, (0.3, 0.3) if method == "caps-iso" else (0.15, 0.6)
+    raw = tmp_path / "generate.f32"
+    subprocess.run([GENERATE_DUMP, method, str(alpha[0]), str(alpha[1]), "70", "35", "11", "4096", str(n), str(raw)],
+                   check=True)
+    planes = np.fromfile(raw, dtype=np.float32)
+    d = sampler.sample(method, n, alpha=alpha, theta=70, phi=35, seed=11, first=4096, fields=FIELDS + ("u",))
+    at = 0
+    for field, columns in (("m", 3), ("o", 3), ("pdf_m", 1), ("pdf_o", 1), ("weight", 1), ("u", 2)):
+        expected = planes[at:at + columns * n].reshape(columns, n).T
+        at += columns * n
+        got = d[field].reshape(n, columns)
+        assert np.array_equal(got.view(np.uint32), expected.view(np.uint32)), field
+    assert at == planes.size
 
 
 def test_sobol_and_the_callers_uniforms(sampler):

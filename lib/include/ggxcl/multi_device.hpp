@@ -2,7 +2,8 @@
 // range goes to sampler k mod S, the samplers run in parallel threads, and
 // the sink receives the chunks in order.  Sample k depends only on
 // (seed, k), so the result has the same bits as one device of the same type
-// would give.  At most two chunks per sampler wait in memory.
+// would give.  At most two chunks per sampler wait in memory.  It may be
+// called from several threads at once; the sink runs on the calling thread.
 #pragma once
 
 #include <vector>

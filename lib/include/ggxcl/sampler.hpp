@@ -94,6 +94,11 @@ struct FurnaceSums {
     double variance() const;  // per-sample variance of the weight
 };
 
+// Threads: every member of a Sampler may be called from several threads at
+// once, with the bits one thread gets; the calls without a queue argument
+// share the sampler's own queue, so for parallel launches give each thread
+// its own queue and call enqueue*().  README "Threads" has the contract.
+//
 // Errors: InvalidArgument for bad arguments, ClError for OpenCL failures,
 // DeviceLost (a ClError) when the device stops working mid-call; a call
 // that throws has delivered only whole chunks, in order, to a ChunkSink.

@@ -1,5 +1,6 @@
 // cmd_sample.cpp - `ggx sample`: samples of one method into a .npy, .csv or
-// .ply with a JSON sidecar, on one device or split across several.
+// .ply with a JSON sidecar, on one device or split across several, or one
+// shard of such a job (--shard, see shard_option.hpp).
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -8,16 +9,24 @@
 #include "commands.hpp"
 #include "sample_job.hpp"
 #include "sample_options.hpp"
+#include "shard_option.hpp"
 #include "uniforms_file.hpp"
 
 namespace ggxapp {
 
 namespace {
 
+// A checked job and, with --shard, what the summary says of the shard.
+struct PreparedSample {
+    SampleJob job;
+    std::string shard_note;     // "shard 1/3 (from ...): samples [a, b) of [c, d)", else empty
+    std::string shard_warning;  // a doubt about the launcher's environment, else empty
+};
+
 struct SampleCommand {
     SampleOptions options;
-    std::string count, first = "0", fields = "m,o,pdf_m,pdf_o,weight", out, devices, uniforms;
-    bool fields_given = false, all_devices = false, sequence_given = false;
+    std::string count, first = "0", fields = "m,o,pdf_m,pdf_o,weight", out, devices, uniforms, shard;
+    bool fields_given = false, all_devices = false, sequence_given = false, shard_given = false;
 
     // One sampler per device of --devices / --all-devices, else the one of --device.
     std::vector<std::unique_ptr<ggxcl::Sampler>> samplers() const
@@ -38,6 +47,34 @@ struct SampleCommand {
     }
 
     // Every option checked; the --out folder is checked by run_sample.
+    PreparedSample prepare() const
+    {
+        PreparedSample prepared{job(), "", ""};
+        if (shard_given)
+            take_shard(prepared);
+        else if (out.find("{shard}") != std::string::npos)
+            throw UsageError("--out", out, "a path without {shard}, which only --shard replaces");
+        return prepared;
+    }
+
+    // Narrows the whole job to the shard --shard names: its range, its rows
+    // of --uniforms and its file.
+    void take_shard(PreparedSample& prepared) const
+    {
+        Shard part = parse_shard(shard);
+        SampleJob& job = prepared.job;
+        const ggxcl::SampleRange whole = job.range;
+        job.range = shard_range(whole, part);
+        job.out = shard_out_path(out, part);
+        if (!job.per_sample.uniforms.empty()) {
+            auto rows = job.per_sample.uniforms.begin() + std::ptrdiff_t(job.range.first - whole.first);
+            job.per_sample.uniforms.assign(rows, rows + std::ptrdiff_t(job.range.count));
+        }
+        prepared.shard_note = describe_shard(part, job.range, whole);
+        prepared.shard_warning = part.warning;
+    }
+
+    // The whole job (before --shard).
     SampleJob job() const
     {
         SampleJob job;
@@ -80,15 +117,27 @@ struct SampleCommand {
     }
 };
 
-void run_sample(const SampleCommand& command, const SampleJob& job)
+void run_sample(const SampleCommand& command, const PreparedSample& prepared)
 {
+    const SampleJob& job = prepared.job;
+    if (!prepared.shard_warning.empty())
+        std::cerr << "ggx: warning: " << prepared.shard_warning << "\n";
     check_writable_folder("--out", job.out);
     std::vector<std::unique_ptr<ggxcl::Sampler>> owned = command.samplers();
     std::vector<ggxcl::Sampler*> samplers;
     for (auto& s : owned)
         samplers.push_back(s.get());
     run_sample_job(samplers, job);
-    std::cout << job.out << ": " << job.range.count << " samples of " << command.options.method << "\n";
+    std::cout << job.out << ": " << job.range.count << " samples of " << command.options.method
+              << (prepared.shard_note.empty() ? "" : ", " + prepared.shard_note) << "\n";
+}
+
+// What the prepared job will sample: nothing for an empty shard.
+std::vector<Batch> batches_of(const SampleJob& job)
+{
+    if (job.range.count == 0)
+        return {};
+    return {{job.params, job.range}};
 }
 
 } // namespace
@@ -99,23 +148,36 @@ Prepare add_sample_command(CLI::App& app)
     CLI::App* cmd = app.add_subcommand("sample", "Write samples of one method to a .npy file with a JSON sidecar");
     state->options.add_method_options(*cmd);
     state->options.add_view_options(*cmd);
-    cmd->add_option("-n,--count", state->count, "number of samples: 1000, 1e6 or 2^24 (default with --uniforms: its rows)");
-    cmd->add_option("--first", state->first, "index of the first sample (for shards)")->capture_default_str();
+    cmd->add_option("-n,--count", state->count,
+                    "number of samples: 1000, 1e6 or 2^24 (default with --uniforms: its rows); with --shard, of "
+                    "the whole job");
+    cmd->add_option("--first", state->first, "index of the first sample (with --shard, of the whole job)")
+        ->capture_default_str();
+    CLI::Option* shard = cmd->add_option(
+        "--shard", state->shard,
+        "write only shard R of S of the job: R/S (0 <= R < S; samples [N*R/S, N*(R+1)/S) from --first, and those "
+        "rows of --uniforms), or auto: R and S of the launcher (OMPI_COMM_WORLD_RANK/SIZE, PMI_RANK/SIZE, "
+        "SLURM_ARRAY_TASK_ID/COUNT less _MIN, SLURM_PROCID/NTASKS); --out must contain {shard}, replaced by R as "
+        "0007; a shard may be empty (S > N); join the shards with `ggx merge`");
     CLI::Option* fields = cmd->add_option("--fields", state->fields,
                                           "columns, in order, of m,o,pdf_m,pdf_o,weight,u (.ply: o or m)")
                               ->capture_default_str();
-    cmd->add_option("--out", state->out, "output .npy, .csv or .ply (a .json sidecar goes beside it)")->required();
+    cmd->add_option("--out", state->out, "output .npy, .csv or .ply (a .json sidecar goes beside it; with "
+                                         "--shard it contains {shard})")
+        ->required();
     cmd->add_option("--devices", state->devices, "split the job across these devices: selectors separated by commas");
     cmd->add_flag("--all-devices", state->all_devices, "split the job across every device of the machine");
     cmd->add_option("--uniforms", state->uniforms,
                     "the uniforms of each sample: a float32 or float64 .npy of shape (N, 2), values in [0, 1)");
-    return [cmd, state, fields]() -> std::optional<Work> {
+    return [cmd, state, fields, shard]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
         state->fields_given = fields->count() > 0;
+        state->shard_given = shard->count() > 0;
         state->sequence_given = cmd->get_option("--sequence")->count() > 0;
-        SampleJob job = state->job();
-        return Work{[state, job] { run_sample(*state, job); }, {{job.params, job.range}}};
+        PreparedSample prepared = state->prepare();
+        std::vector<Batch> batches = batches_of(prepared.job);
+        return Work{[state, prepared] { run_sample(*state, prepared); }, batches};
     };
 }
 

@@ -151,9 +151,10 @@ void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJo
         progress.advance(offset + chunk.count);
     };
     const ggxcl::FieldSet fields(job.fields);
-    if (samplers.size() == 1)
+    const bool empty = job.range.count == 0;  // a shard with no samples (--shard R/S, S > N): no rows, a sidecar
+    if (!empty && samplers.size() == 1)
         samplers.front()->generate_chunk_views(job.params, job.range, fields, write_chunk, job.per_sample);
-    else
+    else if (!empty)
         ggxcl::generate_split(samplers, job.params, job.range, fields,
                               [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
                                   write_chunk(ggxcl::view_of(chunk), offset);

@@ -2,9 +2,11 @@
 # examples/slurm_shards.sh: run without Slurm (every shard in turn, then
 # `ggx merge`), its merged file and sidecar must equal, byte for byte, one
 # `ggx sample` run over the whole range.  Inputs: GGX, SCRIPT, WORK_DIR.
+# (tests/schedulers/test_slurm_cluster.sh runs it under a real Slurm.)
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
-execute_process(COMMAND ${CMAKE_COMMAND} -E env SHARDS=3 SHARD_SIZE=20011 GGX=${GGX} OUT=${WORK_DIR}/shards
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=SLURM_ARRAY_TASK_ID SHARDS=3 SAMPLES=60033 GGX=${GGX}
+                        OUT=${WORK_DIR}/shards
                         bash ${SCRIPT}
                 RESULT_VARIABLE sharded OUTPUT_VARIABLE log ERROR_VARIABLE log)
 execute_process(COMMAND ${GGX} sample --method caps --alpha 0.2 --theta 70 --seed 7 --fields o,pdf_o,weight

@@ -127,6 +127,31 @@ NpyArray parse_npy(std::istream& in, const std::string& path)
     return array;
 }
 
+NpyRowReader::NpyRowReader(const std::string& path) : path_(path), in_(path, std::ios::binary)
+{
+    if (!in_)
+        throw std::runtime_error("cannot read '" + path + "'");
+    NpyHeader header = parse_header(in_, path);
+    if (header.descr != "<f4")
+        throw std::runtime_error("'" + path + "' is not a 2-D float32 C-order .npy file");
+    if (header.columns != 0 && header.rows > header.data_bytes / sizeof(float) / header.columns)
+        throw std::runtime_error("'" + path + "' is shorter than its shape says");
+    rows_ = header.rows;
+    columns_ = header.columns;
+}
+
+bool NpyRowReader::next(std::vector<float>& chunk, std::uint64_t max_rows)
+{
+    const std::uint64_t n = std::min(max_rows, rows_ - done_);
+    if (n == 0)
+        return false;
+    chunk.resize(n * columns_);
+    if (!in_.read(reinterpret_cast<char*>(chunk.data()), std::streamsize(chunk.size() * sizeof(float))))
+        throw std::runtime_error("'" + path_ + "' is shorter than its shape says");
+    done_ += n;
+    return true;
+}
+
 NpyDoubles read_npy_doubles(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);

@@ -1,10 +1,11 @@
 // npy_file.hpp - NumPy .npy version 1.0 files of little-endian float32 with
 // shape (rows, columns), C order: a streaming writer (rows arrive in
 // chunks, the file is renamed into place when complete) and readers (of
-// float32, and of float32 or float64 as doubles).
+// float32 whole or rows at a time, and of float32 or float64 as doubles).
 #pragma once
 
 #include <cstdint>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,22 @@ void write_npy_f64(const std::string& path, std::uint64_t rows, std::uint64_t co
 // on anything else (another format, a shape its bytes do not fill).
 NpyArray read_npy(const std::string& path);
 NpyArray parse_npy(std::istream& in, const std::string& name);
+
+// A float32 C-order 2-D .npy read rows at a time, so that files larger than
+// memory stream through a fixed buffer (ggx merge).  Throws like read_npy.
+class NpyRowReader {
+public:
+    explicit NpyRowReader(const std::string& path);
+    std::uint64_t rows() const { return rows_; }
+    std::uint64_t columns() const { return columns_; }
+    // Replaces `chunk` by the next rows (at most max_rows, row-major); false at the end.
+    bool next(std::vector<float>& chunk, std::uint64_t max_rows);
+
+private:
+    std::string path_;
+    std::ifstream in_;
+    std::uint64_t rows_ = 0, columns_ = 0, done_ = 0;
+};
 
 // A float32 or float64 C-order 2-D .npy, its values as doubles (exact).
 struct NpyDoubles {

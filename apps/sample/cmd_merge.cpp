@@ -2,6 +2,7 @@
 // --first ranges into the file one run over the whole range writes, byte
 // for byte (.npy or .csv), after checking that their sidecars agree on
 // everything but the range.
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
@@ -57,8 +58,15 @@ nlohmann::json merged_sidecar(const std::vector<std::string>& shards)
 void merge_npy(const std::vector<std::string>& shards, const std::string& out, std::uint64_t rows, std::size_t columns)
 {
     NpyWriter writer(out, rows, columns);
-    for (const std::string& shard : shards)
-        writer.append(read_npy(shard).data);
+    std::vector<float> chunk;  // 8 MiB at a time: shards may be larger than memory
+    const std::uint64_t chunk_rows = std::max<std::uint64_t>(1, (8u << 20) / sizeof(float) / std::max<std::size_t>(1, columns));
+    for (const std::string& shard : shards) {
+        NpyRowReader reader(shard);
+        if (reader.columns() != columns)
+            throw UsageError("SHARD", shard, "a shard of the sidecar's " + std::to_string(columns) + " columns");
+        while (reader.next(chunk, chunk_rows))
+            writer.append(chunk);
+    }
     writer.commit();
 }
 

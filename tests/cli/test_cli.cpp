@@ -275,7 +275,8 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
     fs::remove_all(dir);
 }
 
-TEST_CASE("ggx merge refuses a damaged shard: a sidecar without its fields, a .npy shorter than its shape")
+TEST_CASE("ggx merge refuses a damaged shard: a sidecar without its fields, a .npy shorter than its shape or of "
+          "other columns")
 {
     fs::path dir = scratch() / "damaged";
     fs::create_directories(dir);
@@ -301,6 +302,14 @@ TEST_CASE("ggx merge refuses a damaged shard: a sidecar without its fields, a .n
     CAPTURE(run.err);
     CHECK(run.status == 1);
     CHECK(run.err.find("shorter than its shape says") != std::string::npos);
+    CHECK(!fs::exists(dir / "m.npy"));
+    // b.npy replaced by a .npy of 1 column (weight) beside b.json's 9.
+    REQUIRE(ggx("sample --method caps -n 100 --first 100 --fields weight --out " + (dir / "w.npy").string()).status == 0);
+    fs::copy_file(dir / "w.npy", dir / "b.npy", fs::copy_options::overwrite_existing);
+    run = ggx(merge);
+    CAPTURE(run.err);
+    CHECK(run.status == 2);
+    CHECK(run.err.find("columns") != std::string::npos);
     CHECK(!fs::exists(dir / "m.npy"));
     fs::remove_all(dir);
 }

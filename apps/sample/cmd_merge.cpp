@@ -1,8 +1,10 @@
 // cmd_merge.cpp - `ggx merge`: joins shards written with consecutive
 // --first ranges into the file one run over the whole range writes, byte
 // for byte (.npy or .csv), after checking that their sidecars agree on
-// everything but the range.
+// everything but the range; or, with --manifest, leaves the shards where
+// they are and writes one JSON file that lists them in order.
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -11,6 +13,7 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "npy_file.hpp"
+#include "report_text.hpp"
 #include "sidecar_reader.hpp"
 #include "sample_job.hpp"
 
@@ -113,18 +116,48 @@ void run_merge(const std::vector<std::string>& shards, const std::string& out, F
     std::cout << out << ": " << sidecar["count"] << " samples from " << shards.size() << " shards\n";
 }
 
+// The merged sidecar plus "shards": each shard's file (relative to the
+// manifest's folder), first index and count, in order.  Nothing is copied.
+void write_manifest(const std::vector<std::string>& shards, const std::string& manifest)
+{
+    check_writable_folder("--manifest", manifest);
+    nlohmann::json doc = merged_sidecar(shards);
+    doc["shards"] = nlohmann::json::array();
+    for (const std::string& shard : shards) {
+        nlohmann::json part = read_sidecar(shard);
+        doc["shards"].push_back(
+            {{"file", relative_to(shard, manifest)}, {"first", part["first"]}, {"count", part["count"]}});
+    }
+    write_text_file(manifest, doc.dump(2) + "\n");
+    std::cout << manifest << ": " << doc["count"] << " samples in " << shards.size() << " shards, left in place\n";
+}
+
 } // namespace
 
 Prepare add_merge_command(CLI::App& app)
 {
     auto shards = std::make_shared<std::vector<std::string>>();
-    auto out = std::make_shared<std::string>();
-    CLI::App* cmd = app.add_subcommand("merge", "Join shards of consecutive --first ranges into one file (.npy or .csv)");
-    cmd->add_option("--out", *out, "merged output, same extension as the shards")->required();
+    auto out = std::make_shared<std::string>(), manifest = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand("merge", "Join shards of consecutive --first ranges into one file (.npy or .csv), "
+                                                "or list them in a manifest");
+    CLI::Option* out_option = cmd->add_option("--out", *out, "merged output, same extension as the shards");
+    cmd->add_option("--manifest", *manifest,
+                    "instead of --out: a .json listing the shards in order (checked like a merge), nothing copied")
+        ->excludes(out_option);
     cmd->add_option("shards", *shards, "shard files in order of --first")->required();
-    return [cmd, shards, out]() -> std::optional<Work> {
+    return [cmd, shards, out, manifest]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
+        if (!manifest->empty()) {
+            if (std::filesystem::path(*manifest).extension() != ".json")
+                throw UsageError("--manifest", *manifest, "a path ending in .json");
+            for (const std::string& shard : *shards)
+                if (format_of("SHARD", shard) == Format::ply)
+                    throw UsageError("SHARD", shard, "shards in .npy or .csv");
+            return Work{[shards, manifest] { write_manifest(*shards, *manifest); }, {}};
+        }
+        if (out->empty())
+            throw UsageError("--out", "(none)", "the merged file, or --manifest FILE.json");
         Format format = check_formats(*shards, *out);
         return Work{[shards, out, format] { run_merge(*shards, *out, format); }, {}};
     };

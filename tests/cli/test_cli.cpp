@@ -389,6 +389,48 @@ TEST_CASE("shards with consecutive --first ranges merge to exactly the one-run f
     }
 }
 
+TEST_CASE("ggx merge --manifest lists the shards in order, checked like a merge, and copies nothing")
+{
+    fs::path dir = scratch() / "manifest";
+    fs::create_directories(dir / "parts");
+    const std::string common = "sample --method caps --alpha 0.2 --theta 70 --seed 3 -n 5000 ";
+    for (const char* shard : {"0/3", "1/3", "2/3"})
+        REQUIRE(ggx(common + "--shard " + shard + " --out " + (dir / "parts" / "c-{shard}.npy").string()).status == 0);
+    REQUIRE(ggx(common + "--out " + (dir / "one.npy").string()).status == 0);
+    const std::string parts = (dir / "parts" / "c-0000.npy").string() + " " + (dir / "parts" / "c-0001.npy").string() +
+                              " " + (dir / "parts" / "c-0002.npy").string();
+    REQUIRE(ggx("merge --manifest " + (dir / "all.json").string() + " " + parts).status == 0);
+    nlohmann::json manifest = nlohmann::json::parse(read_all(dir / "all.json"));
+    nlohmann::json one = nlohmann::json::parse(read_all(dir / "one.json"));
+    REQUIRE(manifest["shards"].size() == 3);
+    std::uint64_t next = 0;
+    std::vector<float> rows;
+    for (const nlohmann::json& part : manifest["shards"]) {
+        CHECK(part["first"].get<std::uint64_t>() == next);
+        next += part["count"].get<std::uint64_t>();
+        ggxapp::NpyArray a = ggxapp::read_npy((dir / part["file"].get<std::string>()).string());  // relative to it
+        rows.insert(rows.end(), a.data.begin(), a.data.end());
+    }
+    CHECK(next == 5000);
+    CHECK(rows == ggxapp::read_npy((dir / "one.npy").string()).data);
+    manifest.erase("shards");
+    one.erase("device");
+    manifest.erase("device");
+    CHECK(manifest == one);  // the rest is the one-run sidecar
+    CHECK(!fs::exists(dir / "all.npy"));
+    Run wrong_order = ggx("merge --manifest " + (dir / "x.json").string() + " " + (dir / "parts" / "c-0001.npy").string() +
+                          " " + (dir / "parts" / "c-0000.npy").string());
+    CHECK(wrong_order.status == 2);
+    CHECK(wrong_order.err.find("--first") != std::string::npos);
+    CHECK(!fs::exists(dir / "x.json"));
+    Run not_json = ggx("merge --manifest " + (dir / "x.txt").string() + " " + parts);
+    CHECK(not_json.status == 2);
+    CHECK(not_json.err.find(".json") != std::string::npos);
+    Run both = ggx("merge --manifest " + (dir / "x.json").string() + " --out " + (dir / "x.npy").string() + " " + parts);
+    CHECK(both.status == 2);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("ggx bench without its native baseline still finishes and says the baseline is not available")
 {
     fs::path dir = scratch() / "no-native";

@@ -3,7 +3,7 @@
 // programs), each drawing with generate (chunked, on the Sampler's own
 // queue), enqueueing into its own buffers on its own queue, evaluating pdfs
 // and summing furnace weights, all at once, and asking for the device
-// headers; every result must equal, bit for bit, what one thread computes
+// headers and the device list; every result must equal, bit for bit, what one thread computes
 // alone.  scripts/tsan.sh runs it under
 // ThreadSanitizer.
 #include <doctest/doctest.h>
@@ -44,7 +44,7 @@ struct Results {
     ggxcl::SampleSet generated;
     std::vector<float> enqueued_m, enqueued_weight, pdfs;
     ggxcl::FurnaceSums furnace;
-    std::string include_option, device_options;
+    std::string include_option, device_options, selected_device;
 };
 
 std::vector<float> read_floats(cl::CommandQueue& queue, const cl::Buffer& buffer, std::size_t count)
@@ -73,6 +73,7 @@ Results run_task(ggxcl::Sampler& drawing, ggxcl::Sampler& enqueueing, cl::Comman
     r.furnace = drawing.furnace(t.params, t.range);
     r.include_option = ggxcl::device_include_option();
     r.device_options = ggxcl::device_options(drawing.device());
+    r.selected_device = ggxcl::select_device().label() + " of " + std::to_string(ggxcl::list_devices().size());
     return r;
 }
 
@@ -82,7 +83,7 @@ bool same_results(const Results& a, const Results& b)
            same_bits(a.enqueued_weight, b.enqueued_weight) && same_bits(a.pdfs, b.pdfs) &&
            a.furnace.count == b.furnace.count && a.furnace.sum == b.furnace.sum &&
            a.furnace.sum_of_squares == b.furnace.sum_of_squares && a.include_option == b.include_option &&
-           a.device_options == b.device_options;
+           a.device_options == b.device_options && a.selected_device == b.selected_device;
 }
 
 } // namespace

@@ -49,7 +49,7 @@ double profiled_ns(const cl::Event& done)
 // Whether a profiled duration can be the kernel time of a run that took
 // `wall_ns` from launch to finish: positive, at least 1% of it (some drivers
 // return constant or zero timestamps), and not longer than it by more than
-// timer slack.
+// timer slack.  A bench keeps the profiled times when most runs pass.
 bool plausible_profile(double event_ns, double wall_ns)
 {
     return event_ns > 0.0 && event_ns >= 0.01 * wall_ns && event_ns <= 1.5 * wall_ns + 1e6;
@@ -183,7 +183,9 @@ std::vector<Timing> DeviceTimer::time_interleaved(const std::vector<BenchTask>& 
     for (const BenchTask& task : tasks)
         launch(task, 1).wait();  // warm-up: build and JIT
     std::vector<std::vector<double>> profiled(tasks.size()), wall(tasks.size());
-    bool plausible = true;
+    // Broken timestamps fail every run; a loaded machine only delays some
+    // launches past 100x their kernel (small runs): the majority decides.
+    int implausible = 0, runs = 0;
     for (int r = 0; r < repeats; ++r)
         for (std::size_t t = 0; t < tasks.size(); ++t) {
             auto start = std::chrono::steady_clock::now();
@@ -191,13 +193,15 @@ std::vector<Timing> DeviceTimer::time_interleaved(const std::vector<BenchTask>& 
             done.wait();
             const double wall_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
             const double event_ns = profiled_ns(done);
-            if (plausible && !plausible_profile(event_ns, wall_ns)) {
-                plausible = false;
+            ++runs;
+            if (!plausible_profile(event_ns, wall_ns) && implausible++ == 0)
                 plausible_note_ = describe_implausible(event_ns, wall_ns);
-            }
             profiled[t].push_back(event_ns / count_of(tasks[t].job));
             wall[t].push_back(wall_ns / count_of(tasks[t].job));
         }
+    const bool plausible = 2 * implausible <= runs;
+    if (!plausible)
+        plausible_note_ += " (" + std::to_string(implausible) + " of " + std::to_string(runs) + " runs implausible)";
     wall_clock_ = !plausible;
     std::vector<Timing> timings;
     for (std::vector<double>& samples : plausible ? profiled : wall)

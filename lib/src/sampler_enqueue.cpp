@@ -190,6 +190,10 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
     check_launch_count(count, stride);
     SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
+        const std::uint64_t planes_stride = stride ? stride : count;
+        check_buffer_sizes(nullptr, inputs, unit, planes_stride);
+        check_buffer_size(directions, "directions", 3, planes_stride);
+        check_buffer_size(pdf_out, "pdf_out", 1, planes_stride);
         std::string options = build_options(unit, 0, inputs);
         auto make = [&](const std::string& name) {
             KernelLease lease = kernel(bulk_file, name, options);

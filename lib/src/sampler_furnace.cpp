@@ -11,6 +11,7 @@
 #include "ggxcl/sampler.hpp"
 #include "device_contract.hpp"
 #include "kernel_launch.hpp"
+#include "queue_waits.hpp"
 
 namespace ggxcl {
 
@@ -73,6 +74,8 @@ cl::Event Sampler::enqueue_furnace_variant(cl::CommandQueue& queue, const Sample
         throw InvalidArgument("count", std::to_string(range.count), "1 .. 2^31 per enqueue_furnace");
     SampleParams unit = normalized(params);
     return detail::translate_cl_errors([&] {
+        detail::check_buffer_sizes(nullptr, inputs, unit, range.count);
+        detail::check_buffer_size(sums, "sums", 2, furnace_items(range.count));
         // The estimator sums weights (its kernel ignores the write mask).
         const unsigned mask = detail::write_mask({Field::weight});
         KernelLease lease = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, mask, inputs, guards));
@@ -99,7 +102,7 @@ void Sampler::add_furnace_launch(const SampleParams& params, const SampleRange& 
     std::size_t used = furnace_items(range.count);
     for (bool guarded : {false, true}) {
         enqueue_furnace_variant(queue_, params, range, sums, {}, nullptr, guarded);
-        queue_.enqueueReadBuffer(sums, CL_TRUE, 0, 2 * used * sizeof(float), host.data());
+        detail::read_and_wait(queue_, sums, 0, 2 * used * sizeof(float), host.data());
         double sum = total.sum, sum_of_squares = total.sum_of_squares;  // one order of additions, whatever the launches
         if (add_partial_sums(host, used, sum, sum_of_squares) || guarded) {
             total.sum = sum;

@@ -7,6 +7,7 @@
 #include <iterator>
 
 #include "cl_call.hpp"
+#include "queue_waits.hpp"
 #include "device_faults.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
@@ -80,7 +81,7 @@ struct ChunkInputs {
 
     static void write(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float>& data)
     {
-        queue.enqueueWriteBuffer(buffer, CL_TRUE, 0, bytes(data.size()), data.data());
+        detail::write_and_wait(queue, buffer, 0, bytes(data.size()), data.data());
     }
 };
 
@@ -95,19 +96,15 @@ void read_planes(cl::CommandQueue& queue, const cl::Buffer& buffer, int planes, 
 
 // Waits for everything on the queue when it goes out of scope, so that no
 // copy into a host vector is in flight when the vector is freed (a sink or
-// a launch that throws leaves commands behind).  It waits on a marker, which
-// completes after every command before it: Mesa rusticl's clFinish returns
-// at once when a clFlush came just before it (measured: the last fetch's
-// marker still CL_QUEUED after clFinish, and the read then wrote into freed
-// memory).
+// a launch that throws leaves commands behind).  It waits on a marker, not
+// clFinish (queue_waits.hpp: rusticl's clFinish after a flush returned with
+// the last fetch still queued, which then wrote into freed memory).
 struct QueueDrain {
     cl::CommandQueue& queue;
     ~QueueDrain()
     {
         try {
-            cl::Event all_done;
-            queue.enqueueMarkerWithWaitList(nullptr, &all_done);
-            all_done.wait();
+            detail::drain(queue);
         } catch (...) {  // a lost device: nothing more will run
         }
     }
@@ -324,7 +321,7 @@ std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Ve
                 inputs.upload(queue_, per_sample, start, n, capacity);
                 ChunkInputs::write(queue_, dirs, planar_units(directions, start, n, capacity));
                 enqueue_pdf(queue_, params, std::uint32_t(n), dirs, pdfs, std::uint32_t(capacity), inputs.buffers);
-                queue_.enqueueReadBuffer(pdfs, CL_TRUE, 0, bytes(n), result.data() + start);
+                detail::read_and_wait(queue_, pdfs, 0, bytes(n), result.data() + start);
                 start += n;
             }
         });

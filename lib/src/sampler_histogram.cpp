@@ -10,6 +10,7 @@
 #include "ggxcl/sampler.hpp"
 #include "device_contract.hpp"
 #include "kernel_launch.hpp"
+#include "queue_waits.hpp"
 
 namespace ggxcl {
 
@@ -69,7 +70,7 @@ struct Sampler::HistogramRun {
         indices = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, n * sizeof(cl_uint));
         if (detail::kernel_writes_look_uninitialized(sampler.device_)) {
             const std::vector<cl_uint> zeros(n, 0u);
-            sampler.queue_.enqueueWriteBuffer(indices, CL_TRUE, 0, n * sizeof(cl_uint), zeros.data());
+            detail::write_and_wait(sampler.queue_, indices, 0, n * sizeof(cl_uint), zeros.data());
         }
         counters = 4 * sampler.compute_units_;
     }
@@ -88,13 +89,13 @@ struct Sampler::HistogramRun {
         // Zeroed by a write, not clEnqueueFillBuffer: Oclgrind's checker takes
         // filled memory as uninitialized (shown by a minimal kernel in test_oclgrind).
         const std::vector<cl_uint> zeros(bins + 1, 0u);
-        sampler.queue_.enqueueWriteBuffer(counts, CL_TRUE, 0, (bins + 1) * sizeof(cl_uint), zeros.data());
+        detail::write_and_wait(sampler.queue_, counts, 0, (bins + 1) * sizeof(cl_uint), zeros.data());
     }
 
     std::vector<cl_uint> read_counts() const
     {
         std::vector<cl_uint> host(bins + 1);
-        sampler.queue_.enqueueReadBuffer(counts, CL_TRUE, 0, (bins + 1) * sizeof(cl_uint), host.data());
+        detail::read_and_wait(sampler.queue_, counts, 0, (bins + 1) * sizeof(cl_uint), host.data());
         return host;
     }
 

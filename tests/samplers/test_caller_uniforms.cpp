@@ -251,3 +251,36 @@ TEST_CASE("enqueue refuses buffers smaller than their planes of the stride, nami
     in.uniforms = planar_buffer(sequence_uniforms(Sequence::philox, 0, 0, n), stride);  // control: big enough
     CHECK_NOTHROW(s.enqueue(s.queue(), params_of(ggxcl::Method::caps), {0, 0, n}, out, stride, in).wait());
 }
+
+TEST_CASE("enqueue_pdf and enqueue_furnace refuse buffers too small, naming them")
+{
+    auto& s = ggxtest::sampler();
+    const std::uint32_t n = 1000;
+    const ggxcl::SampleParams p = params_of(ggxcl::Method::caps);
+    cl::Buffer directions(s.context(), CL_MEM_READ_ONLY, 3 * n * sizeof(float));
+    cl::Buffer pdfs(s.context(), CL_MEM_READ_WRITE, n * sizeof(float));
+    cl::Buffer short_directions(s.context(), CL_MEM_READ_ONLY, 2 * n * sizeof(float));
+    CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] { s.enqueue_pdf(s.queue(), p, n, short_directions, pdfs); })
+              .find("invalid directions '8000 bytes'") == 0);
+    CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] { s.enqueue_pdf(s.queue(), p, n, directions, pdfs, 1024); })
+              .find("invalid directions '12000 bytes': allowed is at least 12288 bytes") == 0);
+    cl::Buffer short_pdfs(s.context(), CL_MEM_READ_WRITE, (n - 1) * sizeof(float));
+    CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] { s.enqueue_pdf(s.queue(), p, n, directions, short_pdfs); })
+              .find("invalid pdf_out '3996 bytes'") == 0);
+    std::vector<float> planes(3 * n, 0.0f);
+    for (std::uint32_t j = 0; j < n; ++j)
+        planes[2 * n + j] = 1.0f;  // control: +z, buffers big enough
+    s.queue().enqueueWriteBuffer(directions, CL_TRUE, 0, planes.size() * sizeof(float), planes.data());
+    CHECK_NOTHROW(s.enqueue_pdf(s.queue(), p, n, directions, pdfs).wait());
+
+    const std::size_t items = s.furnace_items(n);
+    cl::Buffer one_plane(s.context(), CL_MEM_READ_WRITE, items * sizeof(float));
+    CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] { s.enqueue_furnace(s.queue(), p, {0, 0, n}, one_plane); })
+              .find("invalid sums") == 0);
+    ggxcl::DeviceInputs in;
+    in.uniforms = cl::Buffer(s.context(), CL_MEM_READ_ONLY, n * sizeof(float));  // one plane of two
+    cl::Buffer sums(s.context(), CL_MEM_READ_WRITE, 2 * items * sizeof(float));
+    CHECK(ggxtest::message_of<ggxcl::InvalidArgument>([&] { s.enqueue_furnace(s.queue(), p, {0, 0, n}, sums, in); })
+              .find("invalid inputs.uniforms") == 0);
+    CHECK_NOTHROW(s.enqueue_furnace(s.queue(), p, {0, 0, n}, sums).wait());  // control
+}

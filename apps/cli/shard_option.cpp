@@ -3,7 +3,6 @@
 #include "shard_option.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cstdlib>
 
 #include "cli_values.hpp"
@@ -19,13 +18,11 @@ const std::string auto_flag = "--shard auto";
 // `text` as a whole number of 0 .. 2^64-1 (digits only), else nothing.
 std::optional<std::uint64_t> to_uint64(const std::string& text)
 {
-    std::uint64_t value = 0;
-    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+    try {
+        return parse_uint64("", text);
+    } catch (const UsageError&) {
         return std::nullopt;
-    auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size())
-        return std::nullopt;
-    return value;
+    }
 }
 
 std::string assignment(const std::string& name, const std::string& value) { return name + "=" + value; }

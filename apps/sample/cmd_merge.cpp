@@ -37,13 +37,23 @@ nlohmann::json without_range(nlohmann::json doc)
     return doc;
 }
 
-// The merged sidecar: the first shard's, with the whole range.
-nlohmann::json merged_sidecar(const std::vector<std::string>& shards)
+// Every shard's sidecar, in order.
+std::vector<nlohmann::json> read_sidecars(const std::vector<std::string>& shards)
 {
-    nlohmann::json merged = read_sidecar(shards.front());
+    std::vector<nlohmann::json> docs;
+    for (const std::string& shard : shards)
+        docs.push_back(read_sidecar(shard));
+    return docs;
+}
+
+// The merged sidecar: the first shard's, with the whole range, once the
+// shards' sidecars (`docs`) are checked to agree and follow each other.
+nlohmann::json merged_sidecar(const std::vector<std::string>& shards, const std::vector<nlohmann::json>& docs)
+{
+    nlohmann::json merged = docs.front();
     std::uint64_t next = merged["first"].get<std::uint64_t>() + merged["count"].get<std::uint64_t>();
     for (std::size_t k = 1; k < shards.size(); ++k) {
-        nlohmann::json doc = read_sidecar(shards[k]);
+        const nlohmann::json& doc = docs[k];
         if (next < merged["first"].get<std::uint64_t>())  // the ranges wrapped around 2^64
             throw UsageError("SHARD", shards[k], "shards whose ranges end before index 2^64");
         if (doc["first"].get<std::uint64_t>() != next)
@@ -91,20 +101,29 @@ void merge_csv(const std::vector<std::string>& shards, const std::string& out)
     file.commit();
 }
 
+// The shards' one format, .npy or .csv.
+Format shard_format(const std::vector<std::string>& shards)
+{
+    Format format = format_of("SHARD", shards.front());
+    for (const std::string& shard : shards)
+        if (format_of("SHARD", shard) != format || format == Format::ply)
+            throw UsageError("SHARD", shard, "shards of one format, .npy or .csv");
+    return format;
+}
+
 // Checks the output and the shards' formats: both .npy, or both .csv.
 Format check_formats(const std::vector<std::string>& shards, const std::string& out)
 {
-    Format format = format_of("--out", out);
-    for (const std::string& shard : shards)
-        if (format_of("SHARD", shard) != format || format == Format::ply)
-            throw UsageError("SHARD", shard, "shards of the output's format, .npy or .csv");
+    Format format = shard_format(shards);
+    if (format_of("--out", out) != format)
+        throw UsageError("--out", out, "the shards' format, .npy or .csv");
     return format;
 }
 
 void run_merge(const std::vector<std::string>& shards, const std::string& out, Format format)
 {
     check_writable_folder("--out", out);
-    nlohmann::json sidecar = merged_sidecar(shards);
+    nlohmann::json sidecar = merged_sidecar(shards, read_sidecars(shards));
     AtomicFile json_file(sidecar_path(out));
     if (format == Format::npy)
         merge_npy(shards, out, sidecar["count"].get<std::uint64_t>(), sidecar["columns"].size());
@@ -121,13 +140,12 @@ void run_merge(const std::vector<std::string>& shards, const std::string& out, F
 void write_manifest(const std::vector<std::string>& shards, const std::string& manifest)
 {
     check_writable_folder("--manifest", manifest);
-    nlohmann::json doc = merged_sidecar(shards);
+    const std::vector<nlohmann::json> parts = read_sidecars(shards);
+    nlohmann::json doc = merged_sidecar(shards, parts);
     doc["shards"] = nlohmann::json::array();
-    for (const std::string& shard : shards) {
-        nlohmann::json part = read_sidecar(shard);
+    for (std::size_t k = 0; k < shards.size(); ++k)
         doc["shards"].push_back(
-            {{"file", relative_to(shard, manifest)}, {"first", part["first"]}, {"count", part["count"]}});
-    }
+            {{"file", relative_to(shards[k], manifest)}, {"first", parts[k]["first"]}, {"count", parts[k]["count"]}});
     write_text_file(manifest, doc.dump(2) + "\n");
     std::cout << manifest << ": " << doc["count"] << " samples in " << shards.size() << " shards, left in place\n";
 }
@@ -151,9 +169,7 @@ Prepare add_merge_command(CLI::App& app)
         if (!manifest->empty()) {
             if (std::filesystem::path(*manifest).extension() != ".json")
                 throw UsageError("--manifest", *manifest, "a path ending in .json");
-            for (const std::string& shard : *shards)
-                if (format_of("SHARD", shard) == Format::ply)
-                    throw UsageError("SHARD", shard, "shards in .npy or .csv");
+            shard_format(*shards);
             return Work{[shards, manifest] { write_manifest(*shards, *manifest); }, {}};
         }
         if (out->empty())

@@ -428,6 +428,11 @@ TEST_CASE("ggx merge --manifest lists the shards in order, checked like a merge,
     CHECK(not_json.err.find(".json") != std::string::npos);
     Run both = ggx("merge --manifest " + (dir / "x.json").string() + " --out " + (dir / "x.npy").string() + " " + parts);
     CHECK(both.status == 2);
+    REQUIRE(ggx(common + "--shard 1/3 --out " + (dir / "parts" / "c-{shard}.csv").string()).status == 0);
+    Run mixed = ggx("merge --manifest " + (dir / "x.json").string() + " " + (dir / "parts" / "c-0000.npy").string() +
+                    " " + (dir / "parts" / "c-0001.csv").string());
+    CHECK(mixed.status == 2);
+    CHECK(mixed.err.find("one format") != std::string::npos);
     fs::remove_all(dir);
 }
 

@@ -6,7 +6,6 @@
 #include <array>
 #include <stdexcept>
 #include <string>
-#include <utility>
 
 namespace ggxbridge {
 
@@ -14,43 +13,25 @@ namespace {
 
 static_assert(ggxref::all_methods.size() == ggxcl::all_methods.size(), "the same methods on both sides");
 
-using MethodPair = std::pair<ggxcl::Method, ggxref::Method>;
-
-// Each library method with the reference method of the same name, in the library's order.
-const std::array<MethodPair, ggxcl::all_methods.size()>& method_pairs()
+// Both enums carry the ids of the one list of methods (checked against it where each is
+// built: lib/src/device_contract.hpp, reference/ggx_methods.cpp), so a method's id maps it.
+std::size_t method_index(int id)
 {
-    static const auto pairs = [] {
-        std::array<MethodPair, ggxcl::all_methods.size()> out{};
-        for (std::size_t k = 0; k < out.size(); ++k) {
-            const ggxcl::Method m = ggxcl::all_methods[k];
-            bool found = false;
-            for (ggxref::Method r : ggxref::all_methods)
-                if (ggxcl::method_name(m) == ggxref::method_name(r))
-                    out[k] = {m, r}, found = true;
-            if (!found)
-                throw std::logic_error("no reference method named " + std::string(ggxcl::method_name(m)));
-        }
-        return out;
-    }();
-    return pairs;
+    if (id < 0 || std::size_t(id) >= ggxcl::all_methods.size())
+        throw std::logic_error("not a method id: " + std::to_string(id));
+    return std::size_t(id);
 }
 
 } // namespace
 
 ggxref::Method reference_method(ggxcl::Method method)
 {
-    for (const MethodPair& p : method_pairs())
-        if (p.first == method)
-            return p.second;
-    throw std::logic_error("not a library method: " + std::to_string(int(method)));
+    return ggxref::all_methods[method_index(static_cast<int>(method))];
 }
 
 ggxcl::Method library_method(ggxref::Method method)
 {
-    for (const MethodPair& p : method_pairs())
-        if (p.second == method)
-            return p.first;
-    throw std::logic_error("not a reference method: " + std::to_string(int(method)));
+    return ggxcl::all_methods[method_index(static_cast<int>(method))];
 }
 
 ggxref::Params reference_params(const ggxcl::SampleParams& p)

@@ -1,6 +1,6 @@
 // reference_bridge.hpp - the one map between the library's types and the
 // double-precision reference's (reference/), used by the apps and the tests
-// alike: the method of the same name either way, and the parameters as the
+// alike: the same method either way, and the parameters as the
 // device sees them.  The reference keeps its own enum and math (that is its
 // point); only this bridge knows both.
 #pragma once
@@ -13,7 +13,7 @@
 
 namespace ggxbridge {
 
-// The method of the same name in the other enum.
+// The same method in the other enum (the same id and name).
 ggxref::Method reference_method(ggxcl::Method method);
 ggxcl::Method library_method(ggxref::Method method);
 

@@ -1,6 +1,6 @@
-// ggx_bulk_params.h - what the bulk kernels share: planar loads and stores,
-// the sample of an index in tangent or world space (GGX_WORLD_SPACE=0|1),
-// the view, roughness and normal of sample j, uniform or per sample
+// ggx_bulk_params.h - what the bulk kernels share (OpenCL C only): the
+// sample of an index in tangent or world space (GGX_WORLD_SPACE=0|1), the
+// view, roughness and normal of sample j, uniform or per sample
 // (build options GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL}=0|1), and its two
 // uniforms: from the sequence GGX_SEQUENCE (a GGX_SEQUENCE_* id of
 // ggx_contract.h, Philox by default) or, with GGX_PER_SAMPLE_UNIFORMS=1,
@@ -13,6 +13,7 @@
 #if defined(GGX_METHOD) && !defined(GGX_ONLY_METHOD)
 #define GGX_ONLY_METHOD GGX_METHOD
 #endif
+#include "ggx_kernel_io.h"
 #include "ggx_sobol.h"
 #include "ggx_world.h"
 
@@ -42,18 +43,6 @@
 #endif
 // GGX_NORMAL_IS_Z=1 (default 0, see ggx_sample_caps_iso.h): the uniform
 // normal is exactly (0, 0, 1).
-
-GGX_INLINE ggx_vec3 ggx_load3(__global const float* p, uint j, uint stride)
-{
-    return ggx_vec3_make(p[j], p[j + stride], p[j + 2u * stride]);
-}
-
-GGX_INLINE void ggx_store3(__global float* p, uint j, uint stride, ggx_vec3 v)
-{
-    p[j] = v.x;
-    p[j + stride] = v.y;
-    p[j + 2u * stride] = v.z;
-}
 
 // The view, roughness and normal of sample j, per sample or uniform, and
 // the caller's uniforms (u1, u2) with GGX_PER_SAMPLE_UNIFORMS=1.

@@ -1,6 +1,6 @@
-// ggx_common.h - shared device-side helpers for every ggxcl kernel header:
-// the inlining attribute, constants, a struct of three scalar floats and the
-// few vector operations the samplers need.
+// ggx_common.h - shared device-side helpers for every ggxcl device header:
+// constants, a struct of three scalar floats and the few vector operations
+// the samplers need (the language constructs are in ggx_platform.h).
 //
 // The math is written on scalar floats: `ggx_vec3` is a plain struct, not the
 // OpenCL `float3` vector type, so after inlining it dissolves into scalars
@@ -9,21 +9,7 @@
 #ifndef GGX_COMMON_H
 #define GGX_COMMON_H
 
-// Force inlining: PoCL vectorizes across work-items only when the
-// per-work-item code is a straight line with no calls.
-#define GGX_INLINE inline __attribute__((always_inline))
-
-// `restrict` on the bulk kernels' buffers, dropped with -DGGX_NO_RESTRICT=1:
-// the runtime sets it for devices whose compiler cannot take restrict on
-// inlined functions (Oclgrind).
-#ifndef GGX_NO_RESTRICT
-#define GGX_NO_RESTRICT 0
-#endif
-#if GGX_NO_RESTRICT
-#define GGX_RESTRICT
-#else
-#define GGX_RESTRICT restrict
-#endif
+#include "ggx_platform.h"
 
 #define GGX_PI 3.14159265358979323846f
 #define GGX_TWO_PI 6.28318530717958647692f
@@ -67,7 +53,7 @@ GGX_INLINE ggx_vec3 ggx_scale(ggx_vec3 a, float s)
 
 GGX_INLINE ggx_vec3 ggx_normalize(ggx_vec3 a)
 {
-    return ggx_scale(a, rsqrt(ggx_dot(a, a)));
+    return ggx_scale(a, ggx_rsqrt(ggx_dot(a, a)));
 }
 
 GGX_INLINE ggx_vec3 ggx_cross(ggx_vec3 a, ggx_vec3 b)
@@ -87,5 +73,21 @@ GGX_INLINE ggx_vec3 ggx_stretch(ggx_vec3 w, float ax, float ay)
 {
     return ggx_vec3_make(ax * w.x, ay * w.y, w.z);
 }
+
+// The form of a method's functions that the dispatchers of ggx_samplers.h
+// call for every method alike: the normal n (read by world-space methods)
+// and both roughnesses.  A tangent-space method's forms ignore n.
+#define GGX_TANGENT_SPACE_DISPATCH(identifier)                                                                       \
+    GGX_INLINE ggx_sample ggx_dispatch_sample_##identifier(ggx_vec3 n, ggx_vec3 i, float ax, float ay, float u1,    \
+                                                           float u2)                                                \
+    {                                                                                                                \
+        (void)n;                                                                                                     \
+        return ggx_sample_##identifier(i, ax, ay, u1, u2);                                                           \
+    }                                                                                                                \
+    GGX_INLINE float ggx_dispatch_pdf_##identifier(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)          \
+    {                                                                                                                \
+        (void)n;                                                                                                     \
+        return ggx_pdf_##identifier(i, o, ax, ay);                                                                   \
+    }
 
 #endif

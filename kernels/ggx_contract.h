@@ -1,23 +1,37 @@
 // ggx_contract.h - what the C++ runtime and the OpenCL C kernels must agree
-// on, as plain macros that both languages read: the method ids, the field
+// on, as plain macros that both languages read: the list of methods, the field
 // ids and their write-mask bits, the sequence ids of the uniforms, the
 // argument positions of every bulk kernel, and the samples per work-item of
 // the fused estimator.  The
 // runtime includes this header and checks its own enums against it at
 // compile time (lib/src/device_contract.hpp: a mismatch does not build);
-// the kernels include it and refuse an unknown method id or write mask with
-// #error.  Values used in #if stay plain integers.
+// the kernels include it and refuse an unknown method id or write mask.
+// Method ids are enumerators (not usable in #if; their count is); the other
+// values used in #if stay plain integers.  It compiles as OpenCL C, C++ and CUDA.
 #ifndef GGX_CONTRACT_H
 #define GGX_CONTRACT_H
 
-// Method ids (-DGGX_METHOD=<id>, ggx_sample_method), in ggxcl::Method order.
-#define GGX_METHOD_NDF 0
-#define GGX_METHOD_HEITZ 1
-#define GGX_METHOD_HEITZ2017 2
-#define GGX_METHOD_CAPS 3
-#define GGX_METHOD_CAPS_ISO 4
-#define GGX_METHOD_BOUNDED 5
-#define GGX_METHOD_COUNT 6
+// The methods, in id order, one line each: X(ID, identifier, name) gives
+// the id GGX_METHOD_<ID> (-DGGX_METHOD=<id>, ggx_sample_method), the C++
+// enumerator (ggxcl::Method::<identifier>, ggxref::Method::<identifier>) and
+// the name users type.  Every list of methods in the project is made from
+// this one: the enums are checked against it at compile time, the name
+// tables and the device dispatchers (ggx_samplers.h) are generated from it.
+// A new method needs its line here, its header of device functions
+// (included by ggx_samplers.h) and its reference (reference/).
+#define GGX_METHOD_LIST(X)             \
+    X(NDF, ndf, "ndf")                 \
+    X(HEITZ, heitz, "heitz")           \
+    X(HEITZ2017, heitz2017, "heitz2017") \
+    X(CAPS, caps, "caps")              \
+    X(CAPS_ISO, caps_iso, "caps-iso")  \
+    X(BOUNDED, bounded, "bounded")
+
+#define GGX_METHOD_ID_ENUMERATOR(ID, identifier, name) GGX_METHOD_##ID,
+enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
+// The number of methods, (0 +1 +1 ...): usable in #if.
+#define GGX_METHOD_COUNT_ONE(ID, identifier, name) +1
+#define GGX_METHOD_COUNT (0 GGX_METHOD_LIST(GGX_METHOD_COUNT_ONE))
 
 // Field ids, in ggxcl::Field order: the order of the sample kernel's output
 // buffers; -DGGX_WRITE_MASK=<mask> has bit (1 << id) set for each field

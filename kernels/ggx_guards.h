@@ -25,7 +25,7 @@
 
 GGX_INLINE int ggx_is_finite(float x)
 {
-    return (as_uint(x) & 0x7f800000u) != 0x7f800000u;
+    return (ggx_as_uint(x) & 0x7f800000u) != 0x7f800000u;
 }
 
 // A roughness usable by the samplers: finite and > 0 (float compares, false
@@ -33,7 +33,7 @@ GGX_INLINE int ggx_is_finite(float x)
 // on m, see below).
 GGX_INLINE int ggx_roughness_ok(float ax, float ay)
 {
-    return ax > 0.0f && ay > 0.0f && ax <= FLT_MAX && ay <= FLT_MAX;
+    return ax > 0.0f && ay > 0.0f && ax <= GGX_FLT_MAX && ay <= GGX_FLT_MAX;
 }
 
 // The fallback sample about the unit normal n: m = o = n, pdfs and weight 0.

@@ -18,7 +18,7 @@
 GGX_INLINE float ggx_t(ggx_vec3 w, float ax, float ay)
 {
     ggx_vec3 s = ggx_stretch(w, ax, ay);
-    return sqrt(ggx_dot(s, s));
+    return ggx_sqrt(ggx_dot(s, s));
 }
 
 // D(m) = 1 / (pi ax ay (mx^2/ax^2 + my^2/ay^2 + mz^2)^2) for mz > 0 (Walter 2007, eq. 33).
@@ -39,7 +39,7 @@ GGX_INLINE float ggx_D_iso(ggx_vec3 m, float alpha)
 // Smith Lambda(w) = (t(w)/|wz| - 1)/2 for wz > 0, and Lambda(-w) = 1 + Lambda(w).
 GGX_INLINE float ggx_lambda(ggx_vec3 w, float ax, float ay)
 {
-    float half_ratio = 0.5f * ggx_t(w, ax, ay) / fabs(w.z);
+    float half_ratio = 0.5f * ggx_t(w, ax, ay) / ggx_fabs(w.z);
     return w.z > 0.0f ? half_ratio - 0.5f : half_ratio + 0.5f;
 }
 
@@ -91,7 +91,7 @@ GGX_INLINE float ggx_projected_area(ggx_vec3 i, float ax, float ay)
 GGX_INLINE float ggx_vndf_pdf(ggx_vec3 m, ggx_vec3 i, float ax, float ay)
 {
     float inv = ggx_inv_iz_plus_t(i.z, ggx_t(i, ax, ay), ax, ay, i);
-    return 2.0f * fmax(0.0f, ggx_dot(i, m)) * ggx_D(m, ax, ay) * inv;
+    return 2.0f * ggx_fmax(0.0f, ggx_dot(i, m)) * ggx_D(m, ax, ay) * inv;
 }
 
 // Density of the reflection o of i about a VNDF-sampled m:
@@ -107,7 +107,7 @@ GGX_INLINE ggx_vec3 ggx_half_vector(ggx_vec3 i, ggx_vec3 o)
 {
     ggx_vec3 h = ggx_add(i, o);
     float len2 = ggx_dot(h, h);
-    float scale = len2 > 0.0f ? rsqrt(len2) : 0.0f;  // a scalar select: struct selects do not vectorize
+    float scale = len2 > 0.0f ? ggx_rsqrt(len2) : 0.0f;  // a scalar select: struct selects do not vectorize
     return ggx_scale(h, scale);
 }
 

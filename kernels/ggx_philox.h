@@ -17,10 +17,10 @@
 
 // One Philox2x32 round: one 32x32->64 multiply, its high half xored with the
 // other word and the key.
-GGX_INLINE void ggx_philox_round(uint* c0, uint* c1, uint k)
+GGX_INLINE void ggx_philox_round(ggx_uint* c0, ggx_uint* c1, ggx_uint k)
 {
-    ulong product = (ulong)GGX_PHILOX_M * (ulong)(*c0);
-    uint hi = (uint)(product >> 32), lo = (uint)product;
+    ggx_ulong product = (ggx_ulong)GGX_PHILOX_M * (ggx_ulong)(*c0);
+    ggx_uint hi = (ggx_uint)(product >> 32), lo = (ggx_uint)product;
     *c0 = hi ^ *c1 ^ k;
     *c1 = lo;
 }
@@ -28,9 +28,9 @@ GGX_INLINE void ggx_philox_round(uint* c0, uint* c1, uint k)
 // Philox2x32 with 10 rounds; the key is bumped by the Weyl constant between
 // rounds.  Fully unrolled: a loop here, inside PoCL's loop over work-items,
 // keeps the kernel from vectorizing.
-GGX_INLINE void ggx_philox2x32_10(uint* c0, uint* c1, uint k)
+GGX_INLINE void ggx_philox2x32_10(ggx_uint* c0, ggx_uint* c1, ggx_uint k)
 {
-#pragma unroll
+GGX_UNROLL
     for (int round = 0; round < 10; ++round) {
         ggx_philox_round(c0, c1, k);
         k += GGX_PHILOX_W;
@@ -38,16 +38,16 @@ GGX_INLINE void ggx_philox2x32_10(uint* c0, uint* c1, uint k)
 }
 
 // A 32-bit word to a float in [0, 1): its top 24 bits times 2^-24 (exact, never 1).
-GGX_INLINE float ggx_word_to_unit(uint word)
+GGX_INLINE float ggx_word_to_unit(ggx_uint word)
 {
     return (float)(word >> 8) * 5.9604644775390625e-8f;
 }
 
 // The two uniforms (u1, u2) of sample `index` in stream `seed` (its low 32 bits).
-GGX_INLINE void ggx_uniforms(ulong seed, ulong index, float* u1, float* u2)
+GGX_INLINE void ggx_uniforms(ggx_ulong seed, ggx_ulong index, float* u1, float* u2)
 {
-    uint c0 = (uint)index, c1 = (uint)(index >> 32);
-    ggx_philox2x32_10(&c0, &c1, (uint)seed);
+    ggx_uint c0 = (ggx_uint)index, c1 = (ggx_uint)(index >> 32);
+    ggx_philox2x32_10(&c0, &c1, (ggx_uint)seed);
     *u1 = ggx_word_to_unit(c0);
     *u2 = ggx_word_to_unit(c1);
 }

@@ -11,7 +11,7 @@
 // finite (k has reached its limit -iz^2/w^2 to float precision long before).
 GGX_INLINE float ggx_bounded_a(float ax, float ay)
 {
-    return fmin(fmin(ax, ay), 1e18f);
+    return ggx_fmin(ggx_fmin(ax, ay), 1e18f);
 }
 
 // The bound k of the cap, with w = 1 + |(ix, iy)| (supplement eq. 1 bounded below over its
@@ -21,7 +21,7 @@ GGX_INLINE float ggx_bounded_a(float ax, float ay)
 GGX_INLINE float ggx_bounded_k(ggx_vec3 i, float ax, float ay)
 {
     float a = ggx_bounded_a(ax, ay), a2 = a * a;
-    float w = 1.0f + sqrt(i.x * i.x + i.y * i.y);
+    float w = 1.0f + ggx_sqrt(i.x * i.x + i.y * i.y);
     float w2 = w * w, iz2 = i.z * i.z;
     int rough = a > 1.0f;
     float p = rough ? iz2 : w2, q = rough ? w2 : iz2;  // scalar selects: both forms are (1 - a^2) p / (p + a^2 q)
@@ -40,7 +40,7 @@ GGX_INLINE float ggx_bounded_k(ggx_vec3 i, float ax, float ay)
 GGX_INLINE float ggx_bounded_sum(ggx_vec3 i, float k, float ti, float ax, float ay)
 {
     float a = ggx_bounded_a(ax, ay), a2 = a * a;
-    float ih = sqrt(i.x * i.x + i.y * i.y), w = 1.0f + ih;
+    float ih = ggx_sqrt(i.x * i.x + i.y * i.y), w = 1.0f + ih;
     float sx = ax * i.x, sy = ay * i.y, q = sx * sx + sy * sy;
     float tz = ti + i.z;
     float rough_sum = (i.z * i.z * tz + a2 * w * (q * w / tz + 2.0f * i.z * ih)) / (i.z * i.z + a2 * w * w);
@@ -99,5 +99,7 @@ GGX_INLINE float ggx_pdf_bounded(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
     float pdf = 0.5f * ggx_D(m, ax, ay) * ggx_bounded_inv_sum(i, k, ti, ax, ay);
     return ggx_guard_pdf(inside ? pdf : 0.0f, ax, ay);
 }
+
+GGX_TANGENT_SPACE_DISPATCH(bounded)
 
 #endif

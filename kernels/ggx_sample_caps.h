@@ -14,7 +14,7 @@
 GGX_INLINE ggx_vec3 ggx_sample_cap_of_height(float lower, float height, float u1, float u2)
 {
     float z = (1.0f - u2) * height - lower;
-    float sin_theta = sqrt(clamp(1.0f - z * z, 0.0f, 1.0f));
+    float sin_theta = ggx_sqrt(ggx_clamp(1.0f - z * z, 0.0f, 1.0f));
     float sin_phi, cos_phi;
     ggx_sincos_2pi(u1, &sin_phi, &cos_phi);
     return ggx_vec3_make(sin_theta * cos_phi, sin_theta * sin_phi, z);
@@ -47,5 +47,7 @@ GGX_INLINE float ggx_pdf_caps(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
     return ggx_guard_pdf(ggx_pdf_vndf_reflection(i, o, ax, ay), ax, ay);
 }
+
+GGX_TANGENT_SPACE_DISPATCH(caps)
 
 #endif

@@ -36,7 +36,7 @@ GGX_INLINE float ggx_tangential2(ggx_vec3 x, ggx_vec3 n, float xn)
 GGX_INLINE float ggx_t_about(ggx_vec3 i, ggx_vec3 n, float alpha)
 {
     ggx_vec3 s = ggx_stretch_about(i, n, alpha);
-    return sqrt(ggx_dot(s, s));
+    return ggx_sqrt(ggx_dot(s, s));
 }
 
 // 1/(iz + t) about n, cancellation-free for iz < 0 (as ggx_inv_iz_plus_t).
@@ -81,7 +81,7 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, flo
     out.m = ggx_normalize(a);
     out.o = ggx_reflect(i, out.m);
     out.pdf_o = 0.5f * ratio * ratio / (GGX_PI * alpha * alpha) * inv_sum;
-    out.pdf_m = 4.0f * fmax(0.0f, ggx_dot(i, out.m)) * out.pdf_o;  // the VNDF's max(0, i.m), as ggx_vndf.h
+    out.pdf_m = 4.0f * ggx_fmax(0.0f, ggx_dot(i, out.m)) * out.pdf_o;  // the VNDF's max(0, i.m), as ggx_vndf.h
     float oz = ggx_dot(out.o, n);
     float g2 = ggx_G2_from_t(iz, oz, ti, ggx_t_about(out.o, n, alpha));
     out.weight = iz > 0.0f ? g2 / (2.0f * iz * inv_sum) : 0.0f;
@@ -126,6 +126,19 @@ GGX_INLINE float ggx_pdf_caps_iso(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alph
     float iz = ggx_dot(i, n);
     return ggx_guard_pdf(0.5f * D * ggx_inv_iz_plus_t_about(i, n, alpha, iz, ggx_t_about(i, n, alpha)), alpha,
                          alpha);
+}
+
+// The dispatchers' form (ggx_common.h): caps-iso reads n and the one roughness ax.
+GGX_INLINE ggx_sample ggx_dispatch_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    (void)ay;
+    return ggx_sample_caps_iso(n, i, ax, u1, u2);
+}
+
+GGX_INLINE float ggx_dispatch_pdf_caps_iso(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    (void)ay;
+    return ggx_pdf_caps_iso(n, i, o, ax);
 }
 
 #endif

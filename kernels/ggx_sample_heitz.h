@@ -13,7 +13,7 @@
 // Lifts the disk point (t1, t2) in the plane of (T1, T2) onto the unit hemisphere along v.
 GGX_INLINE ggx_vec3 ggx_lift_to_hemisphere(float t1, float t2, ggx_vec3 T1, ggx_vec3 T2, ggx_vec3 v)
 {
-    float tv = sqrt(fmax(0.0f, 1.0f - t1 * t1 - t2 * t2));
+    float tv = ggx_sqrt(ggx_fmax(0.0f, 1.0f - t1 * t1 - t2 * t2));
     return ggx_vec3_make(t1 * T1.x + t2 * T2.x + tv * v.x,
                          t1 * T1.y + t2 * T2.y + tv * v.y,
                          t1 * T1.z + t2 * T2.z + tv * v.z);
@@ -23,7 +23,7 @@ GGX_INLINE ggx_vec3 ggx_lift_to_hemisphere(float t1, float t2, ggx_vec3 T1, ggx_
 GGX_INLINE ggx_vec3 ggx_tangent_or_x(float sx, float sy)
 {
     float len2 = sx * sx + sy * sy;
-    float inv = rsqrt(len2);
+    float inv = ggx_rsqrt(len2);
     int pole = !(len2 > 0.0f);  // per-component selects: a select of structs does not vectorize
     return ggx_vec3_make(pole ? 1.0f : sx * inv, pole ? 0.0f : sy * inv, 0.0f);
 }
@@ -36,12 +36,12 @@ GGX_INLINE ggx_sample ggx_draw_heitz(ggx_vec3 i, float ax, float ay, float u1, f
     ggx_vec3 T2 = ggx_cross(v, T1);
     float sin_phi, cos_phi;
     ggx_sincos_2pi(u2, &sin_phi, &cos_phi);
-    float r = sqrt(u1);                                          // uniform point on the unit disk
+    float r = ggx_sqrt(u1);                                          // uniform point on the unit disk
     float t1 = r * cos_phi, t2 = r * sin_phi;
     float s = 0.5f * (1.0f + v.z);                               // warp onto the visible cross section
-    t2 = (1.0f - s) * sqrt(fmax(0.0f, 1.0f - t1 * t1)) + s * t2;
+    t2 = (1.0f - s) * ggx_sqrt(ggx_fmax(0.0f, 1.0f - t1 * t1)) + s * t2;
     ggx_vec3 h = ggx_lift_to_hemisphere(t1, t2, T1, T2, v);
-    h.z = fmax(0.0f, h.z);
+    h.z = ggx_fmax(0.0f, h.z);
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
@@ -59,11 +59,11 @@ GGX_INLINE ggx_sample ggx_draw_heitz2017(ggx_vec3 i, float ax, float ay, float u
     float turn = first_half ? 0.5f * u2 / a : 0.5f + 0.5f * (u2 - a) / (1.0f - a);
     float sin_phi, cos_phi;
     ggx_sincos_2pi(turn, &sin_phi, &cos_phi);
-    float r = sqrt(u1);                                          // eq. 3
+    float r = ggx_sqrt(u1);                                          // eq. 3
     float p1 = r * cos_phi;
     float p2 = r * sin_phi * (first_half ? 1.0f : v.z);         // eq. 5: the tangent half disk is foreshortened
     ggx_vec3 h = ggx_lift_to_hemisphere(p1, p2, T1, T2, v);      // eq. 6
-    h.z = fmax(0.0f, h.z);
+    h.z = ggx_fmax(0.0f, h.z);
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
@@ -90,5 +90,8 @@ GGX_INLINE float ggx_pdf_heitz2017(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
     return ggx_guard_pdf(ggx_pdf_vndf_reflection(i, o, ax, ay), ax, ay);
 }
+
+GGX_TANGENT_SPACE_DISPATCH(heitz)
+GGX_TANGENT_SPACE_DISPATCH(heitz2017)
 
 #endif

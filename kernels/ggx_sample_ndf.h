@@ -10,9 +10,9 @@
 GGX_INLINE ggx_sample ggx_draw_ndf(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
     ggx_sample out;
-    // Walter eq. 35-36 in slope space: |slope|/alpha = r = sqrt(u1/(1-u1)), phi = 2 pi u2.
+    // Walter eq. 35-36 in slope space: |slope|/alpha = r = ggx_sqrt(u1/(1-u1)), phi = 2 pi u2.
     float one_minus_u1 = 1.0f - u1;
-    float r = sqrt(u1 / one_minus_u1);
+    float r = ggx_sqrt(u1 / one_minus_u1);
     float sin_phi, cos_phi;
     ggx_sincos_2pi(u2, &sin_phi, &cos_phi);
     // The normal of slope (sx, sy) is (-sx, -sy, 1) normalized.
@@ -25,7 +25,7 @@ GGX_INLINE ggx_sample ggx_draw_ndf(ggx_vec3 i, float ax, float ay, float u1, flo
     // Reflection Jacobian |dm/do| = 1/(4 |o.m|) = 1/(4 |i.m|) (Walter eq. 14).
     float i_dot_m = ggx_dot(i, out.m);
     // (i.m = 0: a view across the surface reflected about m = n, o = -i has no density.)
-    out.pdf_o = i_dot_m != 0.0f ? out.pdf_m / (4.0f * fabs(i_dot_m)) : 0.0f;
+    out.pdf_o = i_dot_m != 0.0f ? out.pdf_m / (4.0f * ggx_fabs(i_dot_m)) : 0.0f;
     // weight = D G2 / (4 iz) / pdf_o = G2 (i.m) / (iz mz); a back-facing m reflects nothing.
     float g2 = ggx_G2(i, out.o, ax, ay);
     out.weight = (i_dot_m > 0.0f && i.z > 0.0f) ? g2 * i_dot_m / (i.z * mz) : 0.0f;
@@ -44,8 +44,10 @@ GGX_INLINE float ggx_pdf_ndf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
     ggx_vec3 h = ggx_half_vector(i, o);
     ggx_vec3 m = ggx_scale(h, h.z < 0.0f ? -1.0f : 1.0f);
-    float i_dot_m = fabs(ggx_dot(i, m));
+    float i_dot_m = ggx_fabs(ggx_dot(i, m));
     return ggx_guard_pdf(i_dot_m > 0.0f ? ggx_D(m, ax, ay) * m.z / (4.0f * i_dot_m) : 0.0f, ax, ay);
 }
+
+GGX_TANGENT_SPACE_DISPATCH(ndf)
 
 #endif

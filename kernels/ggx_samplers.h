@@ -1,5 +1,6 @@
-// ggx_samplers.h - every ggxcl sampler and pdf for user kernels, plus a
-// dispatcher by method id.  Include this one header to get all of them:
+// ggx_samplers.h - every ggxcl sampler and pdf, plus dispatchers by method
+// id, for OpenCL C kernels, C++17 and CUDA alike (ggx_platform.h).  Include
+// this one header to get all of them:
 //   ggx_sample_<method>(...) -> ggx_sample {m, o, pdf_m, pdf_o, weight}
 //   ggx_pdf_<method>(...)    -> pdf of o recomputed from (i, o) alone
 // Method ids: GGX_METHOD_* of ggx_contract.h (the C++ enum ggxcl::Method is
@@ -29,38 +30,26 @@
 #define GGX_IS_METHOD(method, id) ((method) == (id))
 #endif
 
-// With a compile-time constant `method` the chain folds to one sampler.
-// Only caps-iso reads n (world space); the others work in tangent space.
-GGX_INLINE ggx_sample ggx_sample_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay,
-                                        float u1, float u2)
+// The dispatchers test each method of GGX_METHOD_LIST (ggx_contract.h) in
+// turn and call its ggx_dispatch_* form (ggx_common.h); with a compile-time
+// constant `method` the chain folds to one sampler.  Only caps-iso reads n
+// (world space); the others work in tangent space.
+#define GGX_SAMPLE_IF_METHOD(ID, identifier, name)  \
+    if (GGX_IS_METHOD(method, GGX_METHOD_##ID))     \
+        return ggx_dispatch_sample_##identifier(n, i, ax, ay, u1, u2);
+#define GGX_PDF_IF_METHOD(ID, identifier, name)     \
+    if (GGX_IS_METHOD(method, GGX_METHOD_##ID))     \
+        return ggx_dispatch_pdf_##identifier(n, i, o, ax, ay);
+
+GGX_INLINE ggx_sample ggx_sample_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
-    if (GGX_IS_METHOD(method, GGX_METHOD_NDF))
-        return ggx_sample_ndf(i, ax, ay, u1, u2);
-    if (GGX_IS_METHOD(method, GGX_METHOD_HEITZ))
-        return ggx_sample_heitz(i, ax, ay, u1, u2);
-    if (GGX_IS_METHOD(method, GGX_METHOD_HEITZ2017))
-        return ggx_sample_heitz2017(i, ax, ay, u1, u2);
-    if (GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO))
-        return ggx_sample_caps_iso(n, i, ax, u1, u2);
-    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
-        return ggx_sample_bounded(i, ax, ay, u1, u2);
-    if (GGX_IS_METHOD(method, GGX_METHOD_CAPS))
-        return ggx_sample_caps(i, ax, ay, u1, u2);
+    GGX_METHOD_LIST(GGX_SAMPLE_IF_METHOD)
     return ggx_fallback_sample(n);  // not a method id
 }
 
 GGX_INLINE float ggx_pdf_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
-    if (GGX_IS_METHOD(method, GGX_METHOD_NDF))
-        return ggx_pdf_ndf(i, o, ax, ay);
-    if (GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO))
-        return ggx_pdf_caps_iso(n, i, o, ax);
-    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
-        return ggx_pdf_bounded(i, o, ax, ay);
-    // heitz, heitz2017 and caps share the VNDF reflection pdf
-    if (GGX_IS_METHOD(method, GGX_METHOD_HEITZ) || GGX_IS_METHOD(method, GGX_METHOD_HEITZ2017) ||
-        GGX_IS_METHOD(method, GGX_METHOD_CAPS))
-        return ggx_pdf_caps(i, o, ax, ay);
+    GGX_METHOD_LIST(GGX_PDF_IF_METHOD)
     return 0.0f;  // not a method id
 }
 

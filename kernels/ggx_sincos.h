@@ -12,7 +12,7 @@
 // The quarter turns j mod 4 swap and negate the pair.
 //
 // Maximum error against the exact sin(2 pi u), cos(2 pi u), every u of the
-// generator's 24-bit grid (tests/test_sincos.cpp checks it exhaustively):
+// generator's 24-bit grid (tests/samplers/test_sincos.cpp checks it exhaustively):
 // 0.86 ulp with fused multiply-adds; 1.6 ulp with -DGGX_NO_FMA=1 (a * b + c
 // instead: the runtime sets it for devices without hardware fma).  Quarter
 // turns are exact (sin(pi) = 0, cos(pi/2) = 0).
@@ -27,7 +27,7 @@
 #if GGX_NO_FMA
 #define GGX_FMA(a, b, c) ((a) * (b) + (c))
 #else
-#define GGX_FMA(a, b, c) fma((a), (b), (c))
+#define GGX_FMA(a, b, c) ggx_fma((a), (b), (c))
 #endif
 
 // sin((pi/2) f) and cos((pi/2) f) for |f| <= 1/2.
@@ -45,7 +45,7 @@ GGX_INLINE void ggx_sincos_quarter(float f, float* s, float* c)
 GGX_INLINE void ggx_sincos_2pi(float u, float* s, float* c)
 {
     float q = 4.0f * u;
-    float j = rint(q);
+    float j = ggx_rint(q);
     float sf, cf;
     ggx_sincos_quarter(q - j, &sf, &cf);
     int quarter = (int)j;

@@ -26,16 +26,18 @@
 #if GGX_NO_BITREVERSE
 // The low 8 bits of b in reverse order, by multiplies that no compiler turns
 // into llvm.bitreverse (spread 4 copies, pick one bit of each, gather).
-GGX_INLINE uint ggx_reverse_byte(uint b)
+GGX_INLINE ggx_uint ggx_reverse_byte(ggx_uint b)
 {
-    return (uint)(((((ulong)(b & 0xffu)) * 0x80200802ul) & 0x0884422110ul) * 0x0101010101ul >> 32) & 0xffu;
+    ggx_ulong spread = (ggx_ulong)(b & 0xffu) * (ggx_ulong)0x80200802u;
+    ggx_ulong picked = spread & ((ggx_ulong)0x08u << 32 | (ggx_ulong)0x84422110u);
+    return (ggx_uint)((picked * ((ggx_ulong)0x01u << 32 | (ggx_ulong)0x01010101u)) >> 32) & 0xffu;
 }
 #endif
 
 // The 32 bits of x in reverse order.  Compilers turn the masks and shifts
 // into one llvm.bitreverse; -DGGX_NO_BITREVERSE=1 (set by the runtime for
 // Oclgrind, whose LLVM does not know that intrinsic) reverses byte by byte.
-GGX_INLINE uint ggx_reverse_bits(uint x)
+GGX_INLINE ggx_uint ggx_reverse_bits(ggx_uint x)
 {
 #if GGX_NO_BITREVERSE
     return (ggx_reverse_byte(x) << 24) | (ggx_reverse_byte(x >> 8) << 16) | (ggx_reverse_byte(x >> 16) << 8) |
@@ -54,7 +56,7 @@ GGX_INLINE uint ggx_reverse_bits(uint x)
 // binom(j, i) odd, that is with the bits of i a subset of those of j
 // (Lucas), summed over the supersets one index bit at a time.  Straight-line
 // code: a loop over k's bits here keeps PoCL from vectorizing the kernels.
-GGX_INLINE uint ggx_sobol_second_digits(uint k)
+GGX_INLINE ggx_uint ggx_sobol_second_digits(ggx_uint k)
 {
     k ^= (k >> 1) & 0x55555555u;
     k ^= (k >> 2) & 0x33333333u;
@@ -71,9 +73,9 @@ GGX_INLINE uint ggx_sobol_second_digits(uint k)
 // x * c with c even moves bits only upward), so digit i is flipped by a
 // function of the digits above it: an Owen scramble (Burley 2020, sec. 3,
 // with his Laine-Karras-style constants).
-GGX_INLINE uint ggx_owen_scramble_digits(uint digits, uint key)
+GGX_INLINE ggx_uint ggx_owen_scramble_digits(ggx_uint digits, ggx_uint key)
 {
-    uint x = digits + key;
+    ggx_uint x = digits + key;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
@@ -82,13 +84,13 @@ GGX_INLINE uint ggx_owen_scramble_digits(uint digits, uint key)
 }
 
 // The same for a 32-bit fraction x.
-GGX_INLINE uint ggx_owen_scramble(uint x, uint key)
+GGX_INLINE ggx_uint ggx_owen_scramble(ggx_uint x, ggx_uint key)
 {
     return ggx_owen_scramble_digits(ggx_reverse_bits(x), key);
 }
 
 // A 32-bit mix (xorshift-multiply, full avalanche) for the scramble keys.
-GGX_INLINE uint ggx_mix32(uint x)
+GGX_INLINE ggx_uint ggx_mix32(ggx_uint x)
 {
     x ^= x >> 16;
     x *= 0x21f0aaadu;
@@ -100,7 +102,7 @@ GGX_INLINE uint ggx_mix32(uint x)
 
 // The scramble key of `dimension` (0 or 1) for stream `seed` and the samples
 // of one 2^32 block (`block`: the index's high word).
-GGX_INLINE uint ggx_sobol_key(uint seed, uint dimension, uint block)
+GGX_INLINE ggx_uint ggx_sobol_key(ggx_uint seed, ggx_uint dimension, ggx_uint block)
 {
     return ggx_mix32(seed ^ ggx_mix32(block ^ ggx_mix32(dimension + 0x9e3779b9u)));
 }
@@ -108,24 +110,24 @@ GGX_INLINE uint ggx_sobol_key(uint seed, uint dimension, uint block)
 // The two scrambled 32-bit coordinates of point k (the index's low word)
 // with the scramble keys of its block.  van der Corput's digits are the bits
 // of k themselves.
-GGX_INLINE void ggx_sobol_words_keyed(uint k, uint key1, uint key2, uint* w1, uint* w2)
+GGX_INLINE void ggx_sobol_words_keyed(ggx_uint k, ggx_uint key1, ggx_uint key2, ggx_uint* w1, ggx_uint* w2)
 {
     *w1 = ggx_owen_scramble_digits(k, key1);
     *w2 = ggx_owen_scramble_digits(ggx_sobol_second_digits(k), key2);
 }
 
 // The two scrambled 32-bit coordinates of sample `index` of stream `seed`.
-GGX_INLINE void ggx_sobol_words(ulong seed, ulong index, uint* w1, uint* w2)
+GGX_INLINE void ggx_sobol_words(ggx_ulong seed, ggx_ulong index, ggx_uint* w1, ggx_uint* w2)
 {
-    uint block = (uint)(index >> 32);
-    ggx_sobol_words_keyed((uint)index, ggx_sobol_key((uint)seed, 0u, block), ggx_sobol_key((uint)seed, 1u, block), w1,
+    ggx_uint block = (ggx_uint)(index >> 32);
+    ggx_sobol_words_keyed((ggx_uint)index, ggx_sobol_key((ggx_uint)seed, 0u, block), ggx_sobol_key((ggx_uint)seed, 1u, block), w1,
                           w2);
 }
 
 // The two uniforms of sample `index` in stream `seed` from the scrambled Sobol points.
-GGX_INLINE void ggx_sobol_uniforms(ulong seed, ulong index, float* u1, float* u2)
+GGX_INLINE void ggx_sobol_uniforms(ggx_ulong seed, ggx_ulong index, float* u1, float* u2)
 {
-    uint w1, w2;
+    ggx_uint w1, w2;
     ggx_sobol_words(seed, index, &w1, &w2);
     *u1 = ggx_word_to_unit(w1);
     *u2 = ggx_word_to_unit(w2);
@@ -135,15 +137,15 @@ GGX_INLINE void ggx_sobol_uniforms(ulong seed, ulong index, float* u1, float* u2
 // which crosses at most one 2^32 block: the keys of both candidate blocks
 // depend on (seed, first) alone, so a compiler computes them once per launch
 // instead of once per sample (the points cost a third less on PoCL).
-GGX_INLINE void ggx_sobol_launch_uniforms(ulong seed, ulong first, uint j, float* u1, float* u2)
+GGX_INLINE void ggx_sobol_launch_uniforms(ggx_ulong seed, ggx_ulong first, ggx_uint j, float* u1, float* u2)
 {
-    uint block = (uint)(first >> 32);
-    uint key1 = ggx_sobol_key((uint)seed, 0u, block), key2 = ggx_sobol_key((uint)seed, 1u, block);
-    uint next1 = ggx_sobol_key((uint)seed, 0u, block + 1u), next2 = ggx_sobol_key((uint)seed, 1u, block + 1u);
-    ulong index = first + j;
-    int next = (uint)(index >> 32) != block;
-    uint w1, w2;
-    ggx_sobol_words_keyed((uint)index, next ? next1 : key1, next ? next2 : key2, &w1, &w2);
+    ggx_uint block = (ggx_uint)(first >> 32);
+    ggx_uint key1 = ggx_sobol_key((ggx_uint)seed, 0u, block), key2 = ggx_sobol_key((ggx_uint)seed, 1u, block);
+    ggx_uint next1 = ggx_sobol_key((ggx_uint)seed, 0u, block + 1u), next2 = ggx_sobol_key((ggx_uint)seed, 1u, block + 1u);
+    ggx_ulong index = first + j;
+    int next = (ggx_uint)(index >> 32) != block;
+    ggx_uint w1, w2;
+    ggx_sobol_words_keyed((ggx_uint)index, next ? next1 : key1, next ? next2 : key2, &w1, &w2);
     *u1 = ggx_word_to_unit(w1);
     *u2 = ggx_word_to_unit(w2);
 }

@@ -10,6 +10,7 @@
 // k = ax, ay, view x, y, z, normal x, y, z, u1, u2 and writes
 // out[k * count + j] for k = m x, y, z, o x, y, z, pdf_m, pdf_o, weight,
 // pdf of o recomputed from (i, o).
+#include "ggx_kernel_io.h"
 #include "ggx_samplers.h"
 
 #ifndef GGX_METHOD

@@ -36,12 +36,12 @@ GGX_INLINE ggx_sample ggx_finish_vndf_sample(ggx_vec3 i, ggx_vec3 h, float ax, f
     // Keep h above the horizon (pbrt-v4 floors at 1e-6; views below the horizon need all of
     // (0, 1e-6), so 1e-30): the last uniform, 1 - 2^-24, rounds onto the edge of the cap or
     // disk, where m would lie exactly in the surface.
-    h.z = fmax(h.z, 1e-30f);
+    h.z = ggx_fmax(h.z, 1e-30f);
     ggx_sample out;
     out.m = ggx_normalize(ggx_stretch(h, ax, ay));
     out.o = ggx_reflect(i, out.m);
     out.pdf_o = 0.5f * ggx_D_from_standard(h, ax, ay) * inv_sum;
-    out.pdf_m = 4.0f * fmax(0.0f, ggx_dot(i, out.m)) * out.pdf_o;
+    out.pdf_m = 4.0f * ggx_fmax(0.0f, ggx_dot(i, out.m)) * out.pdf_o;
     out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
     return out;
 }

@@ -13,11 +13,11 @@ typedef struct {
     ggx_vec3 t, b, n;
 } ggx_basis;
 
-// Duff et al. 2017, Listing 3: sign = copysign(1, nz), a = -1/(sign + nz), b = nx ny a,
+// Duff et al. 2017, Listing 3: sign = ggx_copysign(1, nz), a = -1/(sign + nz), b = nx ny a,
 // t = (1 + sign nx^2 a, sign b, -sign nx), b = (b, sign + ny^2 a, -ny).
 GGX_INLINE ggx_basis ggx_basis_from_normal(ggx_vec3 n)
 {
-    float sign = copysign(1.0f, n.z);
+    float sign = ggx_copysign(1.0f, n.z);
     float a = -1.0f / (sign + n.z);
     float b = n.x * n.y * a;
     ggx_basis basis;

@@ -104,25 +104,6 @@ double density_o(Method method, const Params& p, const Vec3& m)
 
 }  // namespace
 
-const char* method_name(Method method)
-{
-    switch (method) {
-    case Method::ndf:
-        return "ndf";
-    case Method::heitz:
-        return "heitz";
-    case Method::heitz2017:
-        return "heitz2017";
-    case Method::caps:
-        return "caps";
-    case Method::caps_iso:
-        return "caps-iso";
-    case Method::bounded:
-        return "bounded";
-    }
-    return "?";
-}
-
 double pdf_m(Method method, const Params& p, const Vec3& m)
 {
     if (!roughness_ok(p) || (method == Method::bounded && !in_bounded_cap(p, m)))

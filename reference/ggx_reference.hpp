@@ -10,6 +10,8 @@
 
 namespace ggxref {
 
+// In the order and with the ids of the project's list of methods (kernels/ggx_contract.h;
+// ggx_methods.cpp checks them at compile time).
 enum class Method { ndf, heitz, heitz2017, caps, caps_iso, bounded };
 constexpr std::array<Method, 6> all_methods = {Method::ndf,  Method::heitz,    Method::heitz2017,
                                                Method::caps, Method::caps_iso, Method::bounded};

@@ -139,9 +139,9 @@ Timing native_timing(ggxcl::Method method, BenchJob job, const NativeSetup& setu
     return timing_of(run_native(arguments), setup.repeats);
 }
 
-Timing native_ceiling_timing(const NativeSetup& setup)
+Timing native_vectorized_timing(ggxcl::Method method, const NativeSetup& setup)
 {
-    std::vector<std::string> arguments = {"ceiling"};
+    std::vector<std::string> arguments = {"vectorized", std::string(ggxcl::method_name(method))};
     for (std::string& a : timed_arguments(setup))
         arguments.push_back(std::move(a));
     return timing_of(run_native(arguments), setup.repeats);

@@ -1,9 +1,10 @@
 // bench_native.hpp - `ggx bench`'s side-by-side baselines on the host CPU:
-// the plain C++ float code of bench/native (what a user would otherwise
-// write, -O3 -march=native, on `threads` threads) for each method and job,
+// bench/native's plain C++ loops around the device headers of kernels/
+// (what a C++ user writes, -O3 -march=native, on `threads` threads) for
+// each method and job,
 // timed by wall clock (median of repeats after a warm-up), its numerical
 // error against the reference (m and pdf_m, the fields it writes), and the
-// hand-vectorized ceiling of the fused caps estimator.
+// fused estimator with its loop vectorized by the compiler (omp simd).
 //
 // The baseline runs in the child process ggx-native, so that no
 // -march=native code is linked into `ggx`: found through $GGX_NATIVE, else
@@ -38,8 +39,8 @@ struct NativeSetup {
 
 Timing native_timing(ggxcl::Method method, BenchJob job, const NativeSetup& setup);
 
-// The fused caps estimator, hand-vectorized: the machine's ceiling.
-Timing native_ceiling_timing(const NativeSetup& setup);
+// The fused estimator of `method`, its loop vectorized by the compiler.
+Timing native_vectorized_timing(ggxcl::Method method, const NativeSetup& setup);
 
 NumericalError native_numerical_error(ggxcl::Method method);
 

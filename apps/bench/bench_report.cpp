@@ -166,11 +166,11 @@ void baseline_targets(const BenchReport& r, std::vector<Target>& out)
         if (device && native && ratio(native, device) < lowest)
             lowest = ratio(native, device), who = m;
     }
-    // What vectorizing by hand buys the same C++: the ceiling against its scalar code.
+    // What the compiler's vectorizer buys the same C++: the omp simd loop against the plain one.
     const BenchRow* scalar_furnace = find_row(r, "caps", "native", "furnace");
-    const std::string by_hand = r.has_ceiling && scalar_furnace
-                                    ? "; caps furnace vectorized by hand: " +
-                                          fixed(scalar_furnace->timing.median / r.ceiling.median, 1) + "x its scalar code"
+    const std::string by_hand = r.has_vectorized && scalar_furnace
+                                    ? "; caps furnace vectorized (omp simd): " +
+                                          fixed(scalar_furnace->timing.median / r.vectorized.median, 1) + "x its plain loop"
                                     : "";
     if (lowest < 1e300)
         out.push_back({"every method >= 12x the native C++ baseline (write)",
@@ -181,11 +181,11 @@ void baseline_targets(const BenchReport& r, std::vector<Target>& out)
         out.push_back({"caps-iso >= 1.1x caps with a basis, world space (blog: 1.15)",
                        fixed(ratio(caps_world, iso_world), 2) + "x", ratio(caps_world, iso_world) >= 1.1});
     const BenchRow* fused = default_row(r, "caps", "furnace");
-    if (r.has_ceiling && fused)
-        out.push_back({"fused caps estimator >= 90% of the hand-vectorized native ceiling",
-                       fixed(100.0 * r.ceiling.median / fused->timing.median, 0) + "% (ceiling " +
-                           fixed(r.ceiling.median, 2) + " ns, fused " + fixed(fused->timing.median, 2) + " ns)",
-                       r.ceiling.median / fused->timing.median >= 0.9});
+    if (r.has_vectorized && fused)
+        out.push_back({"fused caps estimator >= 90% of the vectorized native C++ (omp simd)",
+                       fixed(100.0 * r.vectorized.median / fused->timing.median, 0) + "% (vectorized C++ " +
+                           fixed(r.vectorized.median, 2) + " ns, fused " + fixed(fused->timing.median, 2) + " ns)",
+                       r.vectorized.median / fused->timing.median >= 0.9});
 }
 
 std::vector<Target> speed_targets(const BenchReport& r)
@@ -241,9 +241,9 @@ void write_speed_table(std::ostream& md, const BenchReport& r)
                << ns_cell(find_row(r, m, mode, "furnace")) << " | " << ns_cell(find_row(r, m, mode, "world")) << " | "
                << ns_cell(find_row(r, m, mode, "per-sample")) << " |\n";
         }
-    if (r.has_ceiling)
-        md << "| caps | native, hand-vectorized | – | – | " << fixed(r.ceiling.median, 2) << " (" << fixed(r.ceiling.low, 2)
-           << "–" << fixed(r.ceiling.high, 2) << ") | – | – |\n";
+    if (r.has_vectorized)
+        md << "| caps | native, vectorized (omp simd) | – | – | " << fixed(r.vectorized.median, 2) << " ("
+           << fixed(r.vectorized.low, 2) << "–" << fixed(r.vectorized.high, 2) << ") | – | – |\n";
     if (const BenchRow* store = find_row(r, "all", "store-only", "write"))
         md << "| (none) | store only: the write job's bytes | " << ns_cell(store) << " | " << fixed(gsps(store), 3)
            << " | – | – | – |\n";
@@ -349,9 +349,9 @@ std::string bench_csv(const BenchReport& r)
             csv << row.rmse_measured;
         csv << "\n";
     }
-    if (r.has_ceiling)
-        csv << "caps,native-vectorized,furnace," << r.ceiling.median << "," << r.ceiling.low << "," << r.ceiling.high
-            << "," << 1.0 / r.ceiling.median << ",,,,,,,,,philox,\n";
+    if (r.has_vectorized)
+        csv << "caps,native-vectorized,furnace," << r.vectorized.median << "," << r.vectorized.low << ","
+            << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,\n";
     return csv.str();
 }
 

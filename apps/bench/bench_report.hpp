@@ -57,8 +57,8 @@ struct BenchReport {
     int rmse_streams = 8;         // independent streams per cell of the measured RMSE
     double alpha = 0, theta = 0;  // the speed runs' configuration
     std::vector<BenchRow> rows;
-    bool has_ceiling = false;
-    Timing ceiling;               // hand-vectorized native fused caps
+    bool has_vectorized = false;
+    Timing vectorized;            // native fused caps, its loop vectorized by the compiler
     std::string native_unavailable;  // why the native baseline is missing (empty: measured or --no-native)
     StartupTiming startup;
     EnqueueTiming enqueue;

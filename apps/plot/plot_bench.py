@@ -19,8 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-METHODS = ["ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"]
-COLORS = dict(zip(METHODS, ["#7f7f7f", "#1f77b4", "#17becf", "#d62728", "#ff7f0e", "#2ca02c"]))
+PALETTE = ["#7f7f7f", "#1f77b4", "#17becf", "#d62728", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"]
 MARKERS = {"precise": "o", "relaxed": "^", "native": "x"}
 
 
@@ -36,7 +35,17 @@ def y_of(row, y_column):
     return row[y_column]
 
 
+def method_colors(rows):
+    """A colour per method, in the order the methods first appear in the data (the library's order)."""
+    methods = []
+    for row in rows:
+        if row["method"] not in methods and row["method"] != "all":
+            methods.append(row["method"])
+    return {m: PALETTE[k % len(PALETTE)] for k, m in enumerate(methods)}
+
+
 def chart(rows, job, y_column, y_label, title, out_path):
+    colors = method_colors(rows)
     fig, ax = plt.subplots(figsize=(8, 5.5), dpi=100)
     for row in rows:
         y_text = y_of(row, y_column)
@@ -45,13 +54,13 @@ def chart(rows, job, y_column, y_label, title, out_path):
         x, y = float(row["ns_median"]), max(float(y_text), 1e-9)
         hollow = row.get("sequence") == "sobol"
         if hollow:
-            ax.scatter(x, y, marker=MARKERS[row["precision"]], s=55, facecolors="none", edgecolors=COLORS[row["method"]])
+            ax.scatter(x, y, marker=MARKERS[row["precision"]], s=55, facecolors="none", edgecolors=colors[row["method"]])
         else:
-            ax.scatter(x, y, marker=MARKERS[row["precision"]], s=55, color=COLORS[row["method"]])
+            ax.scatter(x, y, marker=MARKERS[row["precision"]], s=55, color=colors[row["method"]])
         ax.annotate(row["method"] + (" sobol" if hollow else ""), (x, y), textcoords="offset points", xytext=(5, 4),
                     fontsize=7)
-    for method in METHODS:
-        ax.scatter([], [], color=COLORS[method], marker="o", label=method)
+    for method, color in colors.items():
+        ax.scatter([], [], color=color, marker="o", label=method)
     for mode, marker in MARKERS.items():
         ax.scatter([], [], color="black", marker=marker, label=mode)
     ax.scatter([], [], facecolors="none", edgecolors="black", marker="o", label="precise, sobol")

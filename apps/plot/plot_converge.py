@@ -19,8 +19,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-METHODS = ["ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"]
-COLORS = dict(zip(METHODS, ["#7f7f7f", "#1f77b4", "#17becf", "#d62728", "#ff7f0e", "#2ca02c"]))
+PALETTE = ["#7f7f7f", "#1f77b4", "#17becf", "#d62728", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"]
+COLORS = {}  # a colour per method, in the order the methods first appear in the data (main)
 STYLES = {"sobol": "-", "philox": "--"}
 
 
@@ -114,6 +114,7 @@ def main():
     rows = rows_of(curves_path)
     data = curves(rows)
     methods = ordered(r["method"] for r in rows)
+    COLORS.update({m: PALETTE[k % len(PALETTE)] for k, m in enumerate(methods)})
     sequences = ordered(r["sequence"] for r in rows)
     integrands = ordered(r["integrand"] for r in rows)
     alphas = sorted(set(float(r["alpha"]) for r in rows))

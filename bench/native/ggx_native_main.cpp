@@ -4,10 +4,11 @@
 // newer CPU than the one it runs on costs the bench its native rows, not the whole run.
 //
 //   ggx-native time METHOD JOB COUNT THREADS REPEATS ALPHA VX VY VZ
-//   ggx-native ceiling COUNT THREADS REPEATS ALPHA VX VY VZ
+//   ggx-native vectorized METHOD COUNT THREADS REPEATS ALPHA VX VY VZ
 //   ggx-native write METHOD ALPHA_X ALPHA_Y VX VY VZ SEED COUNT
 //
-// time and ceiling print REPEATS lines, each the ns per sample of one timed run; write puts
+// time and vectorized (the furnace job, its loop vectorized by the compiler) print REPEATS
+// lines, each the ns per sample of one timed run; write puts
 // the raw float32 m (3 x COUNT, planar) and pdf_m (COUNT) on stdout, on one thread.  METHOD and
 // JOB are ggxnative's names (caps-iso, write_m_pdf_m, ...).  Exit status: 0 done, 1 runtime
 // failure, 2 bad arguments (a line on stderr naming the argument, then the usage).
@@ -25,7 +26,7 @@ using namespace ggxnative;
 
 const char* const usage =
     "usage: ggx-native time METHOD JOB COUNT THREADS REPEATS ALPHA VX VY VZ\n"
-    "       ggx-native ceiling COUNT THREADS REPEATS ALPHA VX VY VZ\n"
+    "       ggx-native vectorized METHOD COUNT THREADS REPEATS ALPHA VX VY VZ\n"
     "       ggx-native write METHOD ALPHA_X ALPHA_Y VX VY VZ SEED COUNT\n";
 
 constexpr std::uint64_t max_count = 1u << 28;
@@ -49,8 +50,8 @@ int dispatch(const std::vector<std::string>& a)
         time_job(parse_method(a[1]), parse_job(a[2]), timed_run(&a[3]), stdout);
         return 0;
     }
-    if (command == "ceiling" && a.size() == 8) {
-        time_ceiling(timed_run(&a[1]), stdout);
+    if (command == "vectorized" && a.size() == 9) {
+        time_vectorized(parse_method(a[1]), timed_run(&a[2]), stdout);
         return 0;
     }
     if (command == "write" && a.size() == 9) {
@@ -63,10 +64,10 @@ int dispatch(const std::vector<std::string>& a)
         write_samples(setup, stdout);
         return 0;
     }
-    if (command == "time" || command == "ceiling" || command == "write")
-        throw UsageError(command + " takes " + (command == "time" ? "9" : command == "ceiling" ? "7" : "8") +
-                         " arguments, not " + std::to_string(a.size() - 1));
-    throw UsageError("COMMAND '" + command + "': time, ceiling or write");
+    if (command == "time" || command == "vectorized" || command == "write")
+        throw UsageError(command + " takes " + (command == "time" ? "9" : "8") + " arguments, not " +
+                         std::to_string(a.size() - 1));
+    throw UsageError("COMMAND '" + command + "': time, vectorized or write");
 }
 
 }  // namespace

@@ -24,12 +24,15 @@ std::string number_text(double value)
 
 }  // namespace
 
-Method parse_method(const std::string& text)
+int parse_method(const std::string& text)
 {
-    for (Method m : {Method::ndf, Method::heitz, Method::heitz2017, Method::caps, Method::caps_iso, Method::bounded})
-        if (text == method_name(m))
-            return m;
-    reject("METHOD", text, "ndf, heitz, heitz2017, caps, caps-iso or bounded");
+    const int method = method_id(text);
+    if (method >= 0)
+        return method;
+    std::string names;
+    for (int m = 0; m < method_count(); ++m)
+        names += std::string(m == 0 ? "" : ", ") + method_name(m);
+    reject("METHOD", text, "one of " + names);
 }
 
 Job parse_job(const std::string& text)

@@ -16,7 +16,7 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-Method parse_method(const std::string& text);  // ndf, heitz, heitz2017, caps, caps-iso, bounded
+int parse_method(const std::string& text);     // a method's name -> its GGX_METHOD_* id
 Job parse_job(const std::string& text);        // write_m_pdf_m, furnace_sum, world_space_o
 std::uint64_t parse_whole(const char* name, const std::string& text, std::uint64_t low, std::uint64_t high);
 float parse_float(const char* name, const std::string& text, float low, float high);

@@ -1,5 +1,6 @@
 // native_baseline.cpp - ggxnative::run: picks the loop of one (method, job), splits [0, count)
-// into `threads` contiguous block-aligned ranges and runs them on std::threads.
+// into `threads` contiguous block-aligned ranges and runs them on std::threads; method names
+// from the project's list of methods.
 #include <thread>
 #include <vector>
 
@@ -11,49 +12,42 @@ namespace {
 // The body of one thread: a job over a range; block_sums is used by furnace_sum only.
 using RangeJob = void (*)(const Setup&, const Buffers&, Range, double* block_sums);
 
-template <TangentSampler sample>
+template <int method>
 void write_job(const Setup& setup, const Buffers& buffers, Range range, double*)
 {
-    write_m_pdf_m<sample>(setup, buffers, range);
+    write_m_pdf_m<method>(setup, buffers, range);
 }
 
-template <TangentSampler sample>
+template <int method>
 void furnace_job(const Setup& setup, const Buffers&, Range range, double* block_sums)
 {
-    furnace_sum<sample>(setup, range, block_sums);
+    furnace_sum<method>(setup, range, block_sums);
 }
 
-template <WorldSampler sample_o>
+template <int method>
 void world_job(const Setup& setup, const Buffers& buffers, Range range, double*)
 {
-    world_space_o<sample_o>(setup, buffers, range);
+    world_space_o<method>(setup, buffers, range);
 }
 
-template <TangentSampler sample>
-RangeJob tangent_job(Job job)
+template <int method>
+RangeJob job_of(Job job)
 {
     if (job == Job::write_m_pdf_m)
-        return write_job<sample>;
+        return write_job<method>;
     if (job == Job::furnace_sum)
-        return furnace_job<sample>;
-    return world_job<world_o_through_basis<sample>>;
+        return furnace_job<method>;
+    return world_job<method>;
 }
 
-RangeJob pick_job(Method method, Job job)
+RangeJob pick_job(int method, Job job)
 {
     switch (method) {
-    case Method::ndf:
-        return tangent_job<sample_ndf>(job);
-    case Method::heitz:
-        return tangent_job<sample_heitz>(job);
-    case Method::heitz2017:
-        return tangent_job<sample_heitz2017>(job);
-    case Method::caps:
-        return tangent_job<sample_caps>(job);
-    case Method::caps_iso:
-        return job == Job::world_space_o ? world_job<world_o_caps_iso> : tangent_job<sample_caps_iso_tangent>(job);
-    case Method::bounded:
-        return tangent_job<sample_bounded>(job);
+#define GGXNATIVE_JOB_OF(ID, identifier, name) \
+    case GGX_METHOD_##ID:                      \
+        return job_of<GGX_METHOD_##ID>(job);
+        GGX_METHOD_LIST(GGXNATIVE_JOB_OF)
+#undef GGXNATIVE_JOB_OF
     }
     return nullptr;
 }
@@ -67,6 +61,12 @@ Range thread_range(std::uint64_t count, int t, int threads)
     std::uint64_t begin = first * furnace_block, end = last * furnace_block;
     return {begin < count ? begin : count, end < count ? end : count};
 }
+
+const char* const method_names[] = {
+#define GGXNATIVE_NAME(ID, identifier, name) name,
+    GGX_METHOD_LIST(GGXNATIVE_NAME)
+#undef GGXNATIVE_NAME
+};
 
 }  // namespace
 
@@ -88,23 +88,19 @@ double run(const Setup& setup, const Buffers& buffers)
     return setup.job == Job::furnace_sum ? total : 0.0;
 }
 
-const char* method_name(Method method)
+int method_count() { return GGX_METHOD_COUNT; }
+
+const char* method_name(int method)
 {
-    switch (method) {
-    case Method::ndf:
-        return "ndf";
-    case Method::heitz:
-        return "heitz";
-    case Method::heitz2017:
-        return "heitz2017";
-    case Method::caps:
-        return "caps";
-    case Method::caps_iso:
-        return "caps-iso";
-    case Method::bounded:
-        return "bounded";
-    }
-    return "?";
+    return method >= 0 && method < GGX_METHOD_COUNT ? method_names[method] : "?";
+}
+
+int method_id(const std::string& name)
+{
+    for (int method = 0; method < GGX_METHOD_COUNT; ++method)
+        if (name == method_names[method])
+            return method;
+    return -1;
 }
 
 const char* job_name(Job job)

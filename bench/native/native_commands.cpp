@@ -46,7 +46,7 @@ void print_lines(const std::vector<double>& ns, std::FILE* out)
 
 }  // namespace
 
-void time_job(Method method, Job job, const TimedRun& run, std::FILE* out)
+void time_job(int method, Job job, const TimedRun& run, std::FILE* out)
 {
     const std::size_t n = run.count;
     std::vector<float> m, pdf_m, o, normals, views;
@@ -67,9 +67,13 @@ void time_job(Method method, Job job, const TimedRun& run, std::FILE* out)
     print_lines(ns_per_sample(once, run.count, run.repeats), out);
 }
 
-void time_ceiling(const TimedRun& run, std::FILE* out)
+void time_vectorized(int method, const TimedRun& run, std::FILE* out)
 {
-    auto once = [&](std::uint64_t seed) { furnace_caps_vectorized(seed, run.count, run.alpha, run.view, run.threads); };
+    auto once = [&](std::uint64_t seed) {
+        Setup setup{method, Job::furnace_sum, run.alpha, run.alpha, {run.view[0], run.view[1], run.view[2]}, seed,
+                    run.count, run.threads};
+        furnace_vectorized(setup);
+    };
     print_lines(ns_per_sample(once, run.count, run.repeats), out);
 }
 

@@ -1,7 +1,7 @@
 // native_commands.hpp - the three commands of ggx-native, the child process through which
 // `ggx bench` runs the -march=native baseline (see ggx_native_main.cpp for the protocol).
 //   time:    ns per sample of one method and job, one line per timed repeat, after a warm-up;
-//   ceiling: the same for the hand-vectorized caps furnace;
+//   vectorized: the same for the furnace job with its loop vectorized by the compiler;
 //   write:   m (3 x count floats, planar) then pdf_m (count floats), raw float32 on stdout.
 #pragma once
 
@@ -19,8 +19,8 @@ struct TimedRun {
     float view[3];
 };
 
-void time_job(Method method, Job job, const TimedRun& run, std::FILE* out);
-void time_ceiling(const TimedRun& run, std::FILE* out);
+void time_job(int method, Job job, const TimedRun& run, std::FILE* out);
+void time_vectorized(int method, const TimedRun& run, std::FILE* out);
 void write_samples(const Setup& setup, std::FILE* out);
 
 }  // namespace ggxnative

@@ -1,18 +1,14 @@
-// native_jobs.hpp - the three timed jobs of the native baseline over one contiguous range of
-// sample indices, each a plain loop around one sampler: write m and pdf_m, sum furnace weights,
-// or sample o in world space from per-sample normals and views.
+// native_jobs.hpp - the timed jobs of the native baseline over one contiguous range of sample
+// indices: plain loops around the device functions of kernels/ (compiled as C++ through
+// ggx_platform.h), what a C++ renderer writes: write m and pdf_m, sum furnace weights, or
+// sample o in world space from per-sample normals and views.
 #pragma once
 
 #include <cstdint>
 
+#include "ggx_philox.h"
+#include "ggx_world.h"
 #include "native_baseline.hpp"
-#include "native_basis.hpp"
-#include "native_sample_bounded.hpp"
-#include "native_sample_caps.hpp"
-#include "native_sample_caps_iso.hpp"
-#include "native_sample_heitz.hpp"
-#include "native_sample_ndf.hpp"
-#include "native_uniforms.hpp"
 
 namespace ggxnative {
 
@@ -25,42 +21,43 @@ struct Range {
     std::uint64_t begin, end;
 };
 
-// A tangent-space sampler: Sample from (i, ax, ay, u1, u2).
-using TangentSampler = Sample (*)(Vec3, float, float, float, float);
-
-// caps-iso in tangent space: n = (0, 0, 1), alpha = ax.
-inline Sample sample_caps_iso_tangent(Vec3 i, float ax, float, float u1, float u2)
+inline ggx_vec3 load3(const float* p, std::uint64_t k, std::uint64_t count)
 {
-    return sample_caps_iso({0.0f, 0.0f, 1.0f}, i, ax, u1, u2);
+    return ggx_vec3_make(p[k], p[k + count], p[k + 2 * count]);
 }
 
-inline Vec3 load3(const float* p, std::uint64_t k, std::uint64_t count)
-{
-    return {p[k], p[k + count], p[k + 2 * count]};
-}
-
-inline void store3(float* p, std::uint64_t k, std::uint64_t count, Vec3 v)
+inline void store3(float* p, std::uint64_t k, std::uint64_t count, ggx_vec3 v)
 {
     p[k] = v.x;
     p[k + count] = v.y;
     p[k + 2 * count] = v.z;
 }
 
-inline Vec3 setup_view(const Setup& setup) { return {setup.view[0], setup.view[1], setup.view[2]}; }
+inline ggx_vec3 setup_view(const Setup& setup) { return ggx_vec3_make(setup.view[0], setup.view[1], setup.view[2]); }
+
+// Sample k of a tangent-space setup, as a bulk kernel draws it: Philox uniforms of (seed, k),
+// the method's sampler through the dispatcher (folded to one sampler: `method` is a constant),
+// the normal +z.
+template <int method>
+inline ggx_sample tangent_sample(std::uint64_t seed, std::uint64_t k, ggx_vec3 i, float ax, float ay)
+{
+    float u1, u2;
+    ggx_uniforms(seed, k, &u1, &u2);
+    return ggx_sample_method(method, ggx_vec3_make(0.0f, 0.0f, 1.0f), i, ax, ay, u1, u2);
+}
 
 // The loops copy the parameters into locals: a float store could otherwise alias setup.alpha_x,
 // and the compiler would reload it, and redo everything that depends on it, every sample.
-template <TangentSampler sample>
+template <int method>
 void write_m_pdf_m(const Setup& setup, const Buffers& out, Range range)
 {
-    const Vec3 i = setup_view(setup);
+    const ggx_vec3 i = setup_view(setup);
     const float ax = setup.alpha_x, ay = setup.alpha_y;
     const std::uint64_t seed = setup.seed, count = setup.count;
     float* m = out.m;
     float* pdf_m = out.pdf_m;
     for (std::uint64_t k = range.begin; k < range.end; ++k) {
-        Uniforms u = uniforms(seed, k);
-        Sample s = sample(i, ax, ay, u.u1, u.u2);
+        ggx_sample s = tangent_sample<method>(seed, k, i, ax, ay);
         store3(m, k, count, s.m);
         pdf_m[k] = s.pdf_m;
     }
@@ -68,40 +65,22 @@ void write_m_pdf_m(const Setup& setup, const Buffers& out, Range range)
 
 // Writes the sum of the weights of block b into block_sums[b] for each block in the range
 // (range ends are block-aligned, except the last at count).
-template <TangentSampler sample>
+template <int method>
 void furnace_sum(const Setup& setup, Range range, double* block_sums)
 {
-    const Vec3 i = setup_view(setup);
+    const ggx_vec3 i = setup_view(setup);
     const float ax = setup.alpha_x, ay = setup.alpha_y;
     const std::uint64_t seed = setup.seed;
     for (std::uint64_t block = range.begin; block < range.end; block += furnace_block) {
         std::uint64_t block_end = block + furnace_block < range.end ? block + furnace_block : range.end;
         double sum = 0.0;
-        for (std::uint64_t k = block; k < block_end; ++k) {
-            Uniforms u = uniforms(seed, k);
-            sum += sample(i, ax, ay, u.u1, u.u2).weight;
-        }
+        for (std::uint64_t k = block; k < block_end; ++k)
+            sum += tangent_sample<method>(seed, k, i, ax, ay).weight;
         block_sums[block / furnace_block] = sum;
     }
 }
 
-// Classic methods: into the Duff basis of n, sample in tangent space, o back to world space.
-template <TangentSampler sample>
-Vec3 world_o_through_basis(Vec3 n, Vec3 i, float alpha, float u1, float u2)
-{
-    Basis basis = make_basis(n);
-    Sample s = sample(basis.to_local(i), alpha, alpha, u1, u2);
-    return basis.to_world(s.o);
-}
-
-inline Vec3 world_o_caps_iso(Vec3 n, Vec3 i, float alpha, float u1, float u2)
-{
-    return sample_caps_iso(n, i, alpha, u1, u2).o;
-}
-
-using WorldSampler = Vec3 (*)(Vec3, Vec3, float, float, float);
-
-template <WorldSampler sample_o>
+template <int method>
 void world_space_o(const Setup& setup, const Buffers& buffers, Range range)
 {
     const float alpha = setup.alpha_x;
@@ -110,10 +89,10 @@ void world_space_o(const Setup& setup, const Buffers& buffers, Range range)
     const float* views = buffers.views;
     float* o = buffers.o;
     for (std::uint64_t k = range.begin; k < range.end; ++k) {
-        Uniforms u = uniforms(seed, k);
-        Vec3 n = load3(normals, k, count);
-        Vec3 i = load3(views, k, count);
-        store3(o, k, count, sample_o(n, i, alpha, u.u1, u.u2));
+        float u1, u2;
+        ggx_uniforms(seed, k, &u1, &u2);
+        ggx_vec3 n = load3(normals, k, count), i = load3(views, k, count);
+        store3(o, k, count, ggx_sample_world(method, n, i, alpha, u1, u2).o);
     }
 }
 

@@ -13,12 +13,14 @@
 
 namespace ggxcl::detail {
 
-static_assert(static_cast<int>(Method::ndf) == GGX_METHOD_NDF);
-static_assert(static_cast<int>(Method::heitz) == GGX_METHOD_HEITZ);
-static_assert(static_cast<int>(Method::heitz2017) == GGX_METHOD_HEITZ2017);
-static_assert(static_cast<int>(Method::caps) == GGX_METHOD_CAPS);
-static_assert(static_cast<int>(Method::caps_iso) == GGX_METHOD_CAPS_ISO);
-static_assert(static_cast<int>(Method::bounded) == GGX_METHOD_BOUNDED);
+// Each line of GGX_METHOD_LIST names an enumerator of ggxcl::Method with its
+// id, at its place in all_methods.
+#define GGXCL_CHECK_METHOD(ID, identifier, name)                                                         \
+    static_assert(static_cast<int>(Method::identifier) == GGX_METHOD_##ID, "ggxcl::Method::" #identifier \
+                  " has the id of GGX_METHOD_" #ID);                                                     \
+    static_assert(all_methods[GGX_METHOD_##ID] == Method::identifier, "all_methods in id order");
+GGX_METHOD_LIST(GGXCL_CHECK_METHOD)
+#undef GGXCL_CHECK_METHOD
 static_assert(all_methods.size() == GGX_METHOD_COUNT, "every kernel method id has its ggxcl::Method");
 
 static_assert(static_cast<int>(Field::m) == GGX_FIELD_M);

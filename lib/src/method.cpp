@@ -1,6 +1,7 @@
-// method.cpp - method names and parsing.
+// method.cpp - method names (from the one list of methods, ggx_contract.h) and parsing.
 #include "ggxcl/method.hpp"
 
+#include "device_contract.hpp"
 #include "ggxcl/error.hpp"
 
 namespace ggxcl {
@@ -8,12 +9,10 @@ namespace ggxcl {
 std::string_view method_name(Method method)
 {
     switch (method) {
-    case Method::ndf: return "ndf";
-    case Method::heitz: return "heitz";
-    case Method::heitz2017: return "heitz2017";
-    case Method::caps: return "caps";
-    case Method::caps_iso: return "caps-iso";
-    case Method::bounded: return "bounded";
+#define GGXCL_METHOD_NAME(ID, identifier, name) \
+    case Method::identifier: return name;
+        GGX_METHOD_LIST(GGXCL_METHOD_NAME)
+#undef GGXCL_METHOD_NAME
     }
     return "unknown";
 }

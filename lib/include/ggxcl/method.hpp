@@ -8,8 +8,9 @@
 
 namespace ggxcl {
 
-// The numeric values are the kernels' method ids, GGX_METHOD_* of the device
-// header ggx_contract.h (the library does not build when they differ).
+// The numeric values are the kernels' method ids: the list of methods in the
+// device header ggx_contract.h gives each its id, enumerator and name, and
+// the library does not build when this enum or all_methods differs from it.
 enum class Method {
     ndf = 0,       // Walter et al. 2007: sample D(m) mz
     heitz = 1,     // Heitz 2018: exact VNDF, warped disk

@@ -1,0 +1,122 @@
+// ggx_platform.h - the few language constructs the device math uses, for
+// three languages: OpenCL C (the kernels), C++17 (a CPU renderer, a baker,
+// the native baseline, the host tests) and CUDA (nvcc, or clang -x cuda).
+// The device headers call these names and never the bare math functions,
+// so float math stays float in every language: in C++ an unqualified
+// sqrt(float) may be the double function.
+//
+//   ggx_uint, ggx_ulong    32- and 64-bit unsigned integers
+//   GGX_INLINE             a function inlined into its caller (__host__ __device__ in CUDA)
+//   GGX_UNROLL             unroll the loop that follows
+//   GGX_FLT_MAX            the largest finite float
+//   ggx_sqrt, ggx_rsqrt, ggx_fabs, ggx_fmin, ggx_fmax, ggx_rint, ggx_copysign,
+//   ggx_fma, ggx_clamp     float functions with OpenCL C's meaning
+//   ggx_as_uint            the bits of a float
+//
+// In OpenCL C they are the built-ins themselves, so the kernels compile to
+// what they did before these names existed.  The accuracy differs by
+// language: OpenCL allows 3 ulp for sqrt and 2.5 ulp for division unless
+// built with -cl-fp32-correctly-rounded-divide-sqrt; C++ and CUDA round
+// both correctly (CUDA with its default -prec-sqrt=true -prec-div=true).
+// ggx_fma is one rounding everywhere; where C++ targets a CPU without
+// hardware fma (libm would emulate it, slowly) GGX_NO_FMA defaults to 1 and
+// ggx_sincos.h uses a multiply and an add instead.
+#ifndef GGX_PLATFORM_H
+#define GGX_PLATFORM_H
+
+#if defined(__OPENCL_C_VERSION__)
+// ---- OpenCL C ------------------------------------------------------------
+typedef uint ggx_uint;
+typedef ulong ggx_ulong;
+#define GGX_INLINE inline __attribute__((always_inline))
+#define GGX_UNROLL _Pragma("unroll")
+#define GGX_FLT_MAX FLT_MAX
+#define ggx_sqrt sqrt
+#define ggx_rsqrt rsqrt
+#define ggx_fabs fabs
+#define ggx_fmin fmin
+#define ggx_fmax fmax
+#define ggx_rint rint
+#define ggx_copysign copysign
+#define ggx_fma fma
+#define ggx_clamp clamp
+#define ggx_as_uint as_uint
+
+#elif defined(__CUDACC__) || defined(__CUDA__)  // nvcc; clang -x cuda
+// ---- CUDA: the CUDA math API's float functions (cuda_runtime.h, which nvcc
+// includes; a clang build without the CUDA headers declares them itself) ----
+#include <string.h>
+typedef unsigned int ggx_uint;
+typedef unsigned long long ggx_ulong;
+#define GGX_INLINE __host__ __device__ __forceinline__
+#if defined(__CUDA_ARCH__) || defined(__clang__)
+#define GGX_UNROLL _Pragma("unroll")
+#else
+#define GGX_UNROLL  // nvcc's host pass: neither its front end nor the host compiler takes both pragmas
+#endif
+#define GGX_FLT_MAX 3.402823466e+38f
+GGX_INLINE float ggx_sqrt(float x) { return sqrtf(x); }
+GGX_INLINE float ggx_rsqrt(float x) { return 1.0f / sqrtf(x); }
+GGX_INLINE float ggx_fabs(float x) { return fabsf(x); }
+GGX_INLINE float ggx_fmin(float a, float b) { return fminf(a, b); }
+GGX_INLINE float ggx_fmax(float a, float b) { return fmaxf(a, b); }
+GGX_INLINE float ggx_rint(float x) { return rintf(x); }
+GGX_INLINE float ggx_copysign(float x, float y) { return copysignf(x, y); }
+GGX_INLINE float ggx_fma(float a, float b, float c) { return fmaf(a, b, c); }
+GGX_INLINE ggx_uint ggx_as_uint(float x)
+{
+#if defined(__CUDA_ARCH__)
+    return __float_as_uint(x);
+#else
+    ggx_uint bits;
+    memcpy(&bits, &x, sizeof bits);
+    return bits;
+#endif
+}
+
+#elif defined(__cplusplus)
+// ---- C++17 on the host -----------------------------------------------------
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+typedef std::uint32_t ggx_uint;
+typedef std::uint64_t ggx_ulong;
+#if defined(_MSC_VER)
+#define GGX_INLINE __forceinline
+#define GGX_UNROLL
+#elif defined(__clang__)
+#define GGX_INLINE inline __attribute__((always_inline))
+#define GGX_UNROLL _Pragma("unroll")
+#else
+#define GGX_INLINE inline __attribute__((always_inline))
+#define GGX_UNROLL _Pragma("GCC unroll 16")
+#endif
+#define GGX_FLT_MAX 3.402823466e+38f
+#if !defined(GGX_NO_FMA) && !defined(__FP_FAST_FMAF) && !defined(FP_FAST_FMAF)
+#define GGX_NO_FMA 1  // no hardware fma on the target: a multiply and an add (ggx_sincos.h)
+#endif
+GGX_INLINE float ggx_sqrt(float x) { return std::sqrt(x); }
+GGX_INLINE float ggx_rsqrt(float x) { return 1.0f / std::sqrt(x); }
+GGX_INLINE float ggx_fabs(float x) { return std::fabs(x); }
+GGX_INLINE float ggx_fmin(float a, float b) { return std::fmin(a, b); }
+GGX_INLINE float ggx_fmax(float a, float b) { return std::fmax(a, b); }
+GGX_INLINE float ggx_rint(float x) { return std::rint(x); }
+GGX_INLINE float ggx_copysign(float x, float y) { return std::copysign(x, y); }
+GGX_INLINE float ggx_fma(float a, float b, float c) { return std::fma(a, b, c); }
+GGX_INLINE ggx_uint ggx_as_uint(float x)
+{
+    ggx_uint bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    return bits;
+}
+
+#else
+#error "ggx_platform.h: compile the ggxcl device headers as OpenCL C, C++ (C++17) or CUDA"
+#endif
+
+// fmin(fmax(x, lo), hi), OpenCL C's clamp.
+#if !defined(__OPENCL_C_VERSION__)
+GGX_INLINE float ggx_clamp(float x, float lo, float hi) { return ggx_fmin(ggx_fmax(x, lo), hi); }
+#endif
+
+#endif

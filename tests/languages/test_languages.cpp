@@ -1,0 +1,228 @@
+// test_languages.cpp - the device headers in the three languages they are written for:
+//  - every public device header of kernels/ compiles alone, without a warning, as C++17 with
+//    GCC and with Clang (-Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow),
+//    as CUDA device code (clang++ -x cuda without the CUDA toolkit, tests/cuda/cuda_shim.h
+//    standing in for its headers) and as OpenCL C 1.2 (clang -x cl);
+//  - tests/cuda/ggx_cuda_all.cu, which calls every sampler and pdf from __global__ functions,
+//    compiles to PTX with an entry point per method of the list and no local memory;
+//  - the kernel of examples/cuda compiles to PTX the same way; where nvcc is installed, the file
+//    above and the whole example (host code too) compile with it;
+//  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check.
+// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h) are OpenCL C alone.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <ggxcl/ggxcl.hpp>
+
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h"};
+
+// A folder of this process's own under the temporary one, removed at exit.
+struct Scratch {
+    fs::path dir = fs::temp_directory_path() / ("ggx-languages-test-" + std::to_string(::getpid()));
+    Scratch() { fs::create_directories(dir); }
+    ~Scratch()
+    {
+        std::error_code ignored;
+        fs::remove_all(dir, ignored);
+    }
+};
+
+fs::path scratch()
+{
+    static Scratch folder;
+    return folder.dir;
+}
+
+std::string read_all(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+struct Result {
+    int status;
+    std::string output;
+};
+
+// Runs a shell command, stdout and stderr together.
+Result run(const std::string& command)
+{
+    Result r{-1, ""};
+    std::FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+    if (!pipe)
+        return r;
+    std::array<char, 4096> buffer{};
+    std::size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+        r.output.append(buffer.data(), n);
+    r.status = ::pclose(pipe);
+    return r;
+}
+
+std::vector<std::string> public_headers()
+{
+    std::vector<std::string> names;
+    for (const fs::directory_entry& e : fs::directory_iterator(GGX_KERNEL_DIR))
+        if (e.path().extension() == ".h" &&
+            std::find(kernel_only.begin(), kernel_only.end(), e.path().filename().string()) == kernel_only.end())
+            names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+const std::string cxx_warnings = " -Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow -Werror";
+const std::string kernels = std::string(" -I") + GGX_KERNEL_DIR;
+
+// The commands that compile `source` (a file) in each language.
+std::string gcc_cxx(const std::string& source)
+{
+    return std::string(GGX_GXX) + " -std=c++17 -fsyntax-only" + cxx_warnings + kernels + " -x c++ " + source;
+}
+std::string clang_cxx(const std::string& source)
+{
+    return std::string(GGX_CLANGXX) + " -std=c++17 -fsyntax-only" + cxx_warnings + kernels + " -x c++ " + source;
+}
+std::string clang_cuda(const std::string& source, const std::string& output = "")
+{
+    return std::string(GGX_CLANGXX) + " -x cuda --cuda-device-only -nocudainc -nocudalib --cuda-gpu-arch=sm_80" +
+           " -Wno-unknown-cuda-version -Wall -Wextra -Werror -O2 -include cuda_shim.h -I" + GGX_CUDA_DIR + kernels +
+           (output.empty() ? " -fsyntax-only " : " -S -o " + output + " ") + source;
+}
+std::string clang_opencl(const std::string& source)
+{
+    return std::string(GGX_CLANG) + " -x cl -cl-std=CL1.2 -Xclang -finclude-default-header -fsyntax-only -Wall" +
+           " -Werror" + kernels + " " + source;
+}
+
+fs::path write_file(const fs::path& path, const std::string& text)
+{
+    std::ofstream(path) << text;
+    return path;
+}
+
+void check_compiles(const std::string& what, const std::string& command)
+{
+    const Result r = run(command);
+    INFO(what, ": ", command, "\n", r.output);
+    CHECK(r.status == 0);
+    CHECK(r.output.empty());  // no warning either
+}
+
+std::vector<std::string> entries_of(const std::string& ptx)
+{
+    std::vector<std::string> names;
+    std::istringstream lines(ptx);
+    for (std::string line; std::getline(lines, line);) {
+        const std::size_t at = line.find(".entry ");
+        if (at != std::string::npos)
+            names.push_back(line.substr(at + 7, line.find('(') - at - 7));
+    }
+    return names;
+}
+
+std::string identifier_of(ggxcl::Method method)
+{
+    std::string name(ggxcl::method_name(method));
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+}
+
+} // namespace
+
+TEST_CASE("the compilers are installed (scripts/install-deps.sh: clang-15)")
+{
+    for (const std::string path : {GGX_CLANGXX, GGX_CLANG}) {
+        INFO("clang-15 not found (", path, "): apt-get install clang-15");
+        CHECK(path.find("NOTFOUND") == std::string::npos);
+    }
+}
+
+TEST_CASE("every public device header compiles alone as C++17 (GCC, Clang), CUDA and OpenCL C 1.2")
+{
+    const fs::path dir = scratch();
+    const std::vector<std::string> headers = public_headers();
+    REQUIRE(headers.size() >= 15);
+    for (const std::string& header : headers) {
+        CAPTURE(header);
+        const std::string include = "#include \"" + header + "\"\n";
+        const std::string cpp = write_file(dir / (header + ".cpp"), include).string();
+        const std::string cu = write_file(dir / (header + ".cu"), include).string();
+        const std::string cl = write_file(dir / (header + ".cl"), include).string();
+        check_compiles("g++", gcc_cxx(cpp));
+        check_compiles("clang++", clang_cxx(cpp));
+        check_compiles("clang++ -x cuda", clang_cuda(cu));
+        check_compiles("clang -x cl", clang_opencl(cl));
+    }
+}
+
+TEST_CASE("control: float math outside ggx_platform.h, promoted to double, fails the C++ check")
+{
+    const fs::path dir = scratch();
+    const std::string bad = write_file(dir / "promotes.cpp", "#include <cmath>\n"
+                                                             "inline float half_length(float x) { return sqrt(x) / 2; }\n")
+                                .string();
+    CHECK(run(gcc_cxx(bad)).status != 0);
+    CHECK(run(clang_cxx(bad)).status != 0);
+}
+
+TEST_CASE("every sampler and pdf called from CUDA: PTX with an entry point per method and no local memory")
+{
+    const fs::path dir = scratch();
+    const std::string ptx_path = (dir / "ggx_cuda_all.ptx").string();
+    const std::string source = std::string(GGX_CUDA_DIR) + "/ggx_cuda_all.cu";
+    check_compiles("clang++ -x cuda -S", clang_cuda(source, ptx_path));
+    const std::string ptx = read_all(ptx_path);
+    const std::vector<std::string> entries = entries_of(ptx);
+    for (ggxcl::Method method : ggxcl::all_methods) {
+        CAPTURE(ggxcl::method_name(method));
+        for (const std::string kind : {"sample", "pdf", "world"})
+            CHECK(std::count(entries.begin(), entries.end(), "ggx_cuda_" + kind + "_" + identifier_of(method)) == 1);
+    }
+    CHECK(std::count(entries.begin(), entries.end(), "ggx_cuda_sobol") == 1);
+    CHECK(entries.size() == 3 * ggxcl::all_methods.size() + 1);
+    CHECK(ptx.find(".local") == std::string::npos);  // nothing spilled to local memory
+    CHECK(ptx.find("__local_depot") == std::string::npos);
+    CHECK(ptx.find("call.uni") == std::string::npos);  // every device function inlined, no libdevice call
+}
+
+TEST_CASE("the CUDA example's kernel compiles to PTX with clang alone")
+{
+    const fs::path dir = scratch();
+    const std::string unit = write_file(dir / "example.cu", "#include \"ggx_cuda_furnace.cuh\"\n").string();
+    const std::string ptx_path = (dir / "example.ptx").string();
+    check_compiles("clang++ -x cuda -S (example)",
+                   clang_cuda("-I" + std::string(GGX_EXAMPLES_DIR) + "/cuda " + unit, ptx_path));
+    const std::vector<std::string> entries = entries_of(read_all(ptx_path));
+    REQUIRE(entries.size() == 1);
+    CHECK(entries[0].find("ggx_furnace_kernel") != std::string::npos);
+}
+
+TEST_CASE("with nvcc, where installed: the same file and examples/cuda compile without a warning")
+{
+    if (std::string(GGX_NVCC).empty() || std::string(GGX_NVCC).find("NOTFOUND") != std::string::npos) {
+        MESSAGE("nvcc not found: the clang CUDA checks above stand for it");
+        return;
+    }
+    const fs::path dir = scratch();
+    const std::string nvcc = std::string(GGX_NVCC) + " -std=c++17 -arch=sm_80 -Werror all-warnings" + kernels;
+    check_compiles("nvcc -ptx", nvcc + " -ptx -o " + (dir / "nvcc.ptx").string() + " " + GGX_CUDA_DIR +
+                                    "/ggx_cuda_all.cu");
+    check_compiles("nvcc example", nvcc + " -o " + (dir / "cuda_sample").string() + " " + GGX_EXAMPLES_DIR +
+                                       "/cuda/cuda_sample.cu");
+}

@@ -2,7 +2,8 @@
 # device-check.sh - one prepared check of ggxcl on a Linux machine with an
 # NVIDIA GPU and its OpenCL driver: builds ggxcl, runs the device test
 # suites on the GPU (GGXCL_DEVICE=nvidia), then a short `ggx bench` (caps
-# and heitz, write and fused furnace jobs), in under 8 minutes.  It fails
+# and heitz, write and fused furnace jobs) and, where nvcc is installed,
+# the CUDA example built from the same device headers, in under 8 minutes.  It fails
 # with a clear message, never hangs, when there is no GPU, no OpenCL ICD
 # for it, or a missing build tool.  When the driver is installed but no ICD
 # file names it, one is written to a private vendors folder
@@ -81,6 +82,25 @@ bench_status=$?
 sed -n '/## Speed (ns per sample)/,/## Speed against statistical/p' "$out/BENCH.md" 2>/dev/null | tee -a "$summary"
 say "bench done after $(elapsed) (exit $bench_status)"
 
+# 6. The device headers as CUDA: examples/cuda built by nvcc and run on the GPU.
+cuda_status=0
+nvcc_bin="$(command -v nvcc || echo /usr/local/cuda/bin/nvcc)"
+if [ -x "$nvcc_bin" ]; then
+  if timeout 120 "$nvcc_bin" -std=c++17 -O2 -Ikernels examples/cuda/cuda_sample.cu -o build-gpu/cuda_sample \
+      >"$out/cuda-build.log" 2>&1; then
+    timeout 60 build-gpu/cuda_sample >"$out/cuda-sample.txt" 2>&1
+    cuda_status=$?
+    cat "$out/cuda-sample.txt" | tee -a "$summary"
+  else
+    cuda_status=1
+    tail -20 "$out/cuda-build.log" | tee -a "$summary"
+  fi
+  say "CUDA example done after $(elapsed) (exit $cuda_status)"
+else
+  say "nvcc not found: the CUDA example was not built"
+fi
+
 [ "$ctest_status" -eq 0 ] || fail "device suites (see ctest.log)"
 [ "$bench_status" -eq 0 ] || fail "bench (see bench.log)"
+[ "$cuda_status" -eq 0 ] || fail "CUDA example (see cuda-build.log, cuda-sample.txt)"
 say "device-check: PASSED in $(elapsed)"

@@ -4,7 +4,9 @@
 # examples/albedo_table against the installed package (CMAKE_PREFIX_PATH),
 # runs it and checks its .npy and .png files, compiles tests/install/consumer with
 # `pkg-config --cflags --libs ggxcl` and against the build tree's export
-# (ggxcl_DIR = the build tree), runs both, and removes the prefix.
+# (ggxcl_DIR = the build tree), runs both, builds examples/cpu_render (the
+# device headers as plain C++, no OpenCL) with a bare -I and through
+# find_package's device_headers component, runs it, and removes the prefix.
 # Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, LIBDIR, INCLUDEDIR, BINDIR,
 # GENERATOR, CXX, CXX_FLAGS, LINKER_FLAGS, SAMPLES, HAS_GGX, and PYTHON with
 # PYTHON_DIR (the package's folder under the prefix) when the module is built.
@@ -108,7 +110,20 @@ step("build consumer against the build tree" ${CMAKE_COMMAND} --build ${WORK_DIR
 step("run consumer (build tree)" ${WORK_DIR}/consumer-build/consumer)
 message(STATUS "${step_output}")
 
-# 6. The installed Python package imports from under the prefix and samples
+# 6. A C++ program with no OpenCL at all, calling the device headers directly
+# (examples/cpu_render): with a bare -I, and through find_package(ggxcl
+# COMPONENTS device_headers) with OpenCL hidden from CMake.
+step("compile cpu_render with a bare -I" ${CXX} -std=c++17 -O2 ${cxx_flags} -I${prefix}/${INCLUDEDIR}/ggxcl/cl
+  ${SOURCE_DIR}/examples/cpu_render/cpu_render.cpp ${linker_flags} -o ${WORK_DIR}/cpu-render-bare)
+step("run cpu_render (bare -I)" ${WORK_DIR}/cpu-render-bare 200000)
+message(STATUS "${step_output}")
+step("configure examples/cpu_render" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/cpu_render
+  -B ${WORK_DIR}/cpu-render-build -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_DISABLE_FIND_PACKAGE_OpenCL=TRUE
+  ${forward_flags})
+step("build examples/cpu_render" ${CMAKE_COMMAND} --build ${WORK_DIR}/cpu-render-build)
+step("run cpu_render (find_package)" ${WORK_DIR}/cpu-render-build/cpu_render 200000)
+
+# 7. The installed Python package imports from under the prefix and samples
 # (no semicolons in the code: step() would split it as a CMake list).
 if(PYTHON)
   step("import the installed Python package" ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c

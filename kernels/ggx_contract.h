@@ -33,6 +33,14 @@ enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
 #define GGX_METHOD_COUNT_ONE(ID, identifier, name) +1
 #define GGX_METHOD_COUNT (0 GGX_METHOD_LIST(GGX_METHOD_COUNT_ONE))
 
+// C++: GGX_METHOD_LIST(GGX_CHECK_METHOD_ENUM) checks that the enum
+// GGX_CHECKED_ENUM has each method's enumerator with its id, at its place in
+// the array GGX_CHECKED_ALL (define both first).
+#define GGX_CHECK_METHOD_ENUM(ID, identifier, name)                                              \
+    static_assert(static_cast<int>(GGX_CHECKED_ENUM::identifier) == GGX_METHOD_##ID,             \
+                  #identifier " has the id of GGX_METHOD_" #ID);                                 \
+    static_assert(GGX_CHECKED_ALL[GGX_METHOD_##ID] == GGX_CHECKED_ENUM::identifier, "in id order");
+
 // Field ids, in ggxcl::Field order: the order of the sample kernel's output
 // buffers; -DGGX_WRITE_MASK=<mask> has bit (1 << id) set for each field
 // computed and stored.

@@ -6,12 +6,11 @@
 
 namespace ggxref {
 
-#define GGXREF_CHECK_METHOD(ID, identifier, name)                                                           \
-    static_assert(static_cast<int>(Method::identifier) == GGX_METHOD_##ID, "ggxref::Method::" #identifier \
-                  " has the id of GGX_METHOD_" #ID);                                                      \
-    static_assert(all_methods[GGX_METHOD_##ID] == Method::identifier, "all_methods in id order");
-GGX_METHOD_LIST(GGXREF_CHECK_METHOD)
-#undef GGXREF_CHECK_METHOD
+#define GGX_CHECKED_ENUM Method
+#define GGX_CHECKED_ALL all_methods
+GGX_METHOD_LIST(GGX_CHECK_METHOD_ENUM)
+#undef GGX_CHECKED_ENUM
+#undef GGX_CHECKED_ALL
 static_assert(all_methods.size() == GGX_METHOD_COUNT, "every method of the list has its ggxref::Method");
 
 const char* method_name(Method method)

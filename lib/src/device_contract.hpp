@@ -15,12 +15,11 @@ namespace ggxcl::detail {
 
 // Each line of GGX_METHOD_LIST names an enumerator of ggxcl::Method with its
 // id, at its place in all_methods.
-#define GGXCL_CHECK_METHOD(ID, identifier, name)                                                         \
-    static_assert(static_cast<int>(Method::identifier) == GGX_METHOD_##ID, "ggxcl::Method::" #identifier \
-                  " has the id of GGX_METHOD_" #ID);                                                     \
-    static_assert(all_methods[GGX_METHOD_##ID] == Method::identifier, "all_methods in id order");
-GGX_METHOD_LIST(GGXCL_CHECK_METHOD)
-#undef GGXCL_CHECK_METHOD
+#define GGX_CHECKED_ENUM Method
+#define GGX_CHECKED_ALL all_methods
+GGX_METHOD_LIST(GGX_CHECK_METHOD_ENUM)
+#undef GGX_CHECKED_ENUM
+#undef GGX_CHECKED_ALL
 static_assert(all_methods.size() == GGX_METHOD_COUNT, "every kernel method id has its ggxcl::Method");
 
 static_assert(static_cast<int>(Field::m) == GGX_FIELD_M);

@@ -17,8 +17,9 @@ void SampleOptions::add_view_options(CLI::App& cmd)
     cmd.add_option("--sequence", sequence, "where the uniforms come from: philox (independent) or sobol "
                                            "(Owen-scrambled Sobol points, keyed by --seed)")
         ->capture_default_str();
-    cmd.add_option("--precision", precision, "precise (IEEE arithmetic, sincos within 0.86 ulp) or relaxed "
-                                             "(precise and -cl-fast-relaxed-math)")
+    cmd.add_option("--precision", precision, "precise (sincos within 0.86 ulp; division and sqrt correctly rounded "
+                                             "where the device reports CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) or "
+                                             "relaxed (-cl-fast-relaxed-math)")
         ->capture_default_str();
     cmd.add_option("--device", device, "device index or name part (see `ggx devices`); default GGXCL_DEVICE, else the first");
 }
@@ -90,7 +91,7 @@ ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m) const
     try {
         p.precision = ggxcl::parse_precision(precision);
     } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--precision", precision, "one of precise, relaxed");
+        throw UsageError("--precision", precision, "one of " + ggxcl::precision_list());
     }
     p.sequence = parsed_sequence();
     if (!normal.empty()) {

@@ -121,7 +121,7 @@ ConvergePlan plan_convergence(const ConvergeCommand& cmd)
     try {
         plan.precision = ggxcl::parse_precision(cmd.precision);
     } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--precision", cmd.precision, "one of precise, relaxed");
+        throw UsageError("--precision", cmd.precision, "one of " + ggxcl::precision_list());
     }
     plan.speed_count = cmd.no_speed ? 0 : std::uint32_t(1) << power_of_two("--speed-n", cmd.speed_n, 10, 26);
     return plan;

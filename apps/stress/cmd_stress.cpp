@@ -69,7 +69,7 @@ StressPlan plan_stress(const StressCommand& cmd)
     try {
         plan.precision = ggxcl::parse_precision(cmd.precision);
     } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--precision", cmd.precision, "one of precise, fast, relaxed");
+        throw UsageError("--precision", cmd.precision, "one of " + ggxcl::precision_list());
     }
     return plan;
 }
@@ -120,7 +120,8 @@ Prepare add_stress_command(CLI::App& app)
     CLI::App* cmd = app.add_subcommand("stress", "Stability map: failures of every method over alpha x view x uniforms, "
                                                  "device and host reference");
     cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
-    cmd->add_option("--precision", s->precision, "precise, fast or relaxed (device side)")->capture_default_str();
+    cmd->add_option("--precision", s->precision, "precision mode on the device: one of " + ggxcl::precision_list())
+        ->capture_default_str();
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
     cmd->add_option("--out", s->out, "output prefix: PREFIX.csv and PREFIX-METHOD.png")->required();
     cmd->add_flag("--no-png", s->no_png, "write the CSV only (no Python needed)");

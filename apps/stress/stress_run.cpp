@@ -53,10 +53,11 @@ void count(StressMap& map, const StressAxes& axes, const StressCase& c, const St
         cell.failures[k] += kinds[k];
 }
 
-std::string stress_options(ggxcl::Method method, ggxcl::Precision precision, bool guards)
+// The precision mode's options are the library's own (ggxcl::precision_options).
+std::string stress_options(const cl::Device& device, ggxcl::Method method, ggxcl::Precision precision, bool guards)
 {
-    std::string options = "-DGGX_METHOD=" + std::to_string(int(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0");
-    return precision == ggxcl::Precision::relaxed ? options + " -cl-fast-relaxed-math" : options;
+    return "-DGGX_METHOD=" + std::to_string(int(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0") +
+           ggxcl::precision_options(device, precision);
 }
 
 } // namespace
@@ -96,7 +97,7 @@ StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl
     const std::size_t n = cases.size();
     std::vector<float> in = planar_inputs(cases), out(output_planes * n);
     cl::Program program(sampler.context(), ggxcl::kernel_source("ggx_stress.cl"));
-    program.build({sampler.device()}, stress_options(method, precision, guards).c_str());
+    program.build({sampler.device()}, stress_options(sampler.device(), method, precision, guards).c_str());
     cl::Kernel kernel(program, "ggx_stress");
     cl::Buffer in_buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
                          in.data());

@@ -1,4 +1,5 @@
-// device_quirks.cpp - the build options a device needs (see device_quirks.hpp).
+// device_quirks.cpp - the build options a device needs, and those of a
+// precision mode on it (see device_quirks.hpp).
 #include "device_quirks.hpp"
 
 namespace ggxcl::detail {
@@ -20,6 +21,15 @@ std::string device_quirk_options(const cl::Device& device)
     if (!(device.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>() & CL_FP_FMA))
         options += " -DGGX_NO_FMA=1";
     return options;
+}
+
+std::string precision_options_for(Precision precision, cl_device_fp_config single_fp_config)
+{
+    if (precision == Precision::relaxed)
+        return " -cl-fast-relaxed-math";
+    if (single_fp_config & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT)
+        return " -cl-fp32-correctly-rounded-divide-sqrt";
+    return "";
 }
 
 bool kernel_writes_look_uninitialized(const cl::Device& device)

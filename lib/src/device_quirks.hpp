@@ -1,12 +1,15 @@
 // device_quirks.hpp - what the runtime knows of particular OpenCL
 // implementations: build options for a compiler that cannot take some
 // portable OpenCL C construct (users never set them; every program the
-// library builds gets them), and which platforms cache programs themselves.
+// library builds gets them), the options of a precision mode on a device
+// (what its single-precision config allows), and which platforms cache
+// programs themselves.
 #pragma once
 
 #include <string>
 
 #include "ggxcl/opencl.hpp"
+#include "ggxcl/params.hpp"
 
 namespace ggxcl::detail {
 
@@ -19,6 +22,14 @@ namespace ggxcl::detail {
 // single-precision config lacks CL_FP_FMA: there fma() is a slow software
 // routine and kernels/ggx_sincos.h uses a * b + c.  Empty for most devices.
 std::string device_quirk_options(const cl::Device& device);
+
+// The build options of precision mode `precision` on a device whose
+// CL_DEVICE_SINGLE_FP_CONFIG is `single_fp_config`: relaxed,
+// " -cl-fast-relaxed-math"; precise, " -cl-fp32-correctly-rounded-divide-sqrt"
+// where the config has CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT (OpenCL allows
+// the option only there), else none (division within 2.5 ulp, sqrt within
+// 3 ulp).  ggxcl::precision_options (user_kernels.hpp) reads the config.
+std::string precision_options_for(Precision precision, cl_device_fp_config single_fp_config);
 
 // Whether the platform keeps compiled programs between processes itself
 // (PoCL in ~/.cache/pocl, NVIDIA in ~/.nv/ComputeCache): there the

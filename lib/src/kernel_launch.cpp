@@ -9,17 +9,18 @@
 #include "device_contract.hpp"
 #include "device_faults.hpp"
 #include "ggxcl/error.hpp"
+#include "ggxcl/user_kernels.hpp"
 
 namespace ggxcl {
 
 namespace detail {
 
-std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs, bool guards)
+std::string build_options(const cl::Device& device, const SampleParams& params, unsigned write_mask,
+                          const DeviceInputs& inputs, bool guards)
 {
     auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
     std::string options = "-DGGX_METHOD=" + std::to_string(method_id(params.method));
-    if (params.precision == Precision::relaxed)
-        options += " -cl-fast-relaxed-math";
+    options += precision_options(device, params.precision);
     options += " -DGGX_WRITE_MASK=" + std::to_string(write_mask);
     options += " -DGGX_SEQUENCE=" + std::to_string(sequence_id(params.sequence));
     options += flag("GGX_PER_SAMPLE_VIEW", inputs.view() != nullptr) +

@@ -15,11 +15,12 @@ namespace ggxcl::detail {
 
 constexpr std::size_t preferred_group_size = 256;
 
-// -D options selecting the method, the precision mode, the written fields, the sequence, per-sample inputs
-// and what the request needs (isotropic, views below the horizon, world space).
+// -D options selecting the method, the written fields, the sequence, per-sample inputs and what the
+// request needs (isotropic, views below the horizon, world space), with the precision mode's options on
+// `device` (precision_options, ggxcl/user_kernels.hpp).
 // guards = false (benchmarks only) drops the fallbacks of docs/STABILITY.md.
-std::string build_options(const SampleParams& params, unsigned write_mask, const DeviceInputs& inputs,
-                          bool guards = true);
+std::string build_options(const cl::Device& device, const SampleParams& params, unsigned write_mask,
+                          const DeviceInputs& inputs, bool guards = true);
 bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs);
 bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
 

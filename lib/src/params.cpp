@@ -1,17 +1,23 @@
 // params.cpp - validation of sampling parameters; every message names the
-// parameter, the bad value and what is allowed.
+// parameter, the bad value and what is allowed.  Also the validated form
+// the Sampler's internal paths take, and the count of validations that
+// tests read (validated_params.hpp).
 #include "ggxcl/params.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "ggxcl/error.hpp"
+#include "validated_params.hpp"
 
 namespace ggxcl {
 
 namespace {
+
+std::atomic<std::uint64_t> params_validated{0};  // validate(SampleParams) calls, for detail::params_validations
 
 std::string text(double value)
 {
@@ -59,6 +65,15 @@ void check_uniforms(std::size_t index, const std::array<float, 2>& u)
                               "two numbers in [0, 1)");
 }
 
+// params with unit view and normal; params must be valid.
+SampleParams with_unit_vectors(const SampleParams& params)
+{
+    SampleParams out = params;
+    out.view = unit_vector(params.view);
+    out.normal = unit_vector(params.normal);
+    return out;
+}
+
 } // namespace
 
 std::string_view precision_name(Precision precision)
@@ -72,10 +87,18 @@ std::string_view precision_name(Precision precision)
 
 Precision parse_precision(std::string_view name)
 {
-    for (Precision p : {Precision::precise, Precision::relaxed})
+    for (Precision p : all_precisions)
         if (precision_name(p) == name)
             return p;
-    throw InvalidArgument("precision", std::string(name), "one of precise, relaxed");
+    throw InvalidArgument("precision", std::string(name), "one of " + precision_list());
+}
+
+std::string precision_list()
+{
+    std::string list;
+    for (Precision p : all_precisions)
+        list += (list.empty() ? "" : ", ") + std::string(precision_name(p));
+    return list;
 }
 
 std::string_view sequence_name(Sequence sequence)
@@ -160,6 +183,7 @@ bool all_isotropic(const PerSampleInputs& inputs, const SampleParams& params)
 
 void validate(const SampleParams& params)
 {
+    params_validated.fetch_add(1, std::memory_order_relaxed);
     check_alpha("alpha_x", params.alpha_x);
     check_alpha("alpha_y", params.alpha_y);
     check_isotropic(params, params.alpha_x, params.alpha_y);
@@ -170,11 +194,23 @@ void validate(const SampleParams& params)
 SampleParams normalized(const SampleParams& params)
 {
     validate(params);
-    SampleParams out = params;
-    out.view = unit_vector(params.view);
-    out.normal = unit_vector(params.normal);
-    return out;
+    return with_unit_vectors(params);
 }
+
+namespace detail {
+
+ValidatedParams validated(const SampleParams& params)
+{
+    validate(params);
+    return ValidatedParams(with_unit_vectors(params));
+}
+
+std::uint64_t params_validations()
+{
+    return params_validated.load(std::memory_order_relaxed);
+}
+
+} // namespace detail
 
 void validate(const SampleRange& range)
 {

@@ -1,7 +1,9 @@
 // sampler_enqueue.cpp - the Sampler's construction and settings, and its
-// launches into the caller's buffers: enqueue, warm_up, enqueue_pdf (the
-// host-memory front ends are in sampler_generate.cpp, the histogram and the
-// fused estimator in sampler_histogram.cpp and sampler_furnace.cpp).
+// launches into the caller's buffers: enqueue, warm_up, enqueue_pdf, each
+// validating its arguments once and then launching through
+// enqueue_validated or enqueue_pdf_validated, which the host-memory front
+// ends (sampler_generate.cpp) call per chunk.  The histogram and the fused
+// estimator are in sampler_histogram.cpp and sampler_furnace.cpp.
 #include "ggxcl/sampler.hpp"
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include "cl_call.hpp"
 #include "device_contract.hpp"
 #include "kernel_launch.hpp"
+#include "validated_params.hpp"
 #include "ggxcl/error.hpp"
 
 namespace ggxcl {
@@ -128,36 +131,42 @@ cl::Event Sampler::enqueue_variant(cl::CommandQueue& queue, const SampleParams& 
                                    const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
                                    const std::vector<cl::Event>* wait, bool guards)
 {
-    validate(params);
+    const ValidatedParams valid = validated(params);
     validate(range);
     check_launch_count(range.count, stride);
-    unsigned mask = write_mask_of(outputs);
-    if (mask == 0)
+    if (write_mask_of(outputs) == 0)
         throw InvalidArgument("outputs", "none", "at least one output buffer (" + field_list() + ")");
-    SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
-        check_buffer_sizes(&outputs, inputs, unit, stride ? stride : range.count);
-        std::string options = build_options(unit, mask, inputs, guards);
-        auto make = [&](const std::string& name) {
-            KernelLease lease = kernel(bulk_file, name, options);
-            cl::Kernel& k = *lease;
-            k.setArg(arg_seed, cl_ulong(range.seed));
-            k.setArg(arg_first, cl_ulong(range.first));
-            k.setArg(arg_count, cl_uint(range.count));
-            k.setArg(arg_stride, cl_uint(stride ? stride : range.count));
-            set_param_args(k, arg_params, unit, inputs);
-            for (Field f : all_fields)
-                k.setArg(arg_output(f), outputs.of(f));
-            return lease;
-        };
-        return launch_split(queue, work_group_size(), make, "ggx_sample_bulk", cl_uint(range.count), wait);
+        check_buffer_sizes(&outputs, inputs, *valid, stride ? stride : range.count);
+        return enqueue_validated(queue, valid, range, outputs, stride, inputs, wait, guards);
     });
+}
+
+cl::Event Sampler::enqueue_validated(cl::CommandQueue& queue, const ValidatedParams& params, const SampleRange& range,
+                                     const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
+                                     const std::vector<cl::Event>* wait, bool guards)
+{
+    std::string options = build_options(device_, *params, write_mask_of(outputs), inputs, guards);
+    auto make = [&](const std::string& name) {
+        KernelLease lease = kernel(bulk_file, name, options);
+        cl::Kernel& k = *lease;
+        k.setArg(arg_seed, cl_ulong(range.seed));
+        k.setArg(arg_first, cl_ulong(range.first));
+        k.setArg(arg_count, cl_uint(range.count));
+        k.setArg(arg_stride, cl_uint(stride ? stride : range.count));
+        set_param_args(k, arg_params, *params, inputs);
+        for (Field f : all_fields)
+            k.setArg(arg_output(f), outputs.of(f));
+        return lease;
+    };
+    return launch_split(queue, work_group_size(), make, "ggx_sample_bulk", cl_uint(range.count), wait);
 }
 
 void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceInputs& inputs)
 {
     if (fields.empty())
         throw InvalidArgument("fields", "none", "at least one field to warm up (" + field_list() + ")");
+    const ValidatedParams valid = validated(params);
     // One whole work-group and a tail: both kernels of launch_split.
     const std::uint32_t count = std::uint32_t(work_group_size() + 1);
     translate_cl_errors([&] {
@@ -177,7 +186,7 @@ void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceI
         for (Field f : all_fields)
             if (fields.has(f))
                 outputs.of(f) = floats(field_columns(f), zero);
-        enqueue(queue_, params, {0, 0, count}, outputs, 0, scratch_inputs).wait();
+        enqueue_validated(queue_, valid, {0, 0, count}, outputs, 0, scratch_inputs, nullptr, true).wait();
         return 0;
     });
 }
@@ -186,27 +195,33 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
                                const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride,
                                const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
 {
-    validate(params);
+    const ValidatedParams valid = validated(params);
     check_launch_count(count, stride);
-    SampleParams unit = normalized(params);
     return translate_cl_errors([&] {
         const std::uint64_t planes_stride = stride ? stride : count;
-        check_buffer_sizes(nullptr, inputs, unit, planes_stride);
+        check_buffer_sizes(nullptr, inputs, *valid, planes_stride);
         check_buffer_size(directions, "directions", 3, planes_stride);
         check_buffer_size(pdf_out, "pdf_out", 1, planes_stride);
-        std::string options = build_options(unit, 0, inputs);
-        auto make = [&](const std::string& name) {
-            KernelLease lease = kernel(bulk_file, name, options);
-            cl::Kernel& k = *lease;
-            k.setArg(pdf_arg_count, cl_uint(count));
-            k.setArg(pdf_arg_stride, cl_uint(stride ? stride : count));
-            set_param_args(k, pdf_arg_params, unit, inputs);
-            k.setArg(pdf_arg_directions, directions);
-            k.setArg(pdf_arg_pdfs, pdf_out);
-            return lease;
-        };
-        return launch_split(queue, work_group_size(), make, "ggx_pdf_bulk", count, wait);
+        return enqueue_pdf_validated(queue, valid, count, directions, pdf_out, stride, inputs, wait);
     });
+}
+
+cl::Event Sampler::enqueue_pdf_validated(cl::CommandQueue& queue, const ValidatedParams& params, std::uint32_t count,
+                                         const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride,
+                                         const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
+{
+    std::string options = build_options(device_, *params, 0, inputs);
+    auto make = [&](const std::string& name) {
+        KernelLease lease = kernel(bulk_file, name, options);
+        cl::Kernel& k = *lease;
+        k.setArg(pdf_arg_count, cl_uint(count));
+        k.setArg(pdf_arg_stride, cl_uint(stride ? stride : count));
+        set_param_args(k, pdf_arg_params, *params, inputs);
+        k.setArg(pdf_arg_directions, directions);
+        k.setArg(pdf_arg_pdfs, pdf_out);
+        return lease;
+    };
+    return launch_split(queue, work_group_size(), make, "ggx_pdf_bulk", count, wait);
 }
 
 } // namespace ggxcl

@@ -1,7 +1,8 @@
 // sampler_furnace.cpp - Sampler::furnace and enqueue_furnace: the fused
 // white-furnace estimator, which sums the estimator weights per work-item
 // on the device (kernels/ggx_furnace.cl) and adds those partial sums in
-// double on the host.
+// double on the host.  Both validate once; furnace's launches go through
+// enqueue_furnace_validated.
 #include <algorithm>
 #include <cmath>
 
@@ -12,6 +13,7 @@
 #include "device_contract.hpp"
 #include "kernel_launch.hpp"
 #include "queue_waits.hpp"
+#include "validated_params.hpp"
 
 namespace ggxcl {
 
@@ -67,41 +69,49 @@ cl::Event Sampler::enqueue_furnace_variant(cl::CommandQueue& queue, const Sample
                                            const DeviceInputs& inputs, const std::vector<cl::Event>* wait,
                                            bool guards)
 {
-    validate(params);
+    const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
     detail::check_launch_count(range.count, 0);
     if (range.count > (1ull << 31))  // keeps the kernel's 32-bit sample indices from wrapping
         throw InvalidArgument("count", std::to_string(range.count), "1 .. 2^31 per enqueue_furnace");
-    SampleParams unit = normalized(params);
     return detail::translate_cl_errors([&] {
-        detail::check_buffer_sizes(nullptr, inputs, unit, range.count);
+        detail::check_buffer_sizes(nullptr, inputs, *valid, range.count);
         detail::check_buffer_size(sums, "sums", 2, furnace_items(range.count));
-        // The estimator sums weights (its kernel ignores the write mask).
-        const unsigned mask = detail::write_mask({Field::weight});
-        KernelLease lease = kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(unit, mask, inputs, guards));
-        cl::Kernel& k = *lease;
-        k.setArg(detail::arg_seed, cl_ulong(range.seed));
-        k.setArg(detail::arg_first, cl_ulong(range.first));
-        k.setArg(detail::arg_count, cl_uint(range.count));
-        k.setArg(detail::arg_stride, cl_uint(range.count));
-        detail::set_param_args(k, detail::arg_params, unit, inputs);
-        k.setArg(detail::arg_outputs, sums);
-        cl::Event event;
-        detail::before_launch();
-        queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(furnace_items(range.count)),
-                                   cl::NDRange(work_group_size()), wait, &event);
-        return event;
+        return enqueue_furnace_validated(queue, valid, range, sums, inputs, wait, guards);
     });
+}
+
+cl::Event Sampler::enqueue_furnace_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
+                                             const SampleRange& range, const cl::Buffer& sums,
+                                             const DeviceInputs& inputs, const std::vector<cl::Event>* wait,
+                                             bool guards)
+{
+    // The estimator sums weights (its kernel ignores the write mask).
+    const unsigned mask = detail::write_mask({Field::weight});
+    KernelLease lease =
+        kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(device_, *params, mask, inputs, guards));
+    cl::Kernel& k = *lease;
+    k.setArg(detail::arg_seed, cl_ulong(range.seed));
+    k.setArg(detail::arg_first, cl_ulong(range.first));
+    k.setArg(detail::arg_count, cl_uint(range.count));
+    k.setArg(detail::arg_stride, cl_uint(range.count));
+    detail::set_param_args(k, detail::arg_params, *params, inputs);
+    k.setArg(detail::arg_outputs, sums);
+    cl::Event event;
+    detail::before_launch();
+    queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(furnace_items(range.count)),
+                               cl::NDRange(work_group_size()), wait, &event);
+    return event;
 }
 
 // Adds the sums of one launch to `total`: unguarded first, and again with
 // guards if a partial sum is not finite.
-void Sampler::add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,
-                                 std::vector<float>& host, FurnaceSums& total)
+void Sampler::add_furnace_launch(const detail::ValidatedParams& params, const SampleRange& range,
+                                 const cl::Buffer& sums, std::vector<float>& host, FurnaceSums& total)
 {
     std::size_t used = furnace_items(range.count);
     for (bool guarded : {false, true}) {
-        enqueue_furnace_variant(queue_, params, range, sums, {}, nullptr, guarded);
+        enqueue_furnace_validated(queue_, params, range, sums, {}, nullptr, guarded);
         detail::read_and_wait(queue_, sums, 0, 2 * used * sizeof(float), host.data());
         double sum = total.sum, sum_of_squares = total.sum_of_squares;  // one order of additions, whatever the launches
         if (add_partial_sums(host, used, sum, sum_of_squares) || guarded) {
@@ -114,7 +124,7 @@ void Sampler::add_furnace_launch(const SampleParams& params, const SampleRange& 
 
 FurnaceSums Sampler::furnace(const SampleParams& params, const SampleRange& range)
 {
-    validate(params);
+    const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
     FurnaceSums total;
     total.count = range.count;
@@ -126,7 +136,7 @@ FurnaceSums Sampler::furnace(const SampleParams& params, const SampleRange& rang
             std::vector<float> host(floats);
             for (; start < range.count; start += per_launch) {  // start: the first sample not summed
                 std::uint64_t n = std::min(per_launch, range.count - start);
-                add_furnace_launch(params, {range.seed, range.first + start, n}, sums, host, total);
+                add_furnace_launch(valid, {range.seed, range.first + start, n}, sums, host, total);
             }
         };  // launches start at multiples of samples_per_item: the same partial sums however split
         detail::retry_with_smaller_chunks(launch_size, 1024, memory_retries_, run_launches, samples_per_item);

@@ -1,7 +1,8 @@
 // sampler_generate.cpp - Sampler::generate, generate_chunks and pdf: the
 // host-memory front end that runs the bulk kernels chunk by chunk through
 // device buffers of bounded size, halving the chunk when the device runs
-// out of memory.
+// out of memory.  Each call validates its request once at its start; the
+// chunks launch through enqueue_validated and enqueue_pdf_validated.
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -9,6 +10,7 @@
 #include "cl_call.hpp"
 #include "queue_waits.hpp"
 #include "device_faults.hpp"
+#include "validated_params.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
 
@@ -211,20 +213,15 @@ SampleView view_of(const SampleSet& set)
     return v;
 }
 
-void Sampler::run_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+void Sampler::run_chunks(const detail::ValidatedParams& params, const SampleRange& range, FieldSet fields,
                          const PerSampleInputs& per_sample, bool map, const ChunkDelivery& deliver)
 {
-    validate(params);
-    validate(range);
-    validate(per_sample, params, range.count);
-    if (fields.empty())
-        throw InvalidArgument("fields", "none", "at least one of " + field_list());
     translate_cl_errors([&] {
         std::uint64_t start = 0, chunk = fitted_capacity(max_alloc_, chunk_size_, range.count, 3);
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
             // Two slots: the device draws and fetches chunk k + 1 while the sink takes chunk k.
             ChunkSlot slots[2] = {ChunkSlot(context_, fields, capacity, map), ChunkSlot(context_, fields, capacity, map)};
-            ChunkInputs inputs(context_, per_sample, params, capacity);
+            ChunkInputs inputs(context_, per_sample, *params, capacity);
             QueueDrain drain{queue_};      // before the slots go, whatever ends the pass
             std::uint64_t next = start;    // the first sample not yet enqueued
             ChunkSlot* pending = nullptr;  // enqueued, not yet delivered
@@ -242,8 +239,8 @@ void Sampler::run_chunks(const SampleParams& params, const SampleRange& range, F
                     try {
                         // Blocking, on the in-order queue: after the previous chunk's kernel has read them.
                         inputs.upload(queue_, per_sample, next, n, capacity);
-                        enqueue(queue_, params, {range.seed, range.first + next, n}, slot->outputs(),
-                                std::uint32_t(capacity), inputs.buffers);
+                        enqueue_validated(queue_, params, {range.seed, range.first + next, n}, slot->outputs(),
+                                          std::uint32_t(capacity), inputs.buffers, nullptr, true);
                     } catch (...) {
                         // The chunk drawn before this one may be whole: it reaches the sink first.
                         if (pending)
@@ -266,45 +263,67 @@ void Sampler::run_chunks(const SampleParams& params, const SampleRange& range, F
     });
 }
 
+namespace detail {
+
+ValidatedParams validated_request(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                                  const PerSampleInputs& per_sample)
+{
+    ValidatedParams valid = validated(params);
+    validate(range);
+    validate(per_sample, params, range.count);
+    if (fields.empty())
+        throw InvalidArgument("fields", "none", "at least one of " + field_list());
+    return valid;
+}
+
+} // namespace detail
+
 void Sampler::generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
                                    const ChunkViewSink& sink, const PerSampleInputs& per_sample)
 {
-    run_chunks(params, range, fields, per_sample, host_unified_,
+    run_chunks(detail::validated_request(params, range, fields, per_sample), range, fields, per_sample, host_unified_,
                [&](const SampleView& view, const SampleSet*, std::uint64_t offset) { sink(view, offset); });
 }
 
 void Sampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
                               const ChunkSink& sink, const PerSampleInputs& per_sample)
 {
-    run_chunks(params, range, fields, per_sample, false,
+    run_chunks(detail::validated_request(params, range, fields, per_sample), range, fields, per_sample, false,
                [&](const SampleView&, const SampleSet* copy, std::uint64_t offset) { sink(*copy, offset); });
 }
 
 SampleSet Sampler::generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
                             const PerSampleInputs& per_sample)
 {
+    return generate_validated(detail::validated_request(params, range, fields, per_sample), range, fields,
+                              per_sample);
+}
+
+SampleSet Sampler::generate_validated(const detail::ValidatedParams& params, const SampleRange& range,
+                                      FieldSet fields, const PerSampleInputs& per_sample)
+{
     SampleSet all;
     all.count = range.count;
-    auto copy_chunk = [&](const SampleSet& chunk, std::uint64_t offset) {
+    auto copy_chunk = [&](const SampleView&, const SampleSet* chunk, std::uint64_t offset) {
         for (Field f : all_fields) {
             if (!fields.has(f))
                 continue;
             std::vector<float>& whole = all.column_source(f);
-            if (whole.empty())  // the first chunk: after generate_chunks has checked the request
+            if (whole.empty())  // the first chunk: the whole arrays are allocated once a chunk arrives
                 whole.resize(field_columns(f) * range.count);
             for (int c = 0; c < field_columns(f); ++c)
-                std::copy_n(chunk.column_source(f).data() + c * chunk.count, chunk.count,
+                std::copy_n(chunk->column_source(f).data() + c * chunk->count, chunk->count,
                             whole.data() + c * range.count + offset);
         }
     };
-    generate_chunks(params, range, fields, copy_chunk, per_sample);
+    run_chunks(params, range, fields, per_sample, false, copy_chunk);
     return all;
 }
 
 std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Vec3>& directions,
                                 const PerSampleInputs& per_sample)
 {
-    validate(params);
+    const detail::ValidatedParams valid = detail::validated(params);
     const std::uint64_t count = directions.size();
     if (count == 0)
         throw InvalidArgument("directions", "0 entries", "at least one direction");
@@ -315,12 +334,13 @@ std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Ve
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
             cl::Buffer dirs = detail::device_buffer(context_, CL_MEM_READ_ONLY, bytes(3 * capacity));
             cl::Buffer pdfs = detail::device_buffer(context_, CL_MEM_WRITE_ONLY, bytes(capacity));
-            ChunkInputs inputs(context_, per_sample, params, capacity);
+            ChunkInputs inputs(context_, per_sample, *valid, capacity);
             while (start < count) {  // start: the first direction whose pdf is not read back
                 std::uint64_t n = std::min(capacity, count - start);
                 inputs.upload(queue_, per_sample, start, n, capacity);
                 ChunkInputs::write(queue_, dirs, planar_units(directions, start, n, capacity));
-                enqueue_pdf(queue_, params, std::uint32_t(n), dirs, pdfs, std::uint32_t(capacity), inputs.buffers);
+                enqueue_pdf_validated(queue_, valid, std::uint32_t(n), dirs, pdfs, std::uint32_t(capacity),
+                                      inputs.buffers, nullptr);
                 detail::read_and_wait(queue_, pdfs, 0, bytes(n), result.data() + start);
                 start += n;
             }

@@ -1,6 +1,7 @@
 // sampler_histogram.cpp - Sampler::histogram: device-side binning of sample
 // directions in launches of bounded size, 32-bit counts per launch summed
-// into 64-bit counts on the host.
+// into 64-bit counts on the host; the request is validated once, before
+// the first launch.
 #include <algorithm>
 #include <numeric>
 
@@ -11,6 +12,7 @@
 #include "device_contract.hpp"
 #include "kernel_launch.hpp"
 #include "queue_waits.hpp"
+#include "validated_params.hpp"
 
 namespace ggxcl {
 
@@ -21,9 +23,10 @@ constexpr std::uint64_t samples_per_launch = 1u << 30;      // keeps every 32-bi
 constexpr std::uint64_t samples_per_index_pass = 1u << 22;  // the bin indices of one pass: 16 MiB
 constexpr std::uint64_t smallest_pass = 1024;  // samples; out of memory below it is an error
 
-std::string histogram_options(const SampleParams& params, int bins_z, int bins_phi, Field direction)
+std::string histogram_options(const cl::Device& device, const SampleParams& params, int bins_z, int bins_phi,
+                              Field direction)
 {
-    return detail::build_options(params, 0, {}) + " -DGGX_BINS_Z=" + std::to_string(bins_z) +
+    return detail::build_options(device, params, 0, {}) + " -DGGX_BINS_Z=" + std::to_string(bins_z) +
            " -DGGX_BINS_PHI=" + std::to_string(bins_phi) + " -DGGX_BIN_M=" + (direction == Field::m ? "1" : "0");
 }
 
@@ -145,14 +148,14 @@ std::uint64_t Histogram::total() const
 Histogram Sampler::histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
                              Field direction)
 {
-    validate(params);
+    const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
-    SampleParams unit = normalized(params);
+    const SampleParams& unit = *valid;
     return detail::translate_cl_errors([&] {
         check_bins(bins_z, bins_phi, direction, local_mem_);
         const bool cpu = cpu_;
         const std::size_t bins = std::size_t(bins_z) * bins_phi;
-        const std::string options = histogram_options(unit, bins_z, bins_phi, direction);
+        const std::string options = histogram_options(device_, unit, bins_z, bins_phi, direction);
         Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0};
         // Passes of at most `pass` samples, halved when the device runs out of memory: the counts are
         // integers, the same however the range is cut.

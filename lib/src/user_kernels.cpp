@@ -1,5 +1,6 @@
 // user_kernels.cpp - building a user's program with the device headers on
-// its include path, and the -I option that puts them there.
+// its include path, the -I option that puts them there, and the options of
+// the device and of a precision mode.
 #include "ggxcl/user_kernels.hpp"
 
 #include "build_program.hpp"
@@ -19,6 +20,11 @@ std::string device_include_option()
 std::string device_options(const cl::Device& device)
 {
     return detail::device_quirk_options(device);
+}
+
+std::string precision_options(const cl::Device& device, Precision precision)
+{
+    return detail::precision_options_for(precision, device.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>());
 }
 
 cl::Program build_user_program(const cl::Context& context, const cl::Device& device, const std::string& source,

@@ -5,8 +5,8 @@
 //  - the fallback (docs/STABILITY.md) happens exactly where documented: a
 //    roughness axis of 0, the view exactly opposite the normal (the VNDF
 //    family), caps-iso at n = (0, 0, -1); never inside the domain;
-//  - the tool's CSV (one row per method, side and cell; every case counted)
-//    and bad input.
+//  - the tool's CSV (one row per method, side and cell; every case counted),
+//    bad input, and the precision modes it offers (the library's, no more).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -172,14 +172,37 @@ TEST_CASE("ggx stress: bad input exits 2 naming the flag")
     ggxtest::fs::remove_all(dir);
 }
 
+TEST_CASE("ggx stress offers and accepts exactly the library's precision modes")
+{
+    ggxtest::fs::path dir = ggxtest::scratch_dir("stress-precision");
+    const std::string allowed = "allowed is one of " + ggxcl::precision_list();
+    ggxtest::Run fast =
+        ggxtest::run_ggx("stress --precision fast --no-png --out " + (dir / "m").string(), dir / "err.txt");
+    CAPTURE(fast.err);
+    CHECK(fast.status == 2);
+    CHECK(fast.err.find("--precision: invalid value 'fast': " + allowed) != std::string::npos);
+    CHECK(fast.err.find("fast", fast.err.find("allowed is")) == std::string::npos);  // not among the allowed
+    // The help (on stdout, sent to the captured stderr here).
+    ggxtest::Run help =
+        ggxtest::run_ggx("{ " + std::string(GGX_BINARY) + " stress --help 1>&2; }", dir / "help.txt", false);
+    CAPTURE(help.err);
+    CHECK(help.status == 0);
+    const std::size_t line = help.err.find("--precision");
+    REQUIRE(line != std::string::npos);
+    const std::string precision_help = help.err.substr(line, help.err.find('\n', line) - line);
+    for (ggxcl::Precision precision : ggxcl::all_precisions)
+        CHECK(precision_help.find(ggxcl::precision_name(precision)) != std::string::npos);
+    CHECK(help.err.find("fast") == std::string::npos);
+    ggxtest::fs::remove_all(dir);
+}
+
 TEST_CASE("no NaN or Inf anywhere on the stress grid: every method, device in every mode, host")
 {
     ggxapp::StressAxes axes = ggxapp::stress_axes();
     for (ggxcl::Method method : ggxcl::all_methods) {
         std::vector<ggxapp::StressCase> cases = ggxapp::stress_cases(method, axes);
         CAPTURE(ggxcl::method_name(method));
-        for (ggxcl::Precision precision :
-             {ggxcl::Precision::precise, ggxcl::Precision::relaxed}) {
+        for (ggxcl::Precision precision : ggxcl::all_precisions) {
             CAPTURE(ggxcl::precision_name(precision));
             CHECK(total(ggxapp::device_stress_map(sampler(), method, precision, cases, axes), ggxapp::nan_inf) == 0);
         }

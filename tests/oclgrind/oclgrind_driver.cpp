@@ -335,7 +335,7 @@ void run_user(ggxcl::Sampler& sampler, std::uint64_t count)
             ggxcl::SampleParams p{method, 0.2f, method == Method::caps_iso ? 0.2f : 0.45f,
                                   ggxcl::view_from_angles(63, 30)};
             p.precision = precision;
-            std::string options = precision == Precision::relaxed ? "-cl-fast-relaxed-math" : "";
+            std::string options = ggxcl::precision_options(sampler.device(), precision);
             if (method == Method::caps_iso) {
                 p.normal = {0.0f, 0.6f, 0.8f};  // tilted: the general form (n = z would need GGX_NORMAL_IS_Z)
                 p.view = {0.3f, -0.2f, 0.9f};

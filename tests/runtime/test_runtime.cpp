@@ -1,7 +1,8 @@
 // test_runtime.cpp - the C++ runtime: results independent of chunking and
 // range splits, caller buffers on the caller's queue, per-sample
-// parameters, field selection, program caching, device selection and the
-// errors for bad arguments and failed builds.
+// parameters, field selection, program caching, device selection, the
+// errors for bad arguments and failed builds, one validation per call, and
+// the build options of the precision modes.
 #include <doctest/doctest.h>
 
 #include <iterator>
@@ -9,9 +10,14 @@
 #include <cstdlib>
 #include <cstring>
 
+#include <ggxcl/benchmark.hpp>
+
 #include "bit_compare.hpp"
 #include "device_fixture.hpp"
+#include "device_quirks.hpp"
+#include "kernel_launch.hpp"
 #include "program_cache.hpp"
+#include "validated_params.hpp"
 
 namespace {
 
@@ -338,4 +344,102 @@ TEST_CASE("a range split across several samplers arrives in order with the one-s
                                           [](const ggxcl::SampleSet&, std::uint64_t) { throw std::runtime_error("sink"); },
                                           10),
                     std::runtime_error);
+}
+
+namespace {
+
+// How many times `call` validated a SampleParams.
+template <class Call>
+std::uint64_t validations_in(Call&& call)
+{
+    const std::uint64_t before = ggxcl::detail::params_validations();
+    call();
+    return ggxcl::detail::params_validations() - before;
+}
+
+} // namespace
+
+TEST_CASE("a call validates its parameters once, however many chunks or launches it takes")
+{
+    ggxcl::Sampler s;
+    s.set_chunk_size(1024);  // 5 chunks of the 5000 samples below
+    const ggxcl::SampleParams p = test_params(ggxcl::Method::caps);
+    const ggxcl::SampleRange range{3, 0, 5000};
+    CHECK(validations_in([&] { ggxcl::validate(p); }) == 1);  // control: the hook counts
+    CHECK(validations_in([&] { ggxcl::normalized(p); }) == 1);
+    CHECK(validations_in([&] { s.generate(p, range, {Field::m}); }) == 1);
+    auto chunk_sink = [](const ggxcl::SampleSet&, std::uint64_t) {};
+    CHECK(validations_in([&] { s.generate_chunks(p, range, {Field::m}, chunk_sink); }) == 1);
+    auto view_sink = [](const ggxcl::SampleView&, std::uint64_t) {};
+    CHECK(validations_in([&] { s.generate_chunk_views(p, range, {Field::m}, view_sink); }) == 1);
+    const std::vector<ggxcl::Vec3> directions(5000, ggxcl::Vec3{0.0f, 0.6f, 0.8f});
+    CHECK(validations_in([&] { s.pdf(p, directions); }) == 1);
+    ggxcl::Sampler other;
+    CHECK(validations_in([&] { ggxcl::generate_split({&s, &other}, p, range, {Field::m}, chunk_sink, 1000); }) ==
+          1);  // 5 chunks over two samplers
+    CHECK(validations_in([&] { s.furnace(p, range); }) == 1);
+    CHECK(validations_in([&] { s.histogram(p, range, 4, 8); }) == 1);
+    CHECK(validations_in([&] { s.warm_up(p, {Field::m}); }) == 1);
+
+    // The launches into the caller's buffers.
+    const std::uint32_t count = 1000;
+    ggxcl::DeviceOutputs out;
+    out.m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * count * sizeof(float));
+    CHECK(validations_in([&] { s.enqueue(s.queue(), p, {3, 0, count}, out).wait(); }) == 1);
+    CHECK(validations_in([&] { ggxcl::benchmark::enqueue_unguarded(s, s.queue(), p, {3, 0, count}, out).wait(); }) ==
+          1);
+    cl::Buffer pdfs(s.context(), CL_MEM_READ_WRITE, count * sizeof(float));
+    CHECK(validations_in([&] { s.enqueue_pdf(s.queue(), p, count, out.m, pdfs).wait(); }) == 1);
+    cl::Buffer sums(s.context(), CL_MEM_READ_WRITE, 2 * s.furnace_items(count) * sizeof(float));
+    CHECK(validations_in([&] { s.enqueue_furnace(s.queue(), p, {3, 0, count}, sums).wait(); }) == 1);
+}
+
+TEST_CASE("precise programs are built with -cl-fp32-correctly-rounded-divide-sqrt exactly where the device reports it")
+{
+    using ggxcl::Precision;
+    using ggxcl::detail::precision_options_for;
+    const std::string flag = "-cl-fp32-correctly-rounded-divide-sqrt", relaxed = "-cl-fast-relaxed-math";
+    // The rule, for a device with the bit and one without.
+    const cl_device_fp_config with_bit = CL_FP_ROUND_TO_NEAREST | CL_FP_INF_NAN | CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT;
+    const cl_device_fp_config without_bit = CL_FP_ROUND_TO_NEAREST | CL_FP_INF_NAN | CL_FP_FMA;
+    CHECK(precision_options_for(Precision::precise, with_bit) == " " + flag);
+    CHECK(precision_options_for(Precision::precise, without_bit).empty());
+    CHECK(precision_options_for(Precision::relaxed, with_bit) == " " + relaxed);
+    CHECK(precision_options_for(Precision::relaxed, without_bit) == " " + relaxed);
+
+    // This device: the options of the programs a Sampler builds, from source
+    // (rusticl tells no options of a program loaded from the binary cache).
+    const char* cache = std::getenv("GGXCL_PROGRAM_CACHE");
+    const std::string saved_cache = cache ? cache : "";
+    ::setenv("GGXCL_PROGRAM_CACHE", "off", 1);
+    ggxcl::Sampler s;  // its own context: programs not built yet
+    const cl::Device& device = s.device();
+    const bool reported = (device.getInfo<CL_DEVICE_SINGLE_FP_CONFIG>() & CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) != 0;
+    const std::string what = s.device_name() + (reported ? " reports" : " does not report");
+    MESSAGE(what << " CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT");
+    auto has = [](const std::string& options, const std::string& option) {
+        return options.find(option) != std::string::npos;
+    };
+    for (Precision precision : ggxcl::all_precisions) {
+        CAPTURE(ggxcl::precision_name(precision));
+        const bool correctly_rounded = precision == Precision::precise && reported;
+        CHECK(has(ggxcl::precision_options(device, precision), flag) == correctly_rounded);
+        ggxcl::SampleParams p = test_params(ggxcl::Method::heitz);
+        p.precision = precision;
+        const ggxcl::FieldSet fields{Field::m, Field::pdf_m};
+        s.warm_up(p, fields);
+        const std::size_t built = s.programs_built();
+        // The options are the program's key: the same program, not a new one.
+        const std::string options = ggxcl::detail::build_options(device, ggxcl::normalized(p), fields.bits(), {});
+        cl::Program program = ggxcl::ProgramCache::for_context(s.context())->get(device, "ggx_bulk.cl", options);
+        CHECK(s.programs_built() == built);
+        const std::string built_with = program.getBuildInfo<CL_PROGRAM_BUILD_OPTIONS>(device);
+        CAPTURE(built_with);
+        CHECK(has(built_with, flag) == correctly_rounded);
+        CHECK(has(built_with, relaxed) == (precision == Precision::relaxed));
+    }
+    if (cache)
+        ::setenv("GGXCL_PROGRAM_CACHE", saved_cache.c_str(), 1);
+    else
+        ::unsetenv("GGXCL_PROGRAM_CACHE");
 }

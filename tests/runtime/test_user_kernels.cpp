@@ -27,7 +27,8 @@ using ggxtest::SamplePlanes;
 using ggxtest::same_bits;
 
 // A sampler configuration and the build options a user kernel needs to
-// match the runtime's program for it.
+// match the runtime's program for it (with the precision mode's, added at
+// the build).
 struct Case {
     ggxcl::SampleParams params;
     std::string user_options;
@@ -65,8 +66,11 @@ TEST_CASE("a user kernel including ggx_samplers.h reproduces Sampler::enqueue bi
     auto& sampler = ggxtest::sampler();
     for (const Case& c : cases_of_every_method()) {
         INFO(label(c));
+        // The precision mode's options, as the runtime builds it (none for precise on a device
+        // without CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT).
+        const std::string options = c.user_options + ggxcl::precision_options(sampler.device(), c.params.precision);
         cl::Program program = ggxcl::build_user_program(sampler.context(), sampler.device(),
-                                                        ggxtest::user_samples_source(true), c.user_options);
+                                                        ggxtest::user_samples_source(true), options);
         SamplePlanes mine = ggxtest::run_user_samples(sampler, program, c.params, test_range);
         SamplePlanes runtime = ggxtest::enqueue_samples(sampler, sampler.queue(), c.params, test_range);
         CHECK(same_bits(mine, runtime));
@@ -87,7 +91,9 @@ TEST_CASE("prepending the embedded headers gives the bits of including them")
     ggxcl::SampleParams p{ggxcl::Method::bounded, 0.3f, 0.1f, ggxcl::view_from_angles(40, 75)};
     cl::Program prepended(sampler.context(),
                           ggxcl::kernel_source("ggx_samplers.h") + ggxtest::user_samples_source(false));
-    prepended.build({sampler.device()}, ggxcl::device_options(sampler.device()).c_str());
+    const std::string options =
+        ggxcl::device_options(sampler.device()) + ggxcl::precision_options(sampler.device(), p.precision);
+    prepended.build({sampler.device()}, options.c_str());
     SamplePlanes mine = ggxtest::run_user_samples(sampler, prepended, p, test_range);
     CHECK(same_bits(mine, ggxtest::enqueue_samples(sampler, sampler.queue(), p, test_range)));
 }
@@ -177,7 +183,7 @@ TEST_CASE("the name check sees the headers' real names")
 {
     const std::vector<std::string> names = ggxtest::defined_names(ggxcl::kernel_source("ggx_world.h"));
     auto has = [&](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
-    for (const char* expected : {"GGX_INLINE", "GGX_METHOD_CAPS", "GGX_PHILOX_M", "ggx_vec3", "ggx_sample",
+    for (const char* expected : {"GGX_INLINE", "GGX_METHOD_LIST", "ggx_method_id", "GGX_PHILOX_M", "ggx_vec3", "ggx_sample",
                                  "ggx_basis", "ggx_uniforms", "ggx_sample_caps", "ggx_pdf_method", "ggx_G2",
                                  "ggx_sample_world"})
         CHECK_MESSAGE(has(expected), expected);

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -16,15 +17,24 @@ struct Vec3 {
     float x = 0.0f, y = 0.0f, z = 1.0f;
 };
 
-// How the kernels compute (a build option of the program):
-//   precise - IEEE float arithmetic, sqrt and division, and the sampling
-//             angle's sine and cosine within 0.86 ulp over the whole 24-bit
-//             grid of uniforms (kernels/ggx_sincos.h); vectorizes on CPUs;
-//   relaxed - precise plus -cl-fast-relaxed-math.
+// How the kernels compute (build options of the program, precision_options
+// in ggxcl/user_kernels.hpp):
+//   precise - no fast-math option, and the sampling angle's sine and cosine
+//             within 0.86 ulp over the whole 24-bit grid of uniforms
+//             (kernels/ggx_sincos.h); vectorizes on CPUs.  Division and
+//             sqrt are correctly rounded (IEEE) where the device reports
+//             CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT in CL_DEVICE_SINGLE_FP_CONFIG:
+//             the program is built with -cl-fp32-correctly-rounded-divide-sqrt
+//             there.  Elsewhere they have OpenCL's default accuracy:
+//             division within 2.5 ulp, sqrt within 3 ulp;
+//   relaxed - the same math built with -cl-fast-relaxed-math (and never
+//             with the correctly rounded option).
 enum class Precision { precise = 0, relaxed = 1 };
+inline constexpr std::array<Precision, 2> all_precisions = {Precision::precise, Precision::relaxed};
 
 std::string_view precision_name(Precision precision);   // "precise", "relaxed"
 Precision parse_precision(std::string_view name);       // throws InvalidArgument naming the modes
+std::string precision_list();                           // "precise, relaxed", for messages
 
 // Where the two uniforms of sample k of stream `seed` come from (both give
 // u1, u2 on the grid of 2^-24 in [0, 1), and sample k depends on (seed, k)

@@ -24,6 +24,9 @@ namespace ggxcl {
 
 class ProgramCache;  // the runtime's programs and kernels per context (internal)
 class KernelLease;
+namespace detail {
+class ValidatedParams;  // SampleParams validated once by a public entry point (internal)
+}
 
 // Samples on the host.  Fields of several columns are planar: m[c * count + j]
 // is component c (x, y, z) of sample j, u[c * count + j] its uniform u1 (c = 0)
@@ -218,19 +221,39 @@ private:
                                                    const SampleRange&, const DeviceOutputs&);
     friend cl::Event benchmark::enqueue_furnace_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&,
                                                            const SampleRange&, const cl::Buffer&);
+    friend void generate_split(const std::vector<Sampler*>& samplers, const SampleParams& params,
+                               const SampleRange& range, FieldSet fields, const ChunkSink& sink,
+                               std::uint64_t chunk_size);  // ggxcl/multi_device.hpp
+    // enqueue() and enqueue_furnace(), with or without the guards: they validate their arguments.
     cl::Event enqueue_variant(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
                               const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
                               const std::vector<cl::Event>* wait, bool guards);
     cl::Event enqueue_furnace_variant(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
                                       const cl::Buffer& sums, const DeviceInputs& inputs,
                                       const std::vector<cl::Event>* wait, bool guards);
-    void add_furnace_launch(const SampleParams& params, const SampleRange& range, const cl::Buffer& sums,
+    // What the public members run once they have validated their arguments (the
+    // parameters, the range, the counts and buffers): these check nothing, so that a
+    // call split into chunks or launches validates once.  Their CL errors are the
+    // caller's to translate.
+    cl::Event enqueue_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
+                                const SampleRange& range, const DeviceOutputs& outputs, std::uint32_t stride,
+                                const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool guards);
+    cl::Event enqueue_pdf_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
+                                    std::uint32_t count, const cl::Buffer& directions, const cl::Buffer& pdf_out,
+                                    std::uint32_t stride, const DeviceInputs& inputs,
+                                    const std::vector<cl::Event>* wait);
+    cl::Event enqueue_furnace_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
+                                        const SampleRange& range, const cl::Buffer& sums, const DeviceInputs& inputs,
+                                        const std::vector<cl::Event>* wait, bool guards);
+    SampleSet generate_validated(const detail::ValidatedParams& params, const SampleRange& range, FieldSet fields,
+                                 const PerSampleInputs& per_sample);
+    void add_furnace_launch(const detail::ValidatedParams& params, const SampleRange& range, const cl::Buffer& sums,
                             std::vector<float>& host, FurnaceSums& total);
     KernelLease kernel(const std::string& file, const std::string& name, const std::string& options);
     struct HistogramRun;
     // Each chunk as a view, and (when not mapped) the host copy it points into.
     using ChunkDelivery = std::function<void(const SampleView& view, const SampleSet* copy, std::uint64_t offset)>;
-    void run_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+    void run_chunks(const detail::ValidatedParams& params, const SampleRange& range, FieldSet fields,
                     const PerSampleInputs& per_sample, bool map, const ChunkDelivery& deliver);
 
     cl::Context context_;

@@ -10,11 +10,14 @@
 //            adds it);
 //   prepend: kernel_source("ggx_samplers.h") + your source (kernel_sources.hpp),
 //            built with device_options(device) among the options.
+// Either way, precision_options(device, precision) among the options gives
+// the arithmetic of that precision mode, as Sampler::enqueue has it.
 #pragma once
 
 #include <string>
 
 #include "ggxcl/opencl.hpp"
+#include "ggxcl/params.hpp"
 
 namespace ggxcl {
 
@@ -40,6 +43,14 @@ void write_device_headers(const std::string& directory);
 // instance -DGGX_NO_FMA=1 where the device has no hardware fma); a program
 // of yours built without them may round differently from Sampler::enqueue.
 std::string device_options(const cl::Device& device);
+
+// The options the library builds precision mode `precision` with on
+// `device` (ggxcl/params.hpp, Precision): relaxed, -cl-fast-relaxed-math;
+// precise, -cl-fp32-correctly-rounded-divide-sqrt where the device reports
+// CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT in CL_DEVICE_SINGLE_FP_CONFIG (PoCL
+// 3.1 on the CPU does; Mesa 22.3 rusticl on llvmpipe and Oclgrind 21.10 do
+// not), else none.  It starts with a space, like device_options.
+std::string precision_options(const cl::Device& device, Precision precision);
 
 // Builds `source` for `device` with the device headers on the include path,
 // device_options(device) and `options` appended.  A failed build throws BuildError carrying the

@@ -5,8 +5,9 @@
 // user kernel would (ggx_sample_<method> through ggx_sample_method, and
 // ggx_pdf_method on the returned direction).
 //
-// Build options: GGX_METHOD=<id> (and -cl-fast-relaxed-math in relaxed
-// mode).  Layout: case j reads in[k * count + j] for
+// Build options: GGX_METHOD=<id>, GGX_GUARDS, the device's own
+// (ggxcl::device_options) and the precision mode's
+// (ggxcl::precision_options).  Layout: case j reads in[k * count + j] for
 // k = ax, ay, view x, y, z, normal x, y, z, u1, u2 and writes
 // out[k * count + j] for k = m x, y, z, o x, y, z, pdf_m, pdf_o, weight,
 // pdf of o recomputed from (i, o).

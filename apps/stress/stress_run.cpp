@@ -44,7 +44,9 @@ std::vector<float> planar_inputs(const std::vector<StressCase>& cases)
     return in;
 }
 
-void count(StressMap& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome)
+} // namespace
+
+void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome)
 {
     CellCounts& cell = map[std::size_t(c.row) * axes.cos_theta.size() + c.column];
     ++cell.cases;
@@ -53,10 +55,12 @@ void count(StressMap& map, const StressAxes& axes, const StressCase& c, const St
         cell.failures[k] += kinds[k];
 }
 
+namespace {
+
 // The precision mode's options are the library's own (ggxcl::precision_options).
 std::string stress_options(const cl::Device& device, ggxcl::Method method, ggxcl::Precision precision, bool guards)
 {
-    return "-DGGX_METHOD=" + std::to_string(int(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0") +
+    return "-DGGX_METHOD=" + std::to_string(static_cast<int>(method)) + ggxcl::device_options(device) + " -DGGX_GUARDS=" + (guards ? "1" : "0") +
            ggxcl::precision_options(device, precision);
 }
 
@@ -112,7 +116,7 @@ StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl
     for (std::size_t j = 0; j < n; ++j) {
         auto at = [&](int k) { return double(out[k * n + j]); };
         StressOutcome s{{at(0), at(1), at(2)}, {at(3), at(4), at(5)}, at(6), at(7), at(8), at(9)};
-        count(map, axes, cases[j], s);
+        count_outcome(map, axes, cases[j], s);
     }
     return map;
 }
@@ -126,7 +130,7 @@ StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& c
         ggxref::Sample r = ggxref::sample(ref, p, c.u1, c.u2);
         StressOutcome s{{r.m.x, r.m.y, r.m.z}, {r.o.x, r.o.y, r.o.z}, r.pdf_m, r.pdf_o, r.weight,
                         ggxref::pdf_o(ref, p, r.o)};
-        count(map, axes, c, s);
+        count_outcome(map, axes, c, s);
     }
     return map;
 }

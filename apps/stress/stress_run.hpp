@@ -1,6 +1,6 @@
 // stress_run.hpp - the stability map's measurements: every case of
-// stress_grid run on the device (kernels/ggx_stress.cl) and on the host
-// reference, each outcome classified by failure kind, and the counts per
+// stress_grid run on the device (kernels/ggx_stress.cl), on the host
+// reference and through the device headers compiled as C++, each outcome classified by failure kind, and the counts per
 // cell (alpha row x theta column) of the map.
 #pragma once
 
@@ -45,5 +45,11 @@ using StressMap = std::vector<CellCounts>;
 StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true);
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
+// The device headers compiled as C++ by this program's compiler (stress_cpp.cpp): the same
+// functions the kernel calls, on the host.
+StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
+
+// Adds one classified outcome of case c to its cell of the map.
+void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome);
 
 } // namespace ggxapp

@@ -1,7 +1,8 @@
 // test_stress.cpp - the stability map (`ggx stress`) and the guards:
 //  - the classification of one outcome by failure kind, on hand-made outcomes;
 //  - no NaN or Inf anywhere on the stress grid, every method, device (in
-//    each precision mode) and host reference;
+//    each precision mode), host reference and the device headers compiled
+//    as C++;
 //  - the fallback (docs/STABILITY.md) happens exactly where documented: a
 //    roughness axis of 0, the view exactly opposite the normal (the VNDF
 //    family), caps-iso at n = (0, 0, -1); never inside the domain;
@@ -72,16 +73,17 @@ bool is_vndf(ggxcl::Method method)
     return method != ggxcl::Method::ndf;
 }
 
-// Device (precise mode) and host maps of `cases`, with a label for failures.
+// Device (precise mode), host reference and C++ (the device headers compiled by the host
+// compiler) maps of `cases`.
 struct BothSides {
-    ggxapp::StressMap device, host;
+    ggxapp::StressMap device, host, cpp;
 };
 
 BothSides both_sides(ggxcl::Method method, const std::vector<ggxapp::StressCase>& cases,
                      const ggxapp::StressAxes& axes)
 {
     return {ggxapp::device_stress_map(sampler(), method, ggxcl::Precision::precise, cases, axes),
-            ggxapp::host_stress_map(method, cases, axes)};
+            ggxapp::host_stress_map(method, cases, axes), ggxapp::cpp_stress_map(method, cases, axes)};
 }
 
 } // namespace
@@ -196,7 +198,7 @@ TEST_CASE("ggx stress offers and accepts exactly the library's precision modes")
     ggxtest::fs::remove_all(dir);
 }
 
-TEST_CASE("no NaN or Inf anywhere on the stress grid: every method, device in every mode, host")
+TEST_CASE("no NaN or Inf anywhere on the stress grid: every method, device in every mode, host, C++")
 {
     ggxapp::StressAxes axes = ggxapp::stress_axes();
     for (ggxcl::Method method : ggxcl::all_methods) {
@@ -207,6 +209,7 @@ TEST_CASE("no NaN or Inf anywhere on the stress grid: every method, device in ev
             CHECK(total(ggxapp::device_stress_map(sampler(), method, precision, cases, axes), ggxapp::nan_inf) == 0);
         }
         CHECK(total(ggxapp::host_stress_map(method, cases, axes), ggxapp::nan_inf) == 0);
+        CHECK(total(ggxapp::cpp_stress_map(method, cases, axes), ggxapp::nan_inf) == 0);
     }
 }
 
@@ -232,6 +235,7 @@ TEST_CASE("the fallback happens where documented: a roughness axis of 0")
         CAPTURE(ggxcl::method_name(method));
         CHECK(total(maps.device, ggxapp::fallback) == cases.size());
         CHECK(total(maps.host, ggxapp::fallback) == cases.size());
+        CHECK(total(maps.cpp, ggxapp::fallback) == cases.size());
     }
 }
 
@@ -248,12 +252,14 @@ TEST_CASE("the fallback happens where documented: the view exactly opposite the 
         std::uint64_t expected = is_vndf(method) ? opposite.size() : 0;  // ndf samples normals, not visible ones
         CHECK(total(maps.device, ggxapp::fallback) == expected);
         CHECK(total(maps.host, ggxapp::fallback) == expected);
+        CHECK(total(maps.cpp, ggxapp::fallback) == expected);
     }
     auto pole = cases_where(ggxcl::Method::caps_iso, axes,
                             [](const ggxapp::StressCase& c) { return c.normal.z == -1.0f; });
     BothSides maps = both_sides(ggxcl::Method::caps_iso, pole, axes);
     CHECK(total(maps.device, ggxapp::fallback) == pole.size());
     CHECK(total(maps.host, ggxapp::fallback) == pole.size());
+    CHECK(total(maps.cpp, ggxapp::fallback) == pole.size());
 }
 
 TEST_CASE("inside the domain nothing fails: alpha 1e-2..1e2 (anisotropy to 1:1000 within it), views to 89 degrees")
@@ -278,6 +284,7 @@ TEST_CASE("inside the domain nothing fails: alpha 1e-2..1e2 (anisotropy to 1:100
             if (method == ggxcl::Method::caps_iso && kind == ggxapp::m_below)
                 continue;
             CHECK(total(maps.device, kind) == 0);
+            CHECK(total(maps.cpp, kind) == 0);
         }
     }
 }

@@ -1,0 +1,31 @@
+// stress_cpp.cpp - the stress cases through the device headers compiled as C++ (ggx_platform.h):
+// what kernels/ggx_stress.cl computes per case, ggx_sample_method and ggx_pdf_method of the
+// returned direction, run by the host compiler.
+#include "ggx_samplers.h"
+#include "stress_run.hpp"
+
+namespace ggxapp {
+
+namespace {
+
+ggx_vec3 vec_of(const ggxcl::Vec3& v) { return ggx_vec3_make(v.x, v.y, v.z); }
+
+StressOutcome outcome_of(int method, const StressCase& c)
+{
+    const ggx_vec3 n = vec_of(c.normal), i = vec_of(c.view);
+    const ggx_sample s = ggx_sample_method(method, n, i, c.ax, c.ay, c.u1, c.u2);
+    return {{s.m.x, s.m.y, s.m.z}, {s.o.x, s.o.y, s.o.z}, s.pdf_m, s.pdf_o, s.weight,
+            ggx_pdf_method(method, n, i, s.o, c.ax, c.ay)};
+}
+
+} // namespace
+
+StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
+{
+    StressMap map(axes.alphas.size() * axes.cos_theta.size());
+    for (const StressCase& c : cases)
+        count_outcome(map, axes, c, outcome_of(static_cast<int>(method), c));
+    return map;
+}
+
+} // namespace ggxapp

@@ -18,12 +18,14 @@ cl::Buffer float_buffer(const cl::Context& context, std::size_t floats)
 }
 
 // The build options that make our in-kernel sampler the runtime's program
-// for these inputs: the method, and for caps-iso the form for
+// for these inputs: the method, precise mode's options on this device
+// (build_user_program adds the device's own), and for caps-iso the form for
 // the normal +z (the general form samples the same distribution, rounded
 // differently).
-std::string options_for(ggxcl::Method method)
+std::string options_for(ggxcl::Method method, const cl::Device& device)
 {
-    std::string options = "-DALBEDO_METHOD=" + std::to_string(static_cast<int>(method));
+    std::string options = "-DALBEDO_METHOD=" + std::to_string(static_cast<int>(method)) +
+                          ggxcl::precision_options(device, ggxcl::Precision::precise);
     if (method == ggxcl::Method::caps_iso)
         options += " -DGGX_NORMAL_IS_Z=1";
     return options;
@@ -57,7 +59,7 @@ DeviceAlbedo::DeviceAlbedo(const cl::Context& context, const cl::Device& device,
 MethodSums DeviceAlbedo::run(ggxcl::Method method, std::uint64_t seed)
 {
     const cl::Program program =
-        ggxcl::build_user_program(context_, device_, albedo_kernels_source, options_for(method));
+        ggxcl::build_user_program(context_, device_, albedo_kernels_source, options_for(method, device_));
     MethodSums out;
     for (CellSums* sums : {&out.runtime, &out.in_kernel}) {
         sums->sum.assign(cell_count, 0.0);

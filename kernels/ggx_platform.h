@@ -98,8 +98,11 @@ typedef std::uint64_t ggx_ulong;
 GGX_INLINE float ggx_sqrt(float x) { return std::sqrt(x); }
 GGX_INLINE float ggx_rsqrt(float x) { return 1.0f / std::sqrt(x); }
 GGX_INLINE float ggx_fabs(float x) { return std::fabs(x); }
-GGX_INLINE float ggx_fmin(float a, float b) { return std::fmin(a, b); }
-GGX_INLINE float ggx_fmax(float a, float b) { return std::fmax(a, b); }
+// fmin and fmax by a compare and a select, with their rule for NaN (the other
+// argument): x86 has no instruction with that rule, and GCC calls libm's
+// fminf and fmaxf instead, out of line, which also stops the vectorizer.
+GGX_INLINE float ggx_fmin(float a, float b) { return (a < b || b != b) ? a : b; }
+GGX_INLINE float ggx_fmax(float a, float b) { return (a > b || b != b) ? a : b; }
 GGX_INLINE float ggx_rint(float x) { return std::rint(x); }
 GGX_INLINE float ggx_copysign(float x, float y) { return std::copysign(x, y); }
 GGX_INLINE float ggx_fma(float a, float b, float c) { return std::fma(a, b, c); }

@@ -39,7 +39,7 @@ inline ggx_vec3 setup_view(const Setup& setup) { return ggx_vec3_make(setup.view
 // the method's sampler through the dispatcher (folded to one sampler: `method` is a constant),
 // the normal +z.
 template <int method>
-inline ggx_sample tangent_sample(std::uint64_t seed, std::uint64_t k, ggx_vec3 i, float ax, float ay)
+GGX_INLINE ggx_sample tangent_sample(std::uint64_t seed, std::uint64_t k, ggx_vec3 i, float ax, float ay)
 {
     float u1, u2;
     ggx_uniforms(seed, k, &u1, &u2);

@@ -15,17 +15,18 @@
 // the id GGX_METHOD_<ID> (-DGGX_METHOD=<id>, ggx_sample_method), the C++
 // enumerator (ggxcl::Method::<identifier>, ggxref::Method::<identifier>) and
 // the name users type.  Every list of methods in the project is made from
-// this one: the enums are checked against it at compile time, the name
-// tables and the device dispatchers (ggx_samplers.h) are generated from it.
-// A new method needs its line here, its header of device functions
-// (included by ggx_samplers.h) and its reference (reference/).
-#define GGX_METHOD_LIST(X)             \
-    X(NDF, ndf, "ndf")                 \
-    X(HEITZ, heitz, "heitz")           \
-    X(HEITZ2017, heitz2017, "heitz2017") \
-    X(CAPS, caps, "caps")              \
-    X(CAPS_ISO, caps_iso, "caps-iso")  \
-    X(BOUNDED, bounded, "bounded")
+// this one: the C++ enums and their all_methods arrays, the name tables,
+// the device dispatchers (ggx_samplers.h), the native baseline's loops and
+// the CUDA test's kernels.  A new method needs its line here, its header of
+// device functions (included by ggx_samplers.h) and its reference
+// (reference/, which keeps its own math).
+#define GGX_METHOD_LIST(X)                                                   \
+    X(NDF, ndf, "ndf")                /* Walter et al. 2007: D(m) mz */       \
+    X(HEITZ, heitz, "heitz")          /* Heitz 2018: VNDF, warped disk */     \
+    X(HEITZ2017, heitz2017, "heitz2017") /* Heitz 2017: VNDF, half disks */   \
+    X(CAPS, caps, "caps")             /* Dupuy & Benyoub 2023: caps */        \
+    X(CAPS_ISO, caps_iso, "caps-iso") /* Benyoub 2024: isotropic, world */    \
+    X(BOUNDED, bounded, "bounded")    /* Eto & Tokuyoshi 2023: bounded VNDF */
 
 #define GGX_METHOD_ID_ENUMERATOR(ID, identifier, name) GGX_METHOD_##ID,
 enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
@@ -33,13 +34,11 @@ enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
 #define GGX_METHOD_COUNT_ONE(ID, identifier, name) +1
 #define GGX_METHOD_COUNT (0 GGX_METHOD_LIST(GGX_METHOD_COUNT_ONE))
 
-// C++: GGX_METHOD_LIST(GGX_CHECK_METHOD_ENUM) checks that the enum
-// GGX_CHECKED_ENUM has each method's enumerator with its id, at its place in
-// the array GGX_CHECKED_ALL (define both first).
-#define GGX_CHECK_METHOD_ENUM(ID, identifier, name)                                              \
-    static_assert(static_cast<int>(GGX_CHECKED_ENUM::identifier) == GGX_METHOD_##ID,             \
-                  #identifier " has the id of GGX_METHOD_" #ID);                                 \
-    static_assert(GGX_CHECKED_ALL[GGX_METHOD_##ID] == GGX_CHECKED_ENUM::identifier, "in id order");
+// C++ enums of the methods: `enum class Method { GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR) };`
+// and their arrays in id order, `{GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR_OF)}` with
+// GGX_METHOD_ENUM defined as the enum's name.
+#define GGX_METHOD_ENUMERATOR(ID, identifier, name) identifier = GGX_METHOD_##ID,
+#define GGX_METHOD_ENUMERATOR_OF(ID, identifier, name) GGX_METHOD_ENUM::identifier,
 
 // Field ids, in ggxcl::Field order: the order of the sample kernel's output
 // buffers; -DGGX_WRITE_MASK=<mask> has bit (1 << id) set for each field

@@ -6,15 +6,17 @@
 #include <array>
 #include <cstdint>
 
+#include "ggx_contract.h"  // the project's one list of methods (names and ids; no math)
 #include "ggx_vec.hpp"
 
 namespace ggxref {
 
-// In the order and with the ids of the project's list of methods (kernels/ggx_contract.h;
-// ggx_methods.cpp checks them at compile time).
-enum class Method { ndf, heitz, heitz2017, caps, caps_iso, bounded };
-constexpr std::array<Method, 6> all_methods = {Method::ndf,  Method::heitz,    Method::heitz2017,
-                                               Method::caps, Method::caps_iso, Method::bounded};
+// ndf, heitz, heitz2017, caps, caps_iso, bounded: GGX_METHOD_LIST of kernels/ggx_contract.h,
+// with its ids, in id order.
+enum class Method { GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR) };
+#define GGX_METHOD_ENUM Method
+constexpr std::array<Method, GGX_METHOD_COUNT> all_methods = {GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR_OF)};
+#undef GGX_METHOD_ENUM
 const char* method_name(Method);  // "ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"
 
 struct Params {

@@ -13,14 +13,7 @@
 
 namespace ggxcl::detail {
 
-// Each line of GGX_METHOD_LIST names an enumerator of ggxcl::Method with its
-// id, at its place in all_methods.
-#define GGX_CHECKED_ENUM Method
-#define GGX_CHECKED_ALL all_methods
-GGX_METHOD_LIST(GGX_CHECK_METHOD_ENUM)
-#undef GGX_CHECKED_ENUM
-#undef GGX_CHECKED_ALL
-static_assert(all_methods.size() == GGX_METHOD_COUNT, "every kernel method id has its ggxcl::Method");
+// ggxcl::Method and all_methods are made from GGX_METHOD_LIST (method.hpp).
 
 static_assert(static_cast<int>(Field::m) == GGX_FIELD_M);
 static_assert(static_cast<int>(Field::o) == GGX_FIELD_O);

@@ -1,27 +1,24 @@
-// method.hpp - the six sampling methods and their names, the same in the
-// API, the CLI and the docs.
+// method.hpp - the sampling methods and their names, the same in the API,
+// the CLI, the device headers and the docs: made from the project's one list
+// of methods, GGX_METHOD_LIST of the device header ggx_contract.h (installed
+// as <ggxcl/cl/ggx_contract.h>), which says what each method is.
 #pragma once
 
 #include <array>
 #include <string>
 #include <string_view>
 
+#include "ggxcl/cl/ggx_contract.h"
+
 namespace ggxcl {
 
-// The numeric values are the kernels' method ids: the list of methods in the
-// device header ggx_contract.h gives each its id, enumerator and name, and
-// the library does not build when this enum or all_methods differs from it.
-enum class Method {
-    ndf = 0,       // Walter et al. 2007: sample D(m) mz
-    heitz = 1,     // Heitz 2018: exact VNDF, warped disk
-    heitz2017 = 2, // Heitz 2017 report: exact VNDF, two half disks
-    caps = 3,      // Dupuy & Benyoub 2023: spherical caps
-    caps_iso = 4,  // Benyoub 2024: isotropic, world space, no basis
-    bounded = 5,   // Eto & Tokuyoshi 2023: bounded VNDF for reflections
-};
+// ndf, heitz, heitz2017, caps, caps_iso, bounded; the values are the kernels'
+// method ids (GGX_METHOD_*).
+enum class Method { GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR) };
 
-inline constexpr std::array<Method, 6> all_methods = {
-    Method::ndf, Method::heitz, Method::heitz2017, Method::caps, Method::caps_iso, Method::bounded};
+#define GGX_METHOD_ENUM Method
+inline constexpr std::array<Method, GGX_METHOD_COUNT> all_methods = {GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR_OF)};
+#undef GGX_METHOD_ENUM
 
 // "ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded".
 std::string_view method_name(Method method);

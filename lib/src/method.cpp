@@ -1,8 +1,7 @@
 // method.cpp - method names (from the one list of methods, ggx_contract.h) and parsing.
 #include "ggxcl/method.hpp"
 
-#include "device_contract.hpp"
-#include "ggxcl/error.hpp"
+#include "named_values.hpp"
 
 namespace ggxcl {
 
@@ -19,18 +18,12 @@ std::string_view method_name(Method method)
 
 Method parse_method(std::string_view name)
 {
-    for (Method method : all_methods)
-        if (method_name(method) == name)
-            return method;
-    throw InvalidArgument("method", std::string(name), "one of " + method_list());
+    return detail::parse_named(name, all_methods, method_name, "method");
 }
 
 std::string method_list()
 {
-    std::string list;
-    for (Method method : all_methods)
-        list += (list.empty() ? "" : ", ") + std::string(method_name(method));
-    return list;
+    return detail::name_list(all_methods, method_name);
 }
 
 bool samples_visible_normals(Method method)

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "ggxcl/error.hpp"
+#include "named_values.hpp"
 #include "validated_params.hpp"
 
 namespace ggxcl {
@@ -87,18 +88,12 @@ std::string_view precision_name(Precision precision)
 
 Precision parse_precision(std::string_view name)
 {
-    for (Precision p : all_precisions)
-        if (precision_name(p) == name)
-            return p;
-    throw InvalidArgument("precision", std::string(name), "one of " + precision_list());
+    return detail::parse_named(name, all_precisions, precision_name, "precision");
 }
 
 std::string precision_list()
 {
-    std::string list;
-    for (Precision p : all_precisions)
-        list += (list.empty() ? "" : ", ") + std::string(precision_name(p));
-    return list;
+    return detail::name_list(all_precisions, precision_name);
 }
 
 std::string_view sequence_name(Sequence sequence)
@@ -112,10 +107,7 @@ std::string_view sequence_name(Sequence sequence)
 
 Sequence parse_sequence(std::string_view name)
 {
-    for (Sequence s : all_sequences)
-        if (sequence_name(s) == name)
-            return s;
-    throw InvalidArgument("sequence", std::string(name), "one of philox, sobol");
+    return detail::parse_named(name, all_sequences, sequence_name, "sequence");
 }
 
 std::string sequence_description(Sequence sequence)

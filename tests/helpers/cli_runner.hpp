@@ -1,5 +1,5 @@
 // cli_runner.hpp - what the tests of the `ggx` tool share: a scratch
-// folder per test process (removed at exit), running the tool (GGX_BINARY,
+// folder per test process (removed at exit; scratch.hpp), running the tool (GGX_BINARY,
 // set by CMake) with its exit status and stderr, reading a file back whole,
 // and the rows of a `ggx bench` CSV.
 #pragma once
@@ -13,40 +13,9 @@
 #include <unistd.h>
 #include <vector>
 
+#include "scratch.hpp"
+
 namespace ggxtest {
-
-namespace fs = std::filesystem;
-
-// The scratch folders of this process, removed when it exits.
-struct ScratchFolders {
-    std::vector<fs::path> made;
-    ~ScratchFolders()
-    {
-        for (const fs::path& dir : made) {
-            std::error_code ignored;
-            fs::remove_all(dir, ignored);
-        }
-    }
-};
-
-// A folder under the system's temporary one, unique to this process and
-// `tag`, removed with everything in it when the process exits.
-inline fs::path scratch_dir(const std::string& tag)
-{
-    static ScratchFolders folders;
-    fs::path dir = fs::temp_directory_path() / ("ggx-" + tag + "-test-" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    folders.made.push_back(dir);
-    return dir;
-}
-
-inline std::string read_all(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 struct Run {
     int status;       // exit status, -1 if the tool did not exit normally

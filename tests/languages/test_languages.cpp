@@ -22,38 +22,13 @@
 
 #include <ggxcl/ggxcl.hpp>
 
-#include <unistd.h>
+#include "scratch.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h"};
-
-// A folder of this process's own under the temporary one, removed at exit.
-struct Scratch {
-    fs::path dir = fs::temp_directory_path() / ("ggx-languages-test-" + std::to_string(::getpid()));
-    Scratch() { fs::create_directories(dir); }
-    ~Scratch()
-    {
-        std::error_code ignored;
-        fs::remove_all(dir, ignored);
-    }
-};
-
-fs::path scratch()
-{
-    static Scratch folder;
-    return folder.dir;
-}
-
-std::string read_all(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 struct Result {
     int status;
@@ -155,7 +130,7 @@ TEST_CASE("the compilers are installed (scripts/install-deps.sh: clang-15)")
 
 TEST_CASE("every public device header compiles alone as C++17 (GCC, Clang), CUDA and OpenCL C 1.2")
 {
-    const fs::path dir = scratch();
+    const fs::path dir = ggxtest::scratch_dir("languages");
     const std::vector<std::string> headers = public_headers();
     REQUIRE(headers.size() >= 15);
     for (const std::string& header : headers) {
@@ -173,7 +148,7 @@ TEST_CASE("every public device header compiles alone as C++17 (GCC, Clang), CUDA
 
 TEST_CASE("control: float math outside ggx_platform.h, promoted to double, fails the C++ check")
 {
-    const fs::path dir = scratch();
+    const fs::path dir = ggxtest::scratch_dir("languages");
     const std::string bad = write_file(dir / "promotes.cpp", "#include <cmath>\n"
                                                              "inline float half_length(float x) { return sqrt(x) / 2; }\n")
                                 .string();
@@ -183,11 +158,11 @@ TEST_CASE("control: float math outside ggx_platform.h, promoted to double, fails
 
 TEST_CASE("every sampler and pdf called from CUDA: PTX with an entry point per method and no local memory")
 {
-    const fs::path dir = scratch();
+    const fs::path dir = ggxtest::scratch_dir("languages");
     const std::string ptx_path = (dir / "ggx_cuda_all.ptx").string();
     const std::string source = std::string(GGX_CUDA_DIR) + "/ggx_cuda_all.cu";
     check_compiles("clang++ -x cuda -S", clang_cuda(source, ptx_path));
-    const std::string ptx = read_all(ptx_path);
+    const std::string ptx = ggxtest::read_all(ptx_path);
     const std::vector<std::string> entries = entries_of(ptx);
     for (ggxcl::Method method : ggxcl::all_methods) {
         CAPTURE(ggxcl::method_name(method));
@@ -203,12 +178,12 @@ TEST_CASE("every sampler and pdf called from CUDA: PTX with an entry point per m
 
 TEST_CASE("the CUDA example's kernel compiles to PTX with clang alone")
 {
-    const fs::path dir = scratch();
+    const fs::path dir = ggxtest::scratch_dir("languages");
     const std::string unit = write_file(dir / "example.cu", "#include \"ggx_cuda_furnace.cuh\"\n").string();
     const std::string ptx_path = (dir / "example.ptx").string();
     check_compiles("clang++ -x cuda -S (example)",
                    clang_cuda("-I" + std::string(GGX_EXAMPLES_DIR) + "/cuda " + unit, ptx_path));
-    const std::vector<std::string> entries = entries_of(read_all(ptx_path));
+    const std::vector<std::string> entries = entries_of(ggxtest::read_all(ptx_path));
     REQUIRE(entries.size() == 1);
     CHECK(entries[0].find("ggx_furnace_kernel") != std::string::npos);
 }
@@ -219,7 +194,7 @@ TEST_CASE("with nvcc, where installed: the same file and examples/cuda compile w
         MESSAGE("nvcc not found: the clang CUDA checks above stand for it");
         return;
     }
-    const fs::path dir = scratch();
+    const fs::path dir = ggxtest::scratch_dir("languages");
     const std::string nvcc = std::string(GGX_NVCC) + " -std=c++17 -arch=sm_80 -Werror all-warnings" + kernels;
     check_compiles("nvcc -ptx", nvcc + " -ptx -o " + (dir / "nvcc.ptx").string() + " " + GGX_CUDA_DIR +
                                     "/ggx_cuda_all.cu");

@@ -13,8 +13,8 @@ namespace {
 
 static_assert(ggxref::all_methods.size() == ggxcl::all_methods.size(), "the same methods on both sides");
 
-// Both enums carry the ids of the one list of methods (checked against it where each is
-// built: lib/src/device_contract.hpp, reference/ggx_methods.cpp), so a method's id maps it.
+// Both enums are made from the one list of methods (GGX_METHOD_LIST) with its ids, so a
+// method's id maps it.
 std::size_t method_index(int id)
 {
     if (id < 0 || std::size_t(id) >= ggxcl::all_methods.size())

@@ -2,10 +2,10 @@
 // on, as plain macros that both languages read: the list of methods, the field
 // ids and their write-mask bits, the sequence ids of the uniforms, the
 // argument positions of every bulk kernel, and the samples per work-item of
-// the fused estimator.  The
-// runtime includes this header and checks its own enums against it at
-// compile time (lib/src/device_contract.hpp: a mismatch does not build);
-// the kernels include it and refuse an unknown method id or write mask.
+// the fused estimator.  The runtime makes its method enum from the list and
+// checks its other enums against the ids at compile time
+// (lib/src/device_contract.hpp: a mismatch does not build); the kernels
+// include it and refuse an unknown method id or write mask.
 // Method ids are enumerators (not usable in #if; their count is); the other
 // values used in #if stay plain integers.  It compiles as OpenCL C, C++ and CUDA.
 #ifndef GGX_CONTRACT_H

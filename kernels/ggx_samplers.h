@@ -4,7 +4,7 @@
 //   ggx_sample_<method>(...) -> ggx_sample {m, o, pdf_m, pdf_o, weight}
 //   ggx_pdf_<method>(...)    -> pdf of o recomputed from (i, o) alone
 // Method ids: GGX_METHOD_* of ggx_contract.h (the C++ enum ggxcl::Method is
-// checked against them); an id that is none of them gives the fallback
+// made from the same list); an id that is none of them gives the fallback
 // sample about n ("no sample", ggx_guards.h).
 #ifndef GGX_SAMPLERS_H
 #define GGX_SAMPLERS_H

@@ -1,6 +1,7 @@
 // device_contract.hpp - the runtime's side of kernels/ggx_contract.h: its
-// enums checked against the kernels' ids at compile time (a mismatch does
-// not build), and the argument positions of the bulk kernels by name.
+// field and sequence enums checked against the kernels' ids at compile time
+// (a mismatch does not build; the method enum is made from the list), and
+// the argument positions of the bulk kernels by name.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,12 @@
-// benchmark.cpp - the unguarded launches of ggxcl/benchmark.hpp.
+// benchmark.cpp - the unguarded launches of ggxcl/benchmark.hpp, and the
+// programs the bench jobs build.
 #include "ggxcl/benchmark.hpp"
+
+#include "device_contract.hpp"
+#include "device_quirks.hpp"
+#include "ggxcl/error.hpp"
+#include "kernel_launch.hpp"
+#include "validated_params.hpp"
 
 namespace ggxcl::benchmark {
 
@@ -13,6 +20,28 @@ cl::Event enqueue_furnace_unguarded(Sampler& sampler, cl::CommandQueue& queue, c
                                     const SampleRange& range, const cl::Buffer& sums)
 {
     return sampler.enqueue_furnace_variant(queue, params, range, sums, {}, nullptr, false);
+}
+
+// Both go through detail::build_options, as the Sampler's launches do; the
+// device's quirk options are what build_program appends.
+ProgramText enqueue_program(const Sampler& sampler, const SampleParams& params, FieldSet fields, bool guards)
+{
+    const detail::ValidatedParams valid = detail::validated(params);
+    if (fields.empty())
+        throw InvalidArgument("fields", "none", "at least one field (" + field_list() + ")");
+    const cl::Device& device = sampler.device();
+    return {"ggx_bulk.cl", "ggx_sample_bulk",
+            detail::build_options(device, *valid, detail::write_mask(fields), {}, guards) +
+                detail::device_quirk_options(device)};
+}
+
+ProgramText furnace_program(const Sampler& sampler, const SampleParams& params, bool guards)
+{
+    const detail::ValidatedParams valid = detail::validated(params);
+    const cl::Device& device = sampler.device();
+    return {"ggx_furnace.cl", "ggx_furnace_bulk",
+            detail::build_options(device, *valid, detail::write_mask({Field::weight}), {}, guards) +
+                detail::device_quirk_options(device)};
 }
 
 } // namespace ggxcl::benchmark

@@ -1,6 +1,8 @@
 // bench_report.cpp - CSV and Markdown of `ggx bench`, with the target checks.
 #include "bench_report.hpp"
 
+#include "bench_limits.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -71,23 +73,13 @@ double ratio(const BenchRow* slow, const BenchRow* fast)
     return slow->timing.median / fast->timing.median;
 }
 
-struct Target {
-    std::string what, measured;
-    bool met;
-};
+using Target = ReportTarget;
 
+// Speed against the device's own limits (bench_limits.hpp), and between methods.
 void rate_targets(const BenchReport& r, std::vector<Target>& out)
 {
+    limit_targets(r, out);
     const BenchRow* caps = default_row(r, "caps", "write");
-    const BenchRow* heitz = default_row(r, "heitz", "write");
-    const BenchRow* store = find_row(r, "all", "store-only", "write");
-    // The bound no kernel writing these bytes passes: the store-only kernel's rate.
-    const std::string bound = store ? "; storing the bytes alone: " + fixed(gsps(store), 3) + " G/s" : "";
-    if (caps)
-        out.push_back({"caps >= 1.0 G samples/s (precise, m + pdf_m written)", fixed(gsps(caps), 3) + " G/s" + bound,
-                       gsps(caps) >= 1.0});
-    if (heitz)
-        out.push_back({"heitz >= 0.7 G samples/s", fixed(gsps(heitz), 3) + " G/s", gsps(heitz) >= 0.7});
     for (const char* job : {"write", "furnace"}) {
         const BenchRow* c = default_row(r, "caps", job);
         const BenchRow* h = default_row(r, "heitz", job);
@@ -328,10 +320,13 @@ std::string machine_description()
 
 std::string bench_csv(const BenchReport& r)
 {
+    const std::string limit_header = limit_csv_header();
+    const std::size_t limit_columns = std::count(limit_header.begin(), limit_header.end(), ',');
     std::ostringstream csv;
     csv << std::setprecision(6)
         << "method,precision,job,ns_median,ns_min,ns_max,gsamples_per_s,angle_p99,angle_max,pdf_rel_p99,pdf_rel_max,"
-           "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured\n";
+           "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured"
+        << limit_header << "\n";
     for (const BenchRow& row : r.rows) {
         csv << row.method << "," << row.precision << "," << row.job << "," << row.timing.median << ","
             << row.timing.low << "," << row.timing.high << "," << 1.0 / row.timing.median << ",";
@@ -347,11 +342,12 @@ std::string bench_csv(const BenchReport& r)
         csv << "," << row.sequence << ",";
         if (row.rmse_measured > 0)
             csv << row.rmse_measured;
-        csv << "\n";
+        csv << limit_csv_cells(row, r) << "\n";
     }
     if (r.has_vectorized)
         csv << "caps,native-vectorized,furnace," << r.vectorized.median << "," << r.vectorized.low << ","
-            << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,\n";
+            << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,"
+            << std::string(limit_columns, ',') << "\n";
     return csv.str();
 }
 
@@ -375,6 +371,7 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
         md << "| " << t.what << " | " << t.measured << " | " << (t.met ? "yes" : "**no**") << " |\n";
     md << "\n## Speed (ns per sample)\n\n";
     write_speed_table(md, r);
+    write_limit_section(md, r);
     md << "\n## Speed against numerical error\n\nDevice samples against the double-precision reference on the same "
           "uniforms (alpha 0.05, 0.3, 1 x view 0, 45, 80 degrees, 8192 samples each): angle between m's and "
           "between o's, relative error of pdf_m and pdf_o (native: m and pdf_m, the fields it writes).\n\n";

@@ -1,14 +1,18 @@
 // bench_report.hpp - what `ggx bench` measured and how it is written: the
 // rows (one per method x precision mode x job, the native baseline with
 // precision "native"), derived columns (efficiency, RMSE at equal time),
-// the CSV, the Markdown report with its target checks, and the charts.
+// the CSV, the Markdown report with its target checks, and the charts; the
+// rows' op counts and the device's peaks give how close each runs to its
+// limits (bench_limits.hpp).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "bench_accuracy.hpp"
+#include "bench_peak.hpp"
 #include "bench_speed.hpp"
+#include "op_counts.hpp"
 
 namespace ggxapp {
 
@@ -21,6 +25,13 @@ struct BenchRow {
     double variance = 0;          // albedo estimator variance per sample (0: not measured)
     double mean_albedo = 0;       // mean over the table's cells of the albedo estimate
     double rmse_measured = 0;     // precise furnace rows: the table's RMSE at the budget, measured (0: not)
+    bool has_ops = false;         // write and furnace rows: operations per sample of the kernel's IR
+    OpCounts ops;
+};
+
+struct ReportTarget {
+    std::string what, measured;
+    bool met;
 };
 
 struct StartupTiming {
@@ -63,6 +74,9 @@ struct BenchReport {
     StartupTiming startup;
     EnqueueTiming enqueue;
     AppTimings apps;
+    bool has_peaks = false;       // the device's compute peaks, measured in this run (bench_peak.hpp)
+    PeakRates peaks;
+    std::string peaks_unavailable, ops_unavailable;  // why there are no peaks, no op counts
 };
 
 // 1 / (variance x seconds per sample), and the RMSE of each cell of the table

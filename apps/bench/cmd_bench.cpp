@@ -14,6 +14,8 @@
 
 #include "atomic_file.hpp"
 #include "bench_native.hpp"
+#include "bench_ops.hpp"
+#include "bench_peak.hpp"
 #include "bench_plan.hpp"
 #include "bench_report.hpp"
 #include "bench_startup.hpp"
@@ -38,6 +40,31 @@ BenchRow row_of(const std::string& method, const std::string& precision, const s
     return row;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// What the limits need, before any timing: the tasks' op counts (clang, in parallel) and then the
+// device's peaks (bench_limits.hpp).  Neither stops the bench when it fails: the report says why.
+std::vector<std::optional<OpCounts>> measure_limit_inputs(ggxcl::Sampler& sampler, const std::vector<BenchTask>& tasks,
+                                                          BenchReport& report)
+{
+    auto start = std::chrono::steady_clock::now();
+    std::vector<std::optional<OpCounts>> ops = count_task_ops(sampler, tasks, report.ops_unavailable);
+    std::cerr << "op counts: " << (report.ops_unavailable.empty() ? "" : "unavailable (" + report.ops_unavailable + "), ")
+              << seconds_since(start) << " s\n";
+    try {
+        report.peaks = measure_peaks(sampler);
+        report.has_peaks = true;
+        std::cerr << "peak probe: " << report.peaks.seconds << " s\n";
+    } catch (const std::exception& e) {
+        report.peaks_unavailable = e.what();
+        std::cerr << "peak probe failed: " << e.what() << "\n";
+    }
+    return ops;
+}
+
 void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchCommand& cmd, BenchReport& report)
 {
     std::vector<BenchTask> tasks;
@@ -59,6 +86,7 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
     const bool writes = std::find(plan.jobs.begin(), plan.jobs.end(), "write") != plan.jobs.end();
     if (writes)  // the write job's ceiling, once: the same bytes stored, nothing computed
         tasks.push_back({BenchJob::store, plan.base});
+    const std::vector<std::optional<OpCounts>> ops = measure_limit_inputs(sampler, tasks, report);
     std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
     DeviceTimer timer(sampler, report.count);
     std::vector<Timing> timings = timer.time_interleaved(tasks, report.repeats);
@@ -77,6 +105,8 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
         BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), guarded ? precision : precision + "-unguarded",
                               job_name(tasks[t].job), timings[t]);
         row.sequence = std::string(ggxcl::sequence_name(p.sequence));
+        if (ops[t])
+            row.has_ops = true, row.ops = *ops[t];
         if (!guarded) {  // measured for its speed only
             report.rows.push_back(row);
             continue;

@@ -1,0 +1,179 @@
+// bench_limits.cpp - the report's limits section: per row, the compute and
+// bandwidth limits, the CSV columns, the tables and the 2x target.
+#include "bench_limits.hpp"
+
+#include <iomanip>
+#include <sstream>
+
+namespace ggxapp {
+
+namespace {
+
+std::string fixed(double value, int digits)
+{
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(digits) << value;
+    return out.str();
+}
+
+std::string giga(double per_s)
+{
+    return fixed(per_s * 1e-9, per_s < 1e10 ? 2 : 1) + " G";
+}
+
+const BenchRow* store_row(const BenchReport& r)
+{
+    for (const BenchRow& row : r.rows)
+        if (row.method == "all" && row.precision == "store-only" && row.job == "write")
+            return &row;
+    return nullptr;
+}
+
+// The precise philox rows of the limits table, method by method (library order), write then furnace.
+std::vector<const BenchRow*> table_rows(const BenchReport& r)
+{
+    std::vector<const BenchRow*> rows;
+    for (ggxcl::Method m : ggxcl::all_methods)
+        for (const char* job : {"write", "furnace"})
+            for (const BenchRow& row : r.rows)
+                if (row.method == ggxcl::method_name(m) && row.precision == "precise" && row.job == job &&
+                    row.sequence == "philox")
+                    rows.push_back(&row);
+    return rows;
+}
+
+std::string compute_cell(const RowLimit& limit)
+{
+    if (!limit.compute)
+        return "–";
+    return fixed(limit.compute->ns, 2) + " (" + op_class_name(limit.compute->binding) + ")";
+}
+
+void write_peaks(std::ostream& md, const BenchReport& r)
+{
+    if (!r.has_peaks) {
+        md << "Compute limits unavailable: the peak probe failed (" << r.peaks_unavailable << ").\n\n";
+        return;
+    }
+    md << "Peaks of this device measured in this run (operations per second over all work-items, one "
+          "work-item's scalar op each; fma counted as one op; probe "
+       << fixed(r.peaks.seconds, 2) << " s):";
+    for (OpClass c : all_op_classes)
+        md << (c == OpClass::float_op ? " " : ", ") << op_class_name(c) << " " << giga(r.peaks[c]);
+    md << ".\n\n";
+    if (!r.ops_unavailable.empty())
+        md << "Compute limits unavailable: no op counts (" << r.ops_unavailable << ").\n\n";
+}
+
+void write_ops_table(std::ostream& md, const std::vector<const BenchRow*>& rows)
+{
+    md << "\nOperations per sample by class, static count of the kernel's LLVM IR (clang -O3, the runtime's "
+          "source and options; both sides of every branch):\n\n| method | job |";
+    for (OpClass c : all_op_classes)
+        md << " " << op_class_name(c) << " |";
+    md << " other |\n|---|---|---|---|---|---|---|---|---|\n";
+    for (const BenchRow* row : rows) {
+        if (!row->has_ops)
+            continue;
+        md << "| " << row->method << " | " << row->job << " |";
+        for (OpClass c : all_op_classes)
+            md << " " << fixed(row->ops[c], 1) << " |";
+        md << " " << (row->ops.other.empty() ? "–" : row->ops.other_text()) << " |\n";
+    }
+}
+
+} // namespace
+
+std::optional<RowLimit> row_limit(const BenchRow& row, const BenchReport& report)
+{
+    if (row.job != "write" && row.job != "furnace")
+        return std::nullopt;
+    RowLimit limit;
+    if (row.has_ops && report.has_peaks)
+        limit.compute = compute_limit(row.ops, report.peaks);
+    if (const BenchRow* store = store_row(report))
+        limit.bandwidth_ns = bandwidth_limit_ns(
+            stored_bytes_per_sample(row.job == "write" ? BenchJob::write : BenchJob::furnace), store->timing.median);
+    if (!limit.compute && !limit.bandwidth_ns)
+        return std::nullopt;
+    const double compute_ns = limit.compute ? limit.compute->ns : 0.0;
+    limit.compute_binds = compute_ns >= limit.bandwidth_ns.value_or(0.0);
+    limit.tighter_ns = limit.compute_binds ? compute_ns : *limit.bandwidth_ns;
+    limit.percent = percent_of_limit(limit.tighter_ns, row.timing.median);
+    return limit;
+}
+
+std::string limit_csv_header()
+{
+    std::string header;
+    for (OpClass c : all_op_classes)
+        header += ",ops_" + std::string(op_class_name(c));
+    for (char& ch : header)
+        ch = ch == ' ' ? '_' : ch;
+    return header + ",ops_other,compute_limit_ns,compute_binding,compute_sum_limit_ns,bandwidth_limit_ns,"
+                    "percent_of_limit";
+}
+
+std::string limit_csv_cells(const BenchRow& row, const BenchReport& report)
+{
+    std::ostringstream cells;
+    cells << std::setprecision(6);
+    for (OpClass c : all_op_classes) {
+        cells << ",";
+        if (row.has_ops)
+            cells << row.ops[c];
+    }
+    cells << "," << (row.has_ops && !row.ops.other.empty() ? std::to_string(row.ops.other.size()) + " kinds" : "");
+    std::optional<RowLimit> limit = row_limit(row, report);
+    if (!limit)
+        return cells.str() + ",,,,,";
+    if (limit->compute)
+        cells << "," << limit->compute->ns << "," << op_class_name(limit->compute->binding) << "," << limit->compute->sum_ns;
+    else
+        cells << ",,,";
+    cells << ",";
+    if (limit->bandwidth_ns)
+        cells << *limit->bandwidth_ns;
+    cells << "," << limit->percent;
+    return cells.str();
+}
+
+void write_limit_section(std::ostream& md, const BenchReport& r)
+{
+    md << "\n## How close to this device's limits\n\nEach method's precise write and fused (furnace) jobs against "
+          "the limits of this device measured in this run: the compute limit, ns per sample = max over op classes "
+          "of (ops per sample / the class's peak), the class that binds in brackets, and beside it the sum over "
+          "the classes (the bound where all classes share one set of units, as on a CPU); the bandwidth limit, the "
+          "job's stored bytes per sample at the store-only kernel's speed; % = the tighter (larger) limit / the "
+          "measured time. See COST-PROBES.md, \"How close to the limit\".\n\n";
+    write_peaks(md, r);
+    const std::vector<const BenchRow*> rows = table_rows(r);
+    md << "| method | job | measured ns | compute limit ns (binds) | sum over classes ns | bandwidth limit ns | "
+          "% of the tighter limit |\n|---|---|---|---|---|---|---|\n";
+    for (const BenchRow* row : rows) {
+        std::optional<RowLimit> limit = row_limit(*row, r);
+        if (!limit)
+            continue;
+        md << "| " << row->method << " | " << row->job << " | " << fixed(row->timing.median, 2) << " | "
+           << compute_cell(*limit) << " | " << (limit->compute ? fixed(limit->compute->sum_ns, 2) : "–") << " | "
+           << (limit->bandwidth_ns ? fixed(*limit->bandwidth_ns, 2) : "–") << " | " << fixed(limit->percent, 0)
+           << "% (" << (limit->compute_binds ? "compute" : "bandwidth") << ") |\n";
+    }
+    write_ops_table(md, rows);
+}
+
+void limit_targets(const BenchReport& r, std::vector<ReportTarget>& out)
+{
+    double worst = 1e300;
+    std::string who;
+    for (const BenchRow* row : table_rows(r)) {
+        std::optional<RowLimit> limit = row_limit(*row, r);
+        if (limit && limit->compute && limit->percent < worst)
+            worst = limit->percent, who = row->method + " " + row->job;
+    }
+    if (worst < 1e300)
+        out.push_back({"every method within 2x of its limit (precise write and fused)",
+                       "slowest " + who + ": " + fixed(worst, 0) + "% of its limit", worst >= 50.0});
+}
+
+} // namespace ggxapp

@@ -1,0 +1,40 @@
+// bench_limits.hpp - the report's "How close to this device's limits": each
+// write and fused (furnace) row against its compute limit (its op counts
+// over the peaks measured in the same run) and its bandwidth limit (the
+// store-only row), as CSV columns, Markdown tables and the target "every
+// method within 2x of its limit".  Arithmetic in roofline.hpp.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "bench_report.hpp"
+#include "roofline.hpp"
+
+namespace ggxapp {
+
+struct RowLimit {
+    std::optional<ComputeLimit> compute;  // none without op counts or peaks
+    std::optional<double> bandwidth_ns;   // none without the store-only row
+    double tighter_ns = 0;                // the larger of the two
+    bool compute_binds = false;
+    double percent = 0;                   // tighter / measured x 100
+};
+
+// The limits of a write or furnace row (nothing for other jobs, or when neither limit is known).
+std::optional<RowLimit> row_limit(const BenchRow& row, const BenchReport& report);
+
+// The CSV's limit columns: the header's part (starting with a comma) and a row's cells.
+std::string limit_csv_header();
+std::string limit_csv_cells(const BenchRow& row, const BenchReport& report);
+
+// The section's Markdown: the peaks, the limits table of precise write and furnace rows, and the
+// op counts per sample.
+void write_limit_section(std::ostream& md, const BenchReport& report);
+
+// "every method within 2x of its limit (precise write and fused)", when compute limits are known.
+void limit_targets(const BenchReport& report, std::vector<ReportTarget>& out);
+
+} // namespace ggxapp

@@ -1,0 +1,252 @@
+// test_bench_limits.cpp - `ggx bench`'s limits: the LLVM IR op counter on
+// hand-written IR (exact counts; unknown calls named and failing the strict
+// count), the roofline arithmetic on given numbers, every bench kernel's IR
+// free of unknown operations, the peak probe's kernels counted as the probe
+// assumes (nothing folded away) and measured on the device, and the report
+// without a compiler.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include <ggxcl/benchmark.hpp>
+#include <ggxcl/cl/ggx_contract.h>
+
+#include "bench_limits.hpp"
+#include "bench_peak.hpp"
+#include "cli_runner.hpp"
+#include "kernel_ir.hpp"
+#include "op_counts.hpp"
+#include "roofline.hpp"
+
+using namespace ggxapp;
+using ggxtest::read_all;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch()
+{
+    static const fs::path dir = ggxtest::scratch_dir("bench-limits");
+    return dir;
+}
+
+const char* const hand_written_ll = R"LL(
+; ModuleID = 'probe.cl'
+define dso_local spir_kernel void @k(float addrspace(1)* %out, float %a, i32 %n) local_unnamed_addr #0 {
+  %1 = tail call spir_func i64 @_Z13get_global_idj(i32 noundef 0) #4
+  %2 = trunc i64 %1 to i32
+  %3 = fadd float %a, 1.000000e+00
+  %4 = fmul fast float %3, %a
+  %5 = fneg float %4
+  %6 = fcmp olt float %5, %a
+  %7 = select i1 %6, float %5, float %a
+  %8 = select i1 %6, i32 %2, i32 %n
+  %9 = sitofp i32 %8 to float
+  %10 = tail call float @llvm.fmuladd.f32(float %9, float %7, float %a)
+  %11 = tail call spir_func float @_Z4sqrtf(float noundef %10) #5
+  %12 = tail call spir_func float @_Z5rsqrtf(float noundef %11) #5
+  %13 = fdiv float %12, %a, !fpmath !9
+  %14 = udiv i32 %8, 3
+  %15 = mul nsw i32 %14, %n
+  %16 = zext i32 %15 to i64
+  %17 = mul nuw i64 %16, 3528905107
+  %18 = lshr i64 %17, 32
+  %19 = add i32 %15, 7
+  %20 = xor i32 %19, %n
+  %21 = icmp ult i32 %20, %n
+  br i1 %21, label %22, label %25
+
+22:                                               ; preds = %0
+  %23 = fadd <4 x float> zeroinitializer, zeroinitializer
+  %24 = tail call spir_func float @_Z5clampfff(float noundef %13, float noundef 0.0, float noundef 1.0) #5
+  br label %25
+
+25:                                               ; preds = %22, %0
+  %26 = phi float [ %24, %22 ], [ %13, %0 ]
+  %27 = tail call spir_func i32 @_Z3minjj(i32 noundef %20, i32 noundef 5) #5
+  tail call void @llvm.experimental.noalias.scope.decl(metadata !8)
+  %28 = getelementptr inbounds float, float addrspace(1)* %out, i64 %1
+  store float %26, float addrspace(1)* %28, align 4
+  ret void
+}
+
+define dso_local spir_kernel void @k_tail(float %a) local_unnamed_addr #0 {
+  %1 = fadd float %a, %a
+  ret void
+}
+)LL";
+
+PeakRates peaks_of(double float_op, double int_op, double mul, double mul64, double sqrt, double division)
+{
+    PeakRates peaks;
+    peaks.ops_per_s = {float_op, int_op, mul, mul64, sqrt, division};
+    return peaks;
+}
+
+} // namespace
+
+TEST_CASE("the IR counter counts a hand-written kernel exactly, class by class, and nothing of the next function")
+{
+    const OpCounts counts = count_kernel_ops(hand_written_ll, "k");
+    CAPTURE(counts.other_text());
+    CHECK(counts.other.empty());
+    // fadd, fmul, fneg, fcmp, float select, sitofp, fmuladd, 4 lanes of fadd, clamp (2)
+    CHECK(counts[OpClass::float_op] == 13);
+    CHECK(counts[OpClass::int_op] == 6);  // int select, lshr, add, xor, icmp, min
+    CHECK(counts[OpClass::int_mul] == 1);
+    CHECK(counts[OpClass::int_mul_wide] == 1);
+    CHECK(counts[OpClass::sqrt] == 2);
+    CHECK(counts[OpClass::division] == 2);  // fdiv, udiv
+    CHECK(counts.total() == 25);
+    CHECK(count_kernel_ops(hand_written_ll, "k_tail")[OpClass::float_op] == 1);
+    const OpCounts per_eight = counts.per(8);
+    CHECK(per_eight[OpClass::float_op] == doctest::Approx(13.0 / 8));
+}
+
+TEST_CASE("an unknown call or opcode is counted as other, named, and fails the strict count")
+{
+    std::string ll = hand_written_ll;
+    ll.replace(ll.find("@_Z4sqrtf"), 9, "@_Z3sinf");
+    ll.replace(ll.find("%14 = udiv"), 10, "%14 = frobnicate");
+    const OpCounts counts = count_kernel_ops(ll, "k");
+    CHECK(counts.other.at("call _Z3sinf") == 1);
+    CHECK(counts.other.at("frobnicate") == 1);
+    CHECK(counts[OpClass::sqrt] == 1);
+    try {
+        count_kernel_ops_strict(ll, "k");
+        FAIL("the strict count took an unknown call");
+    } catch (const std::runtime_error& e) {
+        CHECK(std::string(e.what()).find("_Z3sinf") != std::string::npos);
+        CHECK(std::string(e.what()).find("frobnicate") != std::string::npos);
+    }
+    CHECK_THROWS_WITH_AS(count_kernel_ops(hand_written_ll, "ggx_sample_bulk"), doctest::Contains("@ggx_sample_bulk"),
+                         std::runtime_error);
+}
+
+TEST_CASE("the roofline: max and sum over classes, bandwidth from the store-only kernel, % of the tighter limit")
+{
+    OpCounts counts;
+    counts[OpClass::float_op] = 100;
+    counts[OpClass::int_op] = 50;
+    counts[OpClass::sqrt] = 2;
+    const ComputeLimit limit = compute_limit(counts, peaks_of(100e9, 100e9, 0, 0, 10e9, 0));
+    CHECK(limit.ns == doctest::Approx(1.0));  // float: 100 / 100e9 s
+    CHECK(limit.binding == OpClass::float_op);
+    CHECK(limit.sum_ns == doctest::Approx(1.7));  // 1.0 + 0.5 + 0.2
+    counts[OpClass::division] = 1;  // a counted class without a peak
+    CHECK_THROWS_WITH_AS(compute_limit(counts, peaks_of(100e9, 100e9, 0, 0, 10e9, 0)), doctest::Contains("div"),
+                         std::invalid_argument);
+    CHECK(stored_bytes_per_sample(BenchJob::write) == stored_bytes_per_sample(BenchJob::store));
+    CHECK(stored_bytes_per_sample(BenchJob::furnace) == doctest::Approx(8.0 / GGX_FURNACE_PER_ITEM));
+    CHECK_THROWS_AS(stored_bytes_per_sample(BenchJob::world), std::invalid_argument);
+    CHECK(bandwidth_limit_ns(16, 2.0) == doctest::Approx(2.0));
+    CHECK(bandwidth_limit_ns(1, 2.0) == doctest::Approx(0.125));
+    CHECK(percent_of_limit(2.0, 4.0) == doctest::Approx(50.0));
+    CHECK_THROWS_WITH_AS(percent_of_limit(2.0, 0.0), doctest::Contains("measured"), std::invalid_argument);
+}
+
+TEST_CASE("a row's limit is the tighter of compute and bandwidth, and the target is met at 50%")
+{
+    BenchReport report;
+    report.has_peaks = true;
+    report.peaks = peaks_of(100e9, 100e9, 100e9, 100e9, 10e9, 10e9);
+    BenchRow store, caps;
+    store.method = "all", store.precision = "store-only", store.job = "write", store.timing.median = 1.0;
+    caps.method = "caps", caps.precision = "precise", caps.job = "write", caps.timing.median = 4.0;
+    caps.has_ops = true;
+    caps.ops[OpClass::float_op] = 200;  // 2 ns at 100 G/s: tighter than the store's 1 ns
+    report.rows = {store, caps};
+    std::optional<RowLimit> limit = row_limit(report.rows[1], report);
+    REQUIRE(limit);
+    CHECK(limit->compute_binds);
+    CHECK(limit->percent == doctest::Approx(50.0));
+    std::vector<ReportTarget> targets;
+    limit_targets(report, targets);
+    REQUIRE(targets.size() == 1);
+    CHECK(targets[0].met);
+    report.rows[1].timing.median = 4.1;
+    targets.clear();
+    limit_targets(report, targets);
+    CHECK_FALSE(targets[0].met);
+    CHECK(limit_csv_cells(report.rows[1], report).find(",float,") != std::string::npos);
+}
+
+TEST_CASE("the peak probe's kernels do the operations the probe divides by: nothing folded away")
+{
+    const ClangTool clang = find_clang();
+    REQUIRE_MESSAGE(!clang.path.empty(), clang.unavailable);
+    const std::string ll = compile_to_ir(clang, {{peak_probe_source(), "-cl-fp32-correctly-rounded-divide-sqrt"}}, 1)[0];
+    for (OpClass c : all_op_classes) {
+        CAPTURE(std::string(op_class_name(c)));
+        const OpCounts counts = count_kernel_ops_strict(ll, peak_kernel_name(c));
+        // The chains' steps, plus a few for the start values and the final sum.
+        CHECK(counts[c] >= peak_ops_per_item(c));
+        CHECK(counts[c] <= peak_ops_per_item(c) + 20);
+        // The rest: start values and sum, and each int mul64 step's shift (its high half).
+        const double shifts = c == OpClass::int_mul_wide ? peak_ops_per_item(c) : 0;
+        CHECK(counts.total() <= peak_ops_per_item(c) + shifts + 30);
+    }
+}
+
+TEST_CASE("every bench kernel (method x write, furnace x precision) has only operations of known classes")
+{
+    const ClangTool clang = find_clang();
+    REQUIRE_MESSAGE(!clang.path.empty(), clang.unavailable);
+    ggxcl::Sampler sampler;
+    std::vector<IrRequest> requests;
+    std::vector<ggxcl::benchmark::ProgramText> programs;
+    for (ggxcl::Precision precision : ggxcl::all_precisions)
+        for (ggxcl::Method method : ggxcl::all_methods) {
+            ggxcl::SampleParams p;
+            p.method = method;
+            p.precision = precision;
+            p.alpha_x = p.alpha_y = 0.3f;
+            p.view = ggxcl::view_from_angles(60.0, 0.0);
+            programs.push_back(ggxcl::benchmark::enqueue_program(sampler, p, {ggxcl::Field::m, ggxcl::Field::pdf_m}));
+            programs.push_back(ggxcl::benchmark::furnace_program(sampler, p));
+        }
+    for (const auto& program : programs)
+        requests.push_back({ggxcl::kernel_source(program.file), program.options});
+    const std::vector<std::string> ll = compile_to_ir(clang, requests, 2);
+    for (std::size_t k = 0; k < programs.size(); ++k) {
+        CAPTURE(programs[k].options);
+        const OpCounts counts = count_kernel_ops(ll[k], programs[k].kernel);
+        CHECK_MESSAGE(counts.other.empty(), counts.other_text());
+        CHECK(counts[OpClass::float_op] > 0);
+        CHECK(counts[OpClass::int_mul_wide] >= 10);  // Philox2x32-10: a 64-bit product per round
+    }
+}
+
+TEST_CASE("the peak probe measures positive finite rates on the device, float faster than division")
+{
+    ggxcl::Sampler sampler;
+    const PeakRates peaks = measure_peaks(sampler);
+    for (OpClass c : all_op_classes) {
+        CAPTURE(std::string(op_class_name(c)));
+        CHECK(std::isfinite(peaks[c]));
+        CHECK(peaks[c] > 1e6);
+    }
+    CHECK(peaks[OpClass::float_op] > peaks[OpClass::division]);
+    CHECK(peaks.seconds > 0);
+}
+
+TEST_CASE("ggx bench without a compiler reports the compute limit unavailable, why, and the rest as before")
+{
+    fs::path dir = scratch() / "no-clang";
+    fs::create_directories(dir);
+    ggxtest::Run run = ggxtest::run_ggx("GGXCL_CLANG=" + (dir / "no-clang").string() + " " + GGX_BINARY +
+                                            " bench --methods caps --precisions precise --jobs write,furnace -n 2^14 "
+                                            "--repeats 5 --no-native --no-accuracy --no-startup --sequences philox --csv " +
+                                            (dir / "b.csv").string() + " --markdown " + (dir / "B.md").string(),
+                                        dir / "stderr.txt", false);
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    const std::string md = read_all(dir / "B.md");
+    CHECK(md.find("## How close to this device's limits") != std::string::npos);
+    CHECK(md.find("Compute limits unavailable: no op counts (GGXCL_CLANG=") != std::string::npos);
+    CHECK(md.find("| caps | write |") != std::string::npos);  // against the bandwidth limit alone
+    CHECK(md.find("every method within 2x of its limit") == std::string::npos);  // no compute limit, no target
+    CHECK(read_all(dir / "b.csv").find(",percent_of_limit") != std::string::npos);
+    fs::remove_all(dir);
+}

@@ -49,12 +49,14 @@ bool is_float_class(OpClass c)
     return c == OpClass::float_op || c == OpClass::sqrt || c == OpClass::division;
 }
 
-// Nanoseconds of one run of `items` work-items, by the event's profile (wall clock when it has none).
-double run_ns(cl::CommandQueue& queue, cl::Kernel& kernel, std::size_t items)
+// Nanoseconds of one run of `items` work-items in groups of `group` (fixed: a driver that picks the
+// group size by the count JIT-compiles again for each new size), by the event's profile (wall clock
+// when it has none).
+double run_ns(cl::CommandQueue& queue, cl::Kernel& kernel, std::size_t items, std::size_t group)
 {
     cl::Event done;
     auto start = std::chrono::steady_clock::now();
-    queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(items), cl::NullRange, nullptr, &done);
+    queue.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(items), cl::NDRange(group), nullptr, &done);
     done.wait();
     const double wall = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
     cl_ulong begin = 0, end = 0;
@@ -77,14 +79,15 @@ double measure_class(ggxcl::Sampler& sampler, cl::Program& program, cl::Buffer& 
         kernel.setArg(2, cl_uint(12345u));
     }
     cl::CommandQueue& queue = sampler.queue();
+    const std::size_t group = sampler.work_group_size();
     std::size_t items = 1u << 16;
-    run_ns(queue, kernel, items);  // JIT
-    const double first = run_ns(queue, kernel, items);
+    run_ns(queue, kernel, items, group);  // JIT
+    const double first = run_ns(queue, kernel, items, group);
     const double scaled = double(items) * target_ns / std::max(first, 1.0);
-    items = std::clamp<std::size_t>(std::size_t(scaled) / 1024 * 1024, min_items, max_items);
+    items = std::clamp<std::size_t>(std::size_t(scaled), min_items, max_items) / group * group;
     std::vector<double> ns;
     for (int r = 0; r < runs; ++r)
-        ns.push_back(run_ns(queue, kernel, items));
+        ns.push_back(run_ns(queue, kernel, items, group));
     std::sort(ns.begin(), ns.end());
     return double(items) * peak_ops_per_item(c) / (ns[ns.size() / 2] * 1e-9);
 }

@@ -50,8 +50,9 @@ bool is_float_class(OpClass c)
 }
 
 // Nanoseconds of one run of `items` work-items in groups of `group` (fixed: a driver that picks the
-// group size by the count JIT-compiles again for each new size), by the event's profile (wall clock
-// when it has none).
+// group size by the count JIT-compiles again for each new size), by the event's profile, or by wall
+// clock where the profile cannot be right (missing, or below 1% or far above the wall-clock time:
+// Mesa 22.3 rusticl reports 1 ns), as DeviceTimer decides (bench_speed.cpp).
 double run_ns(cl::CommandQueue& queue, cl::Kernel& kernel, std::size_t items, std::size_t group)
 {
     cl::Event done;
@@ -63,7 +64,8 @@ double run_ns(cl::CommandQueue& queue, cl::Kernel& kernel, std::size_t items, st
     if (done.getProfilingInfo(CL_PROFILING_COMMAND_START, &begin) != CL_SUCCESS ||
         done.getProfilingInfo(CL_PROFILING_COMMAND_END, &end) != CL_SUCCESS || end <= begin)
         return wall;
-    return double(end - begin);
+    const double profiled = double(end - begin);
+    return profiled >= 0.01 * wall && profiled <= 1.5 * wall + 1e6 ? profiled : wall;
 }
 
 // Operations per second of one class: a warm-up run (JIT) sizes the timed runs.

@@ -28,7 +28,9 @@
 // ---- OpenCL C ------------------------------------------------------------
 typedef uint ggx_uint;
 typedef ulong ggx_ulong;
-#define GGX_INLINE inline __attribute__((always_inline))
+// static: a plain `inline` function left uninlined (an unoptimized build, SPIR-V) has no external
+// definition, and llvm-spirv marks its body for import, which spirv-val rejects.
+#define GGX_INLINE static inline __attribute__((always_inline))
 #define GGX_UNROLL _Pragma("unroll")
 #define GGX_FLT_MAX FLT_MAX
 #define ggx_sqrt sqrt
@@ -85,10 +87,14 @@ typedef std::uint64_t ggx_ulong;
 #define GGX_INLINE __forceinline
 #define GGX_UNROLL
 #elif defined(__clang__)
-#define GGX_INLINE inline __attribute__((always_inline))
+// static: a plain `inline` function left uninlined (an unoptimized build, SPIR-V) has no external
+// definition, and llvm-spirv marks its body for import, which spirv-val rejects.
+#define GGX_INLINE static inline __attribute__((always_inline))
 #define GGX_UNROLL _Pragma("unroll")
 #else
-#define GGX_INLINE inline __attribute__((always_inline))
+// static: a plain `inline` function left uninlined (an unoptimized build, SPIR-V) has no external
+// definition, and llvm-spirv marks its body for import, which spirv-val rejects.
+#define GGX_INLINE static inline __attribute__((always_inline))
 #define GGX_UNROLL _Pragma("GCC unroll 16")
 #endif
 #define GGX_FLT_MAX 3.402823466e+38f

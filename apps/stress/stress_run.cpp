@@ -55,13 +55,17 @@ void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, 
         cell.failures[k] += kinds[k];
 }
 
+std::string stress_defines(ggxcl::Method method, bool guards)
+{
+    return "-DGGX_METHOD=" + std::to_string(static_cast<int>(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0");
+}
+
 namespace {
 
 // The precision mode's options are the library's own (ggxcl::precision_options).
 std::string stress_options(const cl::Device& device, ggxcl::Method method, ggxcl::Precision precision, bool guards)
 {
-    return "-DGGX_METHOD=" + std::to_string(static_cast<int>(method)) + ggxcl::device_options(device) + " -DGGX_GUARDS=" + (guards ? "1" : "0") +
-           ggxcl::precision_options(device, precision);
+    return stress_defines(method, guards) + ggxcl::device_options(device) + ggxcl::precision_options(device, precision);
 }
 
 } // namespace

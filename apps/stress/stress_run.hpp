@@ -28,6 +28,10 @@ namespace ggxapp {
 enum FailureKind { nan_inf, fallback, not_unit, m_below, wasted, pdf_nonpositive, pdf_mismatch, failure_kinds };
 const char* failure_name(int kind);
 
+// The -D options of kernels/ggx_stress.cl for a method, with or without the guards (the device's and
+// the precision mode's options come on top).
+std::string stress_defines(ggxcl::Method method, bool guards);
+
 struct StressOutcome {
     double m[3], o[3], pdf_m, pdf_o, weight, pdf_again;
 };

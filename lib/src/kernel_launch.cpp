@@ -15,39 +15,15 @@ namespace ggxcl {
 
 namespace detail {
 
+std::string build_options(const cl::Device& device, const ProgramVariant& variant)
+{
+    return variant_defines(variant) + precision_options(device, variant.precision);
+}
+
 std::string build_options(const cl::Device& device, const SampleParams& params, unsigned write_mask,
                           const DeviceInputs& inputs, bool guards)
 {
-    auto flag = [](const char* name, bool on) { return std::string(" -D") + name + (on ? "=1" : "=0"); };
-    std::string options = "-DGGX_METHOD=" + std::to_string(method_id(params.method));
-    options += precision_options(device, params.precision);
-    options += " -DGGX_WRITE_MASK=" + std::to_string(write_mask);
-    options += " -DGGX_SEQUENCE=" + std::to_string(sequence_id(params.sequence));
-    options += flag("GGX_PER_SAMPLE_VIEW", inputs.view() != nullptr) +
-               flag("GGX_PER_SAMPLE_ALPHA", inputs.alpha() != nullptr) +
-               flag("GGX_PER_SAMPLE_NORMAL", inputs.normal() != nullptr) +
-               flag("GGX_PER_SAMPLE_UNIFORMS", inputs.uniforms() != nullptr);
-    options += flag("GGX_ISOTROPIC", is_isotropic(params, inputs)) +
-               flag("GGX_BELOW_HORIZON", !is_above_horizon(params, inputs)) +
-               flag("GGX_WORLD_SPACE", params.world_space) + flag("GGX_GUARDS", guards) +
-               flag("GGX_NORMAL_IS_Z", inputs.normal() == nullptr && params.normal.x == 0.0f &&
-                                           params.normal.y == 0.0f && params.normal.z == 1.0f);
-    return options;
-}
-
-bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs)
-{
-    if (params.method == Method::caps_iso || params.world_space)
-        return true;  // validated isotropic
-    return inputs.alpha() != nullptr ? inputs.isotropic : params.alpha_x == params.alpha_y;
-}
-
-bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs)
-{
-    bool against_normal = uses_normal(params);
-    if (inputs.view() != nullptr || (against_normal && inputs.normal() != nullptr))
-        return inputs.views_above_horizon;
-    return view_above_horizon(params.view, params.normal, against_normal);
+    return build_options(device, variant_of(ProgramKind::bulk, params, write_mask, inputs, guards));
 }
 
 void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in)

@@ -10,19 +10,20 @@
 
 #include "ggxcl/sampler.hpp"
 #include "program_cache.hpp"
+#include "program_variant.hpp"
 
 namespace ggxcl::detail {
 
 constexpr std::size_t preferred_group_size = 256;
 
-// -D options selecting the method, the written fields, the sequence, per-sample inputs and what the
-// request needs (isotropic, views below the horizon, world space), with the precision mode's options on
-// `device` (precision_options, ggxcl/user_kernels.hpp).
+// A variant's options on `device`: its -D options (variant_defines) and the precision mode's
+// options there (precision_options, ggxcl/user_kernels.hpp).
+std::string build_options(const cl::Device& device, const ProgramVariant& variant);
+// Those of the bulk or furnace program of a request: the method, the written fields, the sequence,
+// per-sample inputs and what the request needs (isotropic, views below the horizon, world space).
 // guards = false (benchmarks only) drops the fallbacks of docs/STABILITY.md.
 std::string build_options(const cl::Device& device, const SampleParams& params, unsigned write_mask,
                           const DeviceInputs& inputs, bool guards = true);
-bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs);
-bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
 
 // Arguments first_arg.. of every kernel: the GGX_PARAM_ARG_COUNT parameter
 // arguments of ggx_contract.h (the uniform floats, then the per-sample view,

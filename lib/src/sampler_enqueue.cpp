@@ -22,7 +22,7 @@ namespace {
 
 using detail::translate_cl_errors;
 
-constexpr const char* bulk_file = "ggx_bulk.cl";
+const char* const bulk_file = detail::program_file(detail::ProgramKind::bulk);
 
 unsigned write_mask_of(const DeviceOutputs& out)
 {

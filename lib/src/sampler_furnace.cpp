@@ -89,7 +89,8 @@ cl::Event Sampler::enqueue_furnace_validated(cl::CommandQueue& queue, const deta
     // The estimator sums weights (its kernel ignores the write mask).
     const unsigned mask = detail::write_mask({Field::weight});
     KernelLease lease =
-        kernel("ggx_furnace.cl", "ggx_furnace_bulk", detail::build_options(device_, *params, mask, inputs, guards));
+        kernel(detail::program_file(detail::ProgramKind::furnace), "ggx_furnace_bulk",
+               detail::build_options(device_, detail::variant_of(detail::ProgramKind::furnace, *params, mask, inputs, guards)));
     cl::Kernel& k = *lease;
     k.setArg(detail::arg_seed, cl_ulong(range.seed));
     k.setArg(detail::arg_first, cl_ulong(range.first));

@@ -26,8 +26,9 @@ constexpr std::uint64_t smallest_pass = 1024;  // samples; out of memory below i
 std::string histogram_options(const cl::Device& device, const SampleParams& params, int bins_z, int bins_phi,
                               Field direction)
 {
-    return detail::build_options(device, params, 0, {}) + " -DGGX_BINS_Z=" + std::to_string(bins_z) +
-           " -DGGX_BINS_PHI=" + std::to_string(bins_phi) + " -DGGX_BIN_M=" + (direction == Field::m ? "1" : "0");
+    detail::ProgramVariant variant = detail::variant_of(detail::ProgramKind::histogram, params, 0, {}, true);
+    variant.bins = {bins_z, bins_phi, direction == Field::m};
+    return detail::build_options(device, variant);
 }
 
 constexpr int max_phi_bins = 1 << 16;
@@ -105,7 +106,7 @@ struct Sampler::HistogramRun {
     // Local-memory atomics per work-group (GPUs).
     std::vector<cl_uint> count_in_groups(std::uint64_t start, std::uint64_t n) const
     {
-        KernelLease lease = sampler.kernel("ggx_histogram.cl", "ggx_histogram", options);
+        KernelLease lease = sampler.kernel(detail::program_file(detail::ProgramKind::histogram), "ggx_histogram", options);
         zero_counts();
         set_sample_args(*lease, start, n);
         lease->setArg(detail::arg_outputs, counts);
@@ -121,14 +122,14 @@ struct Sampler::HistogramRun {
     {
         zero_counts();
         auto make = [&](const std::string& name) {
-            KernelLease lease = sampler.kernel("ggx_histogram.cl", name, options);
+            KernelLease lease = sampler.kernel(detail::program_file(detail::ProgramKind::histogram), name, options);
             set_sample_args(*lease, start, n);
             lease->setArg(detail::arg_outputs, indices);
             return lease;
         };
         detail::launch_split(sampler.queue_, sampler.work_group_size(), make, "ggx_histogram_bins", cl_uint(n), nullptr);
         const std::uint32_t per_counter = std::uint32_t((n + counters - 1) / counters);
-        KernelLease count = sampler.kernel("ggx_histogram.cl", "ggx_histogram_count", options);
+        KernelLease count = sampler.kernel(detail::program_file(detail::ProgramKind::histogram), "ggx_histogram_count", options);
         count->setArg(detail::count_arg_bins, indices);
         count->setArg(detail::count_arg_count, cl_uint(n));
         count->setArg(detail::count_arg_per_item, cl_uint(per_counter));

@@ -1,0 +1,110 @@
+// program_variant.cpp - a request's program variant and its -D options.
+#include "program_variant.hpp"
+
+#include "device_contract.hpp"
+
+namespace ggxcl::detail {
+
+const char* program_file(ProgramKind kind)
+{
+    switch (kind) {
+    case ProgramKind::bulk: return "ggx_bulk.cl";
+    case ProgramKind::furnace: return "ggx_furnace.cl";
+    case ProgramKind::histogram: return "ggx_histogram.cl";
+    }
+    return "?";
+}
+
+const char* program_kind_name(ProgramKind kind)
+{
+    switch (kind) {
+    case ProgramKind::bulk: return "bulk";
+    case ProgramKind::furnace: return "furnace";
+    case ProgramKind::histogram: return "histogram";
+    }
+    return "?";
+}
+
+bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs)
+{
+    if (params.method == Method::caps_iso || params.world_space)
+        return true;  // validated isotropic
+    return inputs.alpha() != nullptr ? inputs.isotropic : params.alpha_x == params.alpha_y;
+}
+
+bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs)
+{
+    bool against_normal = uses_normal(params);
+    if (inputs.view() != nullptr || (against_normal && inputs.normal() != nullptr))
+        return inputs.views_above_horizon;
+    return view_above_horizon(params.view, params.normal, against_normal);
+}
+
+ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
+                          const DeviceInputs& inputs, bool guards)
+{
+    ProgramVariant v;
+    v.kind = kind;
+    v.method = params.method;
+    v.precision = params.precision;
+    v.sequence = params.sequence;
+    v.write_mask = write_mask;
+    v.per_sample_view = inputs.view() != nullptr;
+    v.per_sample_alpha = inputs.alpha() != nullptr;
+    v.per_sample_normal = inputs.normal() != nullptr;
+    v.per_sample_uniforms = inputs.uniforms() != nullptr;
+    v.isotropic = is_isotropic(params, inputs);
+    v.below_horizon = !is_above_horizon(params, inputs);
+    v.world_space = params.world_space;
+    v.guards = guards;
+    v.normal_is_z = inputs.normal() == nullptr && params.normal.x == 0.0f && params.normal.y == 0.0f &&
+                    params.normal.z == 1.0f;
+    return v;
+}
+
+std::string variant_defines(const ProgramVariant& v)
+{
+    auto define = [](const char* name, long value) { return std::string(" -D") + name + "=" + std::to_string(value); };
+    std::string options = "-DGGX_METHOD=" + std::to_string(method_id(v.method));
+    options += define("GGX_WRITE_MASK", long(v.write_mask)) + define("GGX_SEQUENCE", sequence_id(v.sequence));
+#define GGX_PROGRAM_FLAG_DEFINE(field, macro) options += define(macro, v.field ? 1 : 0);
+    GGX_PROGRAM_FLAGS(GGX_PROGRAM_FLAG_DEFINE)
+#undef GGX_PROGRAM_FLAG_DEFINE
+    if (v.kind == ProgramKind::histogram)
+        options += define("GGX_BINS_Z", v.bins.bins_z) + define("GGX_BINS_PHI", v.bins.bins_phi) +
+                   define("GGX_BIN_M", v.bins.of_m ? 1 : 0);
+    return options;
+}
+
+ProgramVariant with_kind_fixed(ProgramVariant v)
+{
+    if (v.kind != ProgramKind::histogram)
+        v.bins = {};
+    if (v.kind == ProgramKind::furnace)
+        v.write_mask = 1u << GGX_FIELD_WEIGHT;
+    if (v.kind == ProgramKind::histogram) {
+        v.write_mask = 0;
+        v.per_sample_view = v.per_sample_alpha = v.per_sample_normal = v.per_sample_uniforms = false;
+        v.guards = true;
+    }
+    return v;
+}
+
+std::string variant_key(const ProgramVariant& v)
+{
+    return std::string(program_kind_name(v.kind)) + " " + std::string(precision_name(v.precision)) + " " +
+           variant_defines(v);
+}
+
+bool variant_is_reachable(const ProgramVariant& v)
+{
+    if ((v.method == Method::caps_iso || v.world_space) && !v.isotropic)
+        return false;
+    if (v.per_sample_normal && v.normal_is_z)
+        return false;
+    if (v.kind == ProgramKind::histogram && (v.bins.bins_z < 1 || v.bins.bins_phi < 1))
+        return false;
+    return v.write_mask < (1u << GGX_FIELD_COUNT) && variant_key(with_kind_fixed(v)) == variant_key(v);
+}
+
+} // namespace ggxcl::detail

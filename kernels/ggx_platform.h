@@ -87,14 +87,10 @@ typedef std::uint64_t ggx_ulong;
 #define GGX_INLINE __forceinline
 #define GGX_UNROLL
 #elif defined(__clang__)
-// static: a plain `inline` function left uninlined (an unoptimized build, SPIR-V) has no external
-// definition, and llvm-spirv marks its body for import, which spirv-val rejects.
-#define GGX_INLINE static inline __attribute__((always_inline))
+#define GGX_INLINE inline __attribute__((always_inline))
 #define GGX_UNROLL _Pragma("unroll")
 #else
-// static: a plain `inline` function left uninlined (an unoptimized build, SPIR-V) has no external
-// definition, and llvm-spirv marks its body for import, which spirv-val rejects.
-#define GGX_INLINE static inline __attribute__((always_inline))
+#define GGX_INLINE inline __attribute__((always_inline))
 #define GGX_UNROLL _Pragma("GCC unroll 16")
 #endif
 #define GGX_FLT_MAX 3.402823466e+38f

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # device-check.sh - one prepared check of ggxcl on a Linux machine with an
 # NVIDIA GPU and its OpenCL driver: builds ggxcl, runs the device test
-# suites on the GPU (GGXCL_DEVICE=nvidia), then a short `ggx bench` (caps
-# and heitz, write and fused furnace jobs) and, where nvcc is installed,
+# suites on the GPU (GGXCL_DEVICE=nvidia), then a short `ggx bench` (caps,
+# heitz and caps-iso; write, fused furnace and world space; % of the GPU's
+# limits; measured ratios beside docs/DEVICES.md's static predictions) and, where nvcc is installed,
 # the CUDA example built from the same device headers, in under 8 minutes.  It fails
 # with a clear message, never hangs, when there is no GPU, no OpenCL ICD
 # for it, or a missing build tool.  When the driver is installed but no ICD
@@ -74,12 +75,20 @@ ctest_status=$?
 grep -E "tests passed|tests failed|\*\*\*|Passed|Failed" "$out/ctest.log" | tee -a "$summary"
 say "suites done after $(elapsed) (exit $ctest_status)"
 
-# 5. A short bench: caps and heitz, write and furnace, with accuracy.
-timeout 60 build-gpu/apps/ggx bench --methods caps,heitz --precisions precise,relaxed --jobs write,furnace \
-  -n 2^22 --repeats 5 --no-startup --scene 8 --csv "$out/bench.csv" --markdown "$out/BENCH.md" --charts "$out/bench" \
-  >"$out/bench.log" 2>&1
+# 5. A short bench: caps, heitz and caps-iso, write, furnace and world space, with accuracy; each
+#    job's % of the GPU's own limits, and the measured speed ratios beside the static predictions
+#    of docs/DEVICES.md (instruction counts of the PTX); the driver's SPIR-V (IL) version.
+timeout 90 build-gpu/apps/ggx bench --methods caps,heitz,caps-iso --precisions precise,relaxed \
+  --jobs write,furnace,world -n 2^22 --repeats 5 --no-startup --scene 8 --csv "$out/bench.csv" \
+  --markdown "$out/BENCH.md" --charts "$out/bench" >"$out/bench.log" 2>&1
 bench_status=$?
-sed -n '/## Speed (ns per sample)/,/## Speed against statistical/p' "$out/BENCH.md" 2>/dev/null | tee -a "$summary"
+sed -n '/## Speed (ns per sample)/,/## Speed against numerical error/p' "$out/BENCH.md" 2>/dev/null | tee -a "$summary"
+python3 scripts/predicted_vs_measured.py "$out/bench.csv" docs/DEVICES.md 2>&1 | tee -a "$summary"
+if command -v clinfo >/dev/null; then
+  clinfo 2>/dev/null | grep -E "Device Name|IL version" | tee -a "$summary"
+else
+  say "clinfo not installed: the driver's IL (SPIR-V) version not read"
+fi
 say "bench done after $(elapsed) (exit $bench_status)"
 
 # 6. The device headers as CUDA: examples/cuda built by nvcc and run on the GPU.

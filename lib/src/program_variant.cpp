@@ -1,28 +1,33 @@
 // program_variant.cpp - a request's program variant and its -D options.
 #include "program_variant.hpp"
 
+#include <iterator>
+
 #include "device_contract.hpp"
 
 namespace ggxcl::detail {
 
+namespace {
+
+struct ProgramKindNames {
+    const char* name;
+    const char* file;
+};
+// By ProgramKind.
+constexpr ProgramKindNames kind_names[] = {
+    {"bulk", "ggx_bulk.cl"}, {"furnace", "ggx_furnace.cl"}, {"histogram", "ggx_histogram.cl"}};
+static_assert(std::size(kind_names) == std::size(all_program_kinds));
+
+} // namespace
+
 const char* program_file(ProgramKind kind)
 {
-    switch (kind) {
-    case ProgramKind::bulk: return "ggx_bulk.cl";
-    case ProgramKind::furnace: return "ggx_furnace.cl";
-    case ProgramKind::histogram: return "ggx_histogram.cl";
-    }
-    return "?";
+    return kind_names[static_cast<int>(kind)].file;
 }
 
 const char* program_kind_name(ProgramKind kind)
 {
-    switch (kind) {
-    case ProgramKind::bulk: return "bulk";
-    case ProgramKind::furnace: return "furnace";
-    case ProgramKind::histogram: return "histogram";
-    }
-    return "?";
+    return kind_names[static_cast<int>(kind)].name;
 }
 
 bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs)

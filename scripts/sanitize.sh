@@ -14,8 +14,9 @@ cmake --build build-asan -j"$(nproc)"
 # PoCL alone: Mesa's OpenCL libraries (rusticl, Clover) leak when the ICD
 # loader merely loads them, partly in frames LeakSanitizer cannot name (no
 # module to suppress), and the host code under test is the same whatever the
-# device.  test_cross_device, which needs a second implementation, runs in
-# test.sh only.
+# device.  test_cross_device, which needs a second implementation, and
+# test_gpu_compilers, whose work is the offline compilers' (its enumeration
+# runs here as test_program_variants), run in test.sh only.
 icd_dir="$PWD/build-asan/icd-pocl-only"
 mkdir -p "$icd_dir"
 cp /etc/OpenCL/vendors/pocl.icd "$icd_dir/"
@@ -23,4 +24,4 @@ export OCL_ICD_VENDORS="$icd_dir"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_odr_violation=0"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-ctest --test-dir build-asan --output-on-failure -LE cross -j"$(nproc)" "$@"
+ctest --test-dir build-asan --output-on-failure -LE "cross|gpu-compilers" -j"$(nproc)" "$@"

@@ -3,13 +3,17 @@
 // this one header to get all of them:
 //   ggx_sample_<method>(...) -> ggx_sample {m, o, pdf_m, pdf_o, weight}
 //   ggx_pdf_<method>(...)    -> pdf of o recomputed from (i, o) alone
+//   ggx_eval_reflection(...)  -> the BRDF value f |cos| of any (i, o), for MIS (ggx_bsdf.h)
+//   ggx_fresnel_*(...)        -> Fresnel terms; roughness conventions (ggx_fresnel.h)
 // Method ids: GGX_METHOD_* of ggx_contract.h (the C++ enum ggxcl::Method is
 // made from the same list); an id that is none of them gives the fallback
 // sample about n ("no sample", ggx_guards.h).
 #ifndef GGX_SAMPLERS_H
 #define GGX_SAMPLERS_H
 
+#include "ggx_bsdf.h"
 #include "ggx_contract.h"
+#include "ggx_fresnel.h"
 #include "ggx_philox.h"
 #include "ggx_sample_bounded.h"
 #include "ggx_sample_caps.h"

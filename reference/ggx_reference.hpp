@@ -51,6 +51,12 @@ double vndf_pdf(const Vec3& m, const Vec3& i, double ax, double ay);  // Dv(m; i
 double bounded_k(const Vec3& i, double ax, double ay);                // Eto-Tokuyoshi k, k < 0 for a > 1
 double brdf_cos(const Vec3& i, const Vec3& o, double ax, double ay);  // D(h) G2hc / (4 iz), 0 unless iz, oz > 0
 
+// Fresnel reflectance at c = cos of the angle of incidence (docs/MATH.md "Fresnel and roughness"),
+// computed with complex amplitudes (ggx_fresnel.cpp), independently of the device's real forms.
+double fresnel_dielectric(double c, double eta);       // relative index eta; c < 0: from the other side
+double fresnel_conductor(double c, double eta, double k);  // complex index eta + i k, c in [0, 1]
+double fresnel_schlick(double c, double f0);
+
 // The same for an isotropic surface with world-space normal n (caps_iso): z components are dot
 // products with n, t(w) = sqrt(alpha^2 |w x n|^2 + (w.n)^2).
 double D_iso(const Vec3& m, const Vec3& n, double alpha);

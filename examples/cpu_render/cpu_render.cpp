@@ -5,7 +5,7 @@
 //
 // Two strategies, combined by the balance heuristic (Veach 1997):
 //   BSDF sampling  - ggx_sample_caps(i, ...) gives o, its pdf and the weight f cos / pdf;
-//   light sampling - o uniform in the light's cone; f cos from ggx_D and ggx_G2 (ggx_math.h),
+//   light sampling - o uniform in the light's cone; f cos from ggx_eval_reflection (ggx_bsdf.h),
 //                    the BSDF's pdf of that o from ggx_pdf_caps(i, o, ...).
 // Each alone is unbiased too: the program prints the three estimates with their standard errors
 // and exits with status 1 when the MIS estimate and either single strategy disagree by more than
@@ -44,13 +44,6 @@ ggx_vec3 sample_light(const Light& light, float u1, float u2)
                    ggx_scale(light.axis, cos_t));
 }
 
-// f(i, o) cos(o) of the GGX BRDF with Fresnel 1: D(h) G2(i, o) / (4 iz).
-float brdf_cos(ggx_vec3 i, ggx_vec3 o, float alpha)
-{
-    const ggx_vec3 h = ggx_half_vector(i, o);
-    return i.z > 0.0f ? ggx_D(h, alpha, alpha) * ggx_G2(i, o, alpha, alpha) / (4.0f * i.z) : 0.0f;
-}
-
 struct Estimate {
     double sum = 0, sum2 = 0;
     void add(double x) { sum += x, sum2 += x * x; }
@@ -82,7 +75,7 @@ int main(int argc, char** argv)
         const double w_bsdf = hit ? s.pdf_o / (s.pdf_o + light.pdf()) : 0.0;
         // Light sampling: f cos / pdf_light; the BSDF's pdf of o for MIS.
         const ggx_vec3 o = sample_light(light, v1, v2);
-        const float f_cos = brdf_cos(i, o, alpha), pdf_bsdf = ggx_pdf_caps(i, o, alpha, alpha);
+        const float f_cos = ggx_eval_reflection(i, o, alpha, alpha), pdf_bsdf = ggx_pdf_caps(i, o, alpha, alpha);
         light_only.add(f_cos / light.pdf());
         const double w_light = light.pdf() / (light.pdf() + pdf_bsdf);
         mis.add(w_bsdf * s.weight + w_light * f_cos / light.pdf());

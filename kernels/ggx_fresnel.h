@@ -1,0 +1,94 @@
+// ggx_fresnel.h - Fresnel reflectance and the roughness conventions of
+// material models, as scalar device functions (OpenCL C, C++17 and CUDA:
+// ggx_platform.h).  The renderer multiplies a BSDF value of ggx_bsdf.h by
+// the Fresnel term of its material, per colour channel:
+//   ggx_fresnel_dielectric(c, eta)     exact, unpolarized, relative index eta
+//   ggx_fresnel_conductor(c, eta, k)   exact, complex index eta + i k (one channel)
+//   ggx_fresnel_schlick(c, f0)         Schlick's approximation
+// with c = i.m, the cosine between the view and the microfacet normal.
+// Roughness: ggx_alpha_from_perceptual_roughness maps the artist's value to
+// alpha; ggx_is_effectively_smooth says when to shade a surface as a mirror.
+// docs/MATH.md "Fresnel and roughness" states the formulas.
+#ifndef GGX_FRESNEL_H
+#define GGX_FRESNEL_H
+
+#include "ggx_platform.h"
+
+// Dielectric interface, eta = index below the surface over index above.
+// A cosine c < 0 (the view below) sees the interface from the other side,
+// with index 1/eta.  With ct the refracted cosine (Snell's law),
+//   F = (A^2 + B^2) / 2,  A = (c - eta ct) / (c + eta ct),  B = (eta c - ct) / (eta c + ct)
+// on both sides (from below the two polarizations trade these forms), and
+// total internal reflection (ct^2 <= 0) reflects everything (Walter et al.
+// 2007, eq. 22).  ct^2 is written without forming 1/eta or 1 - sin^2, which
+// cancel near the critical angle: above, ((eta - 1)(eta + 1) + c^2) / eta^2;
+// below, (1 - eta)(1 + eta) + eta^2 c^2.
+GGX_INLINE float ggx_fresnel_dielectric(float c, float eta)
+{
+    const float d = (eta - 1.0f) * (eta + 1.0f);
+    float ct2;
+    if (c >= 0.0f) {
+        c = ggx_fmin(c, 1.0f);
+        ct2 = (d + c * c) / (eta * eta);
+    } else {
+        c = ggx_fmin(-c, 1.0f);
+        ct2 = eta * eta * c * c - d;
+    }
+    if (ct2 <= 0.0f)
+        return 1.0f;
+    const float ct = ggx_sqrt(ct2);
+    const float a = (c - eta * ct) / (c + eta * ct);
+    const float b = (eta * c - ct) / (eta * c + ct);
+    return 0.5f * (a * a + b * b);
+}
+
+// Conductor of complex relative index eta + i k, at cosine c in [0, 1], for
+// one wavelength (call once per channel).  The exact reflectance written in
+// real arithmetic: with s2 = 1 - c^2, t0 = eta^2 - k^2 - s2 and
+// a^2 + b^2 = sqrt(t0^2 + 4 eta^2 k^2), a = sqrt((a^2 + b^2 + t0) / 2),
+//   Rs = (a^2 + b^2 + c^2 - 2ac) / (a^2 + b^2 + c^2 + 2ac),
+//   Rp = Rs (c^2 (a^2 + b^2) + s2^2 - 2 a c s2) / (c^2 (a^2 + b^2) + s2^2 + 2 a c s2),
+// F = (Rs + Rp) / 2.  k = 0 and eta > 1 give the dielectric value.
+GGX_INLINE float ggx_fresnel_conductor(float c, float eta, float k)
+{
+    c = ggx_clamp(c, 0.0f, 1.0f);
+    const float c2 = c * c, s2 = 1.0f - c2;
+    const float t0 = eta * eta - k * k - s2;
+    const float a2b2 = ggx_sqrt(t0 * t0 + 4.0f * eta * eta * k * k);
+    const float a = ggx_sqrt(ggx_fmax(0.5f * (a2b2 + t0), 0.0f));
+    const float t1 = a2b2 + c2, t2 = 2.0f * a * c;
+    const float rs = (t1 - t2) / (t1 + t2);
+    const float t3 = c2 * a2b2 + s2 * s2, t4 = t2 * s2;
+    const float rp = rs * (t3 - t4) / (t3 + t4);
+    return 0.5f * (rs + rp);
+}
+
+// Schlick 1994: F0 + (1 - F0) (1 - c)^5, F0 the reflectance at normal
+// incidence; c clamped to [0, 1].
+GGX_INLINE float ggx_fresnel_schlick(float c, float f0)
+{
+    const float x = 1.0f - ggx_clamp(c, 0.0f, 1.0f);
+    const float x2 = x * x;
+    return f0 + (1.0f - f0) * (x2 * x2 * x);
+}
+
+// alpha = roughness^2: the perceptual roughness of Burley's model, glTF,
+// Filament and Unreal.  (pbrt-v4's RoughnessToAlpha is another convention:
+// alpha = sqrt(roughness).)
+GGX_INLINE float ggx_alpha_from_perceptual_roughness(float roughness)
+{
+    return roughness * roughness;
+}
+
+// Below this alpha a renderer should shade a mirror (a delta lobe) rather
+// than sample the microfacet lobe: 99% of the normals then lie within 0.01
+// rad of the surface normal (docs/MATH.md; pbrt-v4's EffectivelySmooth uses
+// the same bound).
+#define GGX_SMOOTH_ALPHA 1e-3f
+
+GGX_INLINE int ggx_is_effectively_smooth(float ax, float ay)
+{
+    return ggx_fmax(ax, ay) < GGX_SMOOTH_ALPHA;
+}
+
+#endif

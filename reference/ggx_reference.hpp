@@ -57,6 +57,12 @@ double fresnel_dielectric(double c, double eta);       // relative index eta; c 
 double fresnel_conductor(double c, double eta, double k);  // complex index eta + i k, c in [0, 1]
 double fresnel_schlick(double c, double f0);
 
+// A rough dielectric of relative index eta (below over above), f |oz| (ggx_dielectric.cpp): the BTDF
+// without Fresnel (0 unless i and o lie on opposite sides), and the whole BSDF with its Fresnel; a
+// view below sees the interface from the other side. radiance: divided by eta^2 (importance: not).
+double btdf_cos(const Vec3& i, const Vec3& o, double ax, double ay, double eta, bool radiance);
+double dielectric_cos(const Vec3& i, const Vec3& o, double ax, double ay, double eta, bool radiance);
+
 // The same for an isotropic surface with world-space normal n (caps_iso): z components are dot
 // products with n, t(w) = sqrt(alpha^2 |w x n|^2 + (w.n)^2).
 double D_iso(const Vec3& m, const Vec3& n, double alpha);

@@ -16,7 +16,8 @@ namespace {
 using ggxref::Vec3;
 
 // fresnel: one work-item per (c, eta, k, f0), four outputs (the last: alpha from f0 as a roughness, plus
-// 1 where (f0, f0/2) is effectively smooth); eval: one per (i, o, ax, ay), f |cos|.
+// 1 where (f0, f0/2) is effectively smooth); eval: one per (i, o, ax, ay), f |cos|; dielectric: one
+// per (i, o, ax, ay, eta, radiance), the transmission and the whole dielectric.
 const char* fresnel_kernel = R"CL(
 __kernel void fresnel(__global const float* in, __global float* out)
 {
@@ -34,6 +35,15 @@ __kernel void eval(__global const float* in, __global float* out)
     uint g = get_global_id(0);
     __global const float* p = in + 8 * g;
     out[g] = ggx_eval_reflection(ggx_vec3_make(p[0], p[1], p[2]), ggx_vec3_make(p[3], p[4], p[5]), p[6], p[7]);
+}
+
+__kernel void dielectric(__global const float* in, __global float* out)
+{
+    uint g = get_global_id(0);
+    __global const float* p = in + 10 * g;
+    ggx_vec3 i = ggx_vec3_make(p[0], p[1], p[2]), o = ggx_vec3_make(p[3], p[4], p[5]);
+    out[2 * g] = ggx_eval_transmission(i, o, p[6], p[7], p[8], (int)p[9]);
+    out[2 * g + 1] = ggx_eval_dielectric(i, o, p[6], p[7], p[8], (int)p[9]);
 }
 )CL";
 
@@ -174,5 +184,123 @@ TEST_CASE("every method's weight is the BRDF value over its pdf")
             CHECK(bad == 0);
         }
     CHECK(checked > 30000);
+}
+
+namespace {
+
+// A direction with z in [zmin, zmax], float-exact.
+Vec3 random_direction(std::mt19937_64& rng, double zmin, double zmax)
+{
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    const double z = zmin + (zmax - zmin) * uniform(rng), s = std::sqrt(1 - z * z), a = 6.283185307 * uniform(rng);
+    return {float(s * std::cos(a)), float(s * std::sin(a)), float(z)};
+}
+
+struct DielectricCase {
+    Vec3 i, o;
+    double ax, ay, eta;
+    int radiance;
+};
+
+std::vector<float> device_dielectric(const std::vector<DielectricCase>& cases)
+{
+    std::vector<float> in;
+    for (const DielectricCase& c : cases)
+        in.insert(in.end(), {float(c.i.x), float(c.i.y), float(c.i.z), float(c.o.x), float(c.o.y), float(c.o.z),
+                             float(c.ax), float(c.ay), float(c.eta), float(c.radiance)});
+    return run("dielectric", in, cases.size(), 2);
+}
+
+// Refraction of i through m (i.m = c > 0), relative index eta; false at total internal reflection.
+bool refract(const Vec3& i, const Vec3& m, double eta, Vec3& o)
+{
+    const double c = ggxref::dot(i, m), sin2 = (1.0 - c * c) / (eta * eta);
+    if (sin2 >= 1.0)
+        return false;
+    o = (c / eta - std::sqrt(1.0 - sin2)) * m - (1.0 / eta) * i;
+    return true;
+}
+
+} // namespace
+
+TEST_CASE("the transmission and the whole dielectric equal the reference, from both sides")
+{
+    std::mt19937_64 rng(19);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    std::vector<DielectricCase> cases;
+    const double etas[] = {1.5, 1.0 / 1.5, 1.33, 2.42};
+    for (std::size_t j = 0; j < 8000; ++j) {
+        const double ax = float(std::exp(std::log(0.03) + std::log(30.0) * uniform(rng)));
+        const double ay = j % 2 ? ax : double(float(std::exp(std::log(0.03) + std::log(30.0) * uniform(rng))));
+        const Vec3 i = random_direction(rng, j % 4 == 0 ? -0.98 : 0.02, j % 4 == 0 ? -0.02 : 0.98);
+        const Vec3 o = random_direction(rng, -0.98, 0.98);
+        cases.push_back({i, o, ax, ay, float(etas[j % 4]), int(j / 4 % 2)});
+    }
+    const std::vector<float> r = device_dielectric(cases);
+    std::size_t bad_t = 0, bad_all = 0, transmitted = 0, reflected = 0;
+    for (std::size_t j = 0; j < cases.size(); ++j) {
+        const DielectricCase& c = cases[j];
+        const double t = ggxref::btdf_cos(c.i, c.o, c.ax, c.ay, c.eta, c.radiance);
+        const double all = ggxref::dielectric_cos(c.i, c.o, c.ax, c.ay, c.eta, c.radiance);
+        bad_t += !close(r[2 * j], t, 2e-4, 1e-6 * (1.0 + t));
+        bad_all += !close(r[2 * j + 1], all, 2e-4, 1e-6 * (1.0 + all));
+        transmitted += t > 0.0;
+        reflected += c.i.z * c.o.z > 0.0 && all > 0.0;
+    }
+    CHECK(bad_t == 0);
+    CHECK(bad_all == 0);
+    CHECK(transmitted > 500);
+    CHECK(reflected > 1500);
+}
+
+TEST_CASE("a smooth dielectric reflects and transmits all it receives in importance transport")
+{
+    // E over VNDF normals m of [value(o_r) / pdf(o_r | m) + value(o_t) / pdf(o_t | m)], the densities
+    // of the reflected and refracted directions given m (SPEC's Jacobians, without the lobe
+    // choice): the reflectance plus the transmittance, near 1 for alpha 0.02 in importance
+    // transport. Control: radiance transport scales the transmission by 1/eta^2 and misses it.
+    const double alpha = 0.02;
+    for (double eta : {1.5, 1.0 / 1.5})
+        for (double theta : {30.0, 60.0}) {
+            const Vec3 i{std::sin(theta * 0.0174532925), 0.0, std::cos(theta * 0.0174532925)};
+            std::vector<DielectricCase> cases;
+            std::vector<double> pdf_reflect, pdf_refract;
+            std::mt19937_64 rng(23);
+            std::uniform_real_distribution<double> uniform(0.0, 1.0);
+            const ggxref::Params params{alpha, alpha, i};
+            for (int j = 0; j < 20000; ++j) {
+                const Vec3 m = ggxref::sample_normal(ggxref::Method::heitz, params, uniform(rng), uniform(rng));
+                const double im = ggxref::dot(i, m), vndf = ggxref::vndf_pdf(m, i, alpha, alpha);
+                const Vec3 o_r = 2.0 * im * m - i;
+                Vec3 o_t{0, 0, 0};
+                const bool refracts = refract(i, m, eta, o_t);
+                for (int radiance : {0, 1}) {
+                    cases.push_back({i, o_r, alpha, alpha, eta, radiance});
+                    pdf_reflect.push_back(vndf / (4.0 * im));
+                    cases.push_back({i, o_t, alpha, alpha, eta, radiance});
+                    const double om = ggxref::dot(o_t, m);
+                    pdf_refract.push_back(refracts ? vndf * eta * eta * std::fabs(om) / std::pow(im + eta * om, 2.0)
+                                                   : 0.0);
+                }
+            }
+            const std::vector<float> r = device_dielectric(cases);
+            double total[2] = {0.0, 0.0}, transmitted = 0.0;
+            for (std::size_t k = 0; k < cases.size(); k += 2) {
+                const int radiance = cases[k].radiance;
+                total[radiance] += r[2 * k + 1] / pdf_reflect[k / 2];
+                if (pdf_refract[k / 2] > 0.0) {
+                    total[radiance] += r[2 * (k + 1) + 1] / pdf_refract[k / 2];
+                    transmitted += radiance ? 0.0 : r[2 * (k + 1) + 1] / pdf_refract[k / 2];
+                }
+            }
+            const double n = double(cases.size()) / 4.0;
+            CAPTURE(eta);
+            CAPTURE(theta);
+            CHECK(total[0] / n == doctest::Approx(1.0).epsilon(0.02));
+            if (transmitted / n > 0.3)  // control, where light crosses (not under total internal reflection)
+                CHECK(std::fabs(total[1] / n - 1.0) > 0.1);
+            else
+                CHECK(eta < 1.0);  // only a view from the denser side reflects (nearly) everything
+        }
 }
 

@@ -7,6 +7,7 @@
 //   GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL,UNIFORMS}=0|1   parameters read per sample from buffers
 //   GGX_SEQUENCE=<id>                where the uniforms come from otherwise (ggx_contract.h)
 //   GGX_ISOTROPIC, GGX_BELOW_HORIZON, GGX_WORLD_SPACE, GGX_NORMAL_IS_Z=0|1   what the request needs
+//   GGX_EVAL=0|1                     the pdf kernels write the BRDF value f |cos| of o instead
 // Arrays are planar: component c of sample j is at [c * stride + j].
 // One sample per work-item.  Each kernel comes in two forms: the main one
 // for whole work-groups, whose loads and stores go to consecutive addresses
@@ -22,6 +23,9 @@
 #endif
 #if GGX_WRITE_MASK < 0 || GGX_WRITE_MASK >= (1 << GGX_FIELD_COUNT)
 #error "GGX_WRITE_MASK: bits 1 << GGX_FIELD_* of ggx_contract.h only"
+#endif
+#ifndef GGX_EVAL
+#define GGX_EVAL 0
 #endif
 #define GGX_WRITE_M ((GGX_WRITE_MASK >> GGX_FIELD_M) & 1)
 #define GGX_WRITE_O ((GGX_WRITE_MASK >> GGX_FIELD_O) & 1)
@@ -81,12 +85,17 @@ __kernel void ggx_sample_bulk_tail(GGX_SAMPLE_ARGS)
     ggx_sample_into(seed, first, j, stride, GGX_PARAM_VALUES, GGX_SAMPLE_OUTPUTS);
 }
 
-// pdf of each given direction o (planar, `stride`) for the method's sampler.
+// pdf of each given direction o (planar, `stride`) for the method's sampler, or with GGX_EVAL its
+// BRDF value.
 GGX_INLINE void ggx_pdf_into(uint j, uint stride, GGX_PARAM_ARGS, __global const float* GGX_RESTRICT o_in,
                              __global float* GGX_RESTRICT pdf_out)
 {
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
+#if GGX_EVAL
+    pdf_out[j] = ggx_bulk_eval(p, ggx_load3(o_in, j, stride));
+#else
     pdf_out[j] = ggx_bulk_pdf(p, ggx_load3(o_in, j, stride));
+#endif
 }
 
 __kernel void ggx_pdf_bulk(uint count, uint stride, GGX_PARAM_ARGS, __global const float* GGX_RESTRICT o_in,

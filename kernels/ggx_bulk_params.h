@@ -150,6 +150,18 @@ GGX_INLINE ggx_sample ggx_bulk_sample(ulong seed, ulong first, uint j, ggx_param
 }
 
 // The pdf of direction o for GGX_METHOD, in the space of ggx_bulk_sample.
+// The BRDF value f |cos| of o (ggx_bsdf.h): about the normal for caps-iso and in world space.
+GGX_INLINE float ggx_bulk_eval(ggx_params p, ggx_vec3 o)
+{
+#if GGX_WORLD_SPACE
+    return ggx_eval_reflection_world(p.normal, p.view, o, p.ax);
+#else
+    if (GGX_METHOD == GGX_METHOD_CAPS_ISO)  // folded: the method is a build option
+        return ggx_eval_reflection_world(p.normal, p.view, o, p.ax);
+    return ggx_eval_reflection(p.view, o, p.ax, p.ay);
+#endif
+}
+
 GGX_INLINE float ggx_bulk_pdf(ggx_params p, ggx_vec3 o)
 {
 #if GGX_WORLD_SPACE

@@ -49,6 +49,13 @@ GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, float
     return s;
 }
 
+// The BRDF value f |cos| (ggx_eval_reflection) of world-space i and o about the normal n.
+GGX_INLINE float ggx_eval_reflection_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
+{
+    ggx_basis basis = ggx_basis_from_normal(n);
+    return ggx_eval_reflection(ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha);
+}
+
 // The pdf of the world-space direction o for `method` (0 where it never samples o).
 GGX_INLINE float ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
 {

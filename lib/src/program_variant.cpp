@@ -85,6 +85,8 @@ ProgramVariant with_kind_fixed(ProgramVariant v)
 {
     if (v.kind != ProgramKind::histogram)
         v.bins = {};
+    if (v.kind != ProgramKind::bulk)
+        v.eval = false;
     if (v.kind == ProgramKind::furnace)
         v.write_mask = 1u << GGX_FIELD_WEIGHT;
     if (v.kind == ProgramKind::histogram) {

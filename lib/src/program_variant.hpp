@@ -25,7 +25,8 @@ namespace ggxcl::detail {
     X(below_horizon, "GGX_BELOW_HORIZON")             \
     X(world_space, "GGX_WORLD_SPACE")                 \
     X(guards, "GGX_GUARDS")                           \
-    X(normal_is_z, "GGX_NORMAL_IS_Z")
+    X(normal_is_z, "GGX_NORMAL_IS_Z")                 \
+    X(eval, "GGX_EVAL")
 
 // The programs the runtime builds: one kernel file each.
 // (The stability map's kernels/ggx_stress.cl belongs to `ggx stress`, which writes its options.)
@@ -65,7 +66,8 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
 std::string variant_defines(const ProgramVariant& variant);
 
 // The variant with what its kind fixes: a furnace writes the weight only; a histogram writes no
-// field, has no per-sample inputs and keeps the guards; only a histogram has bins.
+// field, has no per-sample inputs and keeps the guards; only a histogram has bins; only the bulk
+// program's pdf kernels evaluate the BRDF instead (eval).
 ProgramVariant with_kind_fixed(ProgramVariant variant);
 
 // Whether variant_of can give this variant for some valid request (caps-iso and world space are

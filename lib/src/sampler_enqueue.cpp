@@ -195,22 +195,38 @@ cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& para
                                const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride,
                                const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
 {
+    return enqueue_directions(queue, params, count, directions, pdf_out, stride, inputs, wait, false);
+}
+
+cl::Event Sampler::enqueue_eval(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
+                                const cl::Buffer& directions, const cl::Buffer& values, std::uint32_t stride,
+                                const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
+{
+    return enqueue_directions(queue, params, count, directions, values, stride, inputs, wait, true);
+}
+
+cl::Event Sampler::enqueue_directions(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
+                                      const cl::Buffer& directions, const cl::Buffer& out, std::uint32_t stride,
+                                      const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool eval)
+{
     const ValidatedParams valid = validated(params);
     check_launch_count(count, stride);
     return translate_cl_errors([&] {
         const std::uint64_t planes_stride = stride ? stride : count;
         check_buffer_sizes(nullptr, inputs, *valid, planes_stride);
         check_buffer_size(directions, "directions", 3, planes_stride);
-        check_buffer_size(pdf_out, "pdf_out", 1, planes_stride);
-        return enqueue_pdf_validated(queue, valid, count, directions, pdf_out, stride, inputs, wait);
+        check_buffer_size(out, eval ? "values" : "pdf_out", 1, planes_stride);
+        return enqueue_pdf_validated(queue, valid, count, directions, out, stride, inputs, wait, eval);
     });
 }
 
 cl::Event Sampler::enqueue_pdf_validated(cl::CommandQueue& queue, const ValidatedParams& params, std::uint32_t count,
                                          const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride,
-                                         const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
+                                         const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool eval)
 {
-    std::string options = build_options(device_, *params, 0, inputs);
+    ProgramVariant variant = variant_of(ProgramKind::bulk, *params, 0, inputs, true);
+    variant.eval = eval;
+    const std::string options = build_options(device_, variant);
     auto make = [&](const std::string& name) {
         KernelLease lease = kernel(bulk_file, name, options);
         cl::Kernel& k = *lease;

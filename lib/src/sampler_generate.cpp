@@ -323,6 +323,18 @@ SampleSet Sampler::generate_validated(const detail::ValidatedParams& params, con
 std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Vec3>& directions,
                                 const PerSampleInputs& per_sample)
 {
+    return of_directions(params, directions, per_sample, false);
+}
+
+std::vector<float> Sampler::eval(const SampleParams& params, const std::vector<Vec3>& directions,
+                                 const PerSampleInputs& per_sample)
+{
+    return of_directions(params, directions, per_sample, true);
+}
+
+std::vector<float> Sampler::of_directions(const SampleParams& params, const std::vector<Vec3>& directions,
+                                          const PerSampleInputs& per_sample, bool eval)
+{
     const detail::ValidatedParams valid = detail::validated(params);
     const std::uint64_t count = directions.size();
     if (count == 0)
@@ -340,7 +352,7 @@ std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Ve
                 inputs.upload(queue_, per_sample, start, n, capacity);
                 ChunkInputs::write(queue_, dirs, planar_units(directions, start, n, capacity));
                 enqueue_pdf_validated(queue_, valid, std::uint32_t(n), dirs, pdfs, std::uint32_t(capacity),
-                                      inputs.buffers, nullptr);
+                                      inputs.buffers, nullptr, eval);
                 detail::read_and_wait(queue_, pdfs, 0, bytes(n), result.data() + start);
                 start += n;
             }

@@ -96,6 +96,20 @@ class Sampler:
         world_space: bool = False,
     ) -> npt.NDArray[np.float32]:
         """The pdf (per steradian) of each direction (n, 3) for `method`'s sampler."""
+    def eval(
+        self,
+        directions: npt.NDArray[np.floating[Any]],
+        *,
+        alpha: Alpha = 0.3,
+        theta: float = 60.0,
+        phi: float = 0.0,
+        view: Optional[Vector] = None,
+        normal: Optional[Vector] = None,
+        precision: Optional[str] = None,
+        world_space: bool = False,
+    ) -> npt.NDArray[np.float32]:
+        """The GGX BRDF value f(i, o) |cos theta_o| (Fresnel 1) of each direction (n, 3): with pdf(), what
+        multiple importance sampling needs; for a sampled o, eval / pdf_o is its weight."""
     def furnace(
         self,
         method: str,

@@ -81,7 +81,8 @@ py::dict sample(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, 
     return result;
 }
 
-py::array_t<float> pdf(ggxcl::Sampler& s, RequestArgs args, const py::object& directions)
+// The pdf (eval = false) or the BRDF value (eval = true) of each direction of an (n, 3) array.
+py::array_t<float> of_directions(ggxcl::Sampler& s, RequestArgs args, const py::object& directions, bool eval)
 {
     if (!is_array(directions))
         throw ggxcl::InvalidArgument("directions", std::string(py::repr(directions)), "a NumPy array of shape (n, 3)");
@@ -91,7 +92,7 @@ py::array_t<float> pdf(ggxcl::Sampler& s, RequestArgs args, const py::object& di
     std::vector<float> values;
     {
         py::gil_scoped_release released;
-        values = s.pdf(r.params, o, r.per_sample);
+        values = eval ? s.eval(r.params, o, r.per_sample) : s.pdf(r.params, o, r.per_sample);
     }
     return py::array_t<float>(values.size(), values.data());
 }
@@ -199,11 +200,28 @@ void register_sampler(py::module_& m)
             [](ggxcl::Sampler& s, const std::string& method, const py::object& directions, const py::object& alpha,
                double theta, double phi, const py::object& view, const py::object& normal, const py::object& precision,
                bool world_space) {
-                return pdf(s, args_of(method, 0, alpha, theta, phi, view, normal, precision, "philox", py::none(),
-                                      world_space),
-                           directions);
+                return of_directions(s,
+                                     args_of(method, 0, alpha, theta, phi, view, normal, precision, "philox",
+                                             py::none(), world_space),
+                                     directions, false);
             },
             py::arg("method"), py::arg("directions"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
+            py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
+            py::arg("precision") = py::none(), py::arg("world_space") = false)
+        .def(
+            "eval",
+            [](ggxcl::Sampler& s, const py::object& directions, const py::object& alpha, double theta, double phi,
+               const py::object& view, const py::object& normal, const py::object& precision, bool world_space) {
+                if (!normal.is_none() && !world_space)
+                    throw ggxcl::InvalidArgument("normal", std::string(py::repr(normal)),
+                                                 "None in tangent space (the normal is z), or world_space=True");
+                // The value is the same for every method: caps's program computes it.
+                return of_directions(s,
+                                     args_of("caps", 0, alpha, theta, phi, view, normal, precision, "philox",
+                                             py::none(), world_space),
+                                     directions, true);
+            },
+            py::arg("directions"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
             py::arg("precision") = py::none(), py::arg("world_space") = false)
         .def(

@@ -93,6 +93,20 @@ def test_pdf_equals_the_pdf_o_field(sampler):
     assert np.allclose(p, d["pdf_o"], rtol=1e-4, atol=0)
 
 
+def test_eval_over_pdf_is_the_weight(sampler):
+    for method in ("ndf", "heitz", "caps", "bounded"):
+        d = sampler.sample(method, 3000, alpha=(0.3, 0.6), theta=40, seed=3, fields=("o", "pdf_o", "weight"))
+        f = sampler.eval(d["o"], alpha=(0.3, 0.6), theta=40)
+        assert f.shape == (3000,) and f.dtype == np.float32
+        used = d["weight"] > 0
+        assert used.sum() > 2000
+        assert np.allclose(f[used] / d["pdf_o"][used], d["weight"][used], rtol=1e-3, atol=0)
+    below = np.array([[0.0, 0.6, -0.8]], dtype=np.float32)
+    assert sampler.eval(below, alpha=0.3)[0] == 0.0
+    with pytest.raises(ggxcl.InvalidArgument, match="normal"):
+        sampler.eval(below, normal=(0, 0, 1))
+
+
 def test_histogram_passes_its_chi_square_and_rejects_another_pdf(sampler):
     h = sampler.histogram("caps", 10 ** 6, alpha=0.3, theta=60, seed=5, bins_z=16, bins_phi=32)
     assert h["counts"].shape == (16, 32) and h["counts"].dtype == np.uint64

@@ -167,6 +167,11 @@ public:
     // The pdf of each direction o (per steradian) for the sampler of params.method.
     std::vector<float> pdf(const SampleParams& params, const std::vector<Vec3>& directions,
                            const PerSampleInputs& per_sample = {});
+    // The BRDF value f(i, o) |cos theta_o| of each direction o, Fresnel 1 (kernels/ggx_bsdf.h), for
+    // the view, roughness and normal of params (the same for every method): with pdf(), the pair
+    // multiple importance sampling needs; for a sampled o, eval / pdf_o is its weight.
+    std::vector<float> eval(const SampleParams& params, const std::vector<Vec3>& directions,
+                            const PerSampleInputs& per_sample = {});
 
     // Enqueues the samples of `range` (count < 2^32) into the caller's
     // buffers on the caller's queue (of this sampler's context).  `stride`
@@ -188,6 +193,10 @@ public:
     cl::Event enqueue_pdf(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
                           const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride = 0,
                           const DeviceInputs& inputs = {}, const std::vector<cl::Event>* wait = nullptr);
+    // The same for the BRDF values of eval() into `values`.
+    cl::Event enqueue_eval(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
+                           const cl::Buffer& directions, const cl::Buffer& values, std::uint32_t stride = 0,
+                           const DeviceInputs& inputs = {}, const std::vector<cl::Event>* wait = nullptr);
 
     // Bins the directions (Field::o or Field::m) of `range` on the device;
     // only the counts come back, so the count of samples is unbounded.
@@ -238,10 +247,16 @@ private:
     cl::Event enqueue_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
                                 const SampleRange& range, const DeviceOutputs& outputs, std::uint32_t stride,
                                 const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool guards);
+    // pdf (eval = false) or BRDF value (eval = true) of each direction.
     cl::Event enqueue_pdf_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
                                     std::uint32_t count, const cl::Buffer& directions, const cl::Buffer& pdf_out,
                                     std::uint32_t stride, const DeviceInputs& inputs,
-                                    const std::vector<cl::Event>* wait);
+                                    const std::vector<cl::Event>* wait, bool eval = false);
+    cl::Event enqueue_directions(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
+                                 const cl::Buffer& directions, const cl::Buffer& out, std::uint32_t stride,
+                                 const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool eval);
+    std::vector<float> of_directions(const SampleParams& params, const std::vector<Vec3>& directions,
+                                     const PerSampleInputs& per_sample, bool eval);
     cl::Event enqueue_furnace_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
                                         const SampleRange& range, const cl::Buffer& sums, const DeviceInputs& inputs,
                                         const std::vector<cl::Event>* wait, bool guards);

@@ -218,7 +218,10 @@ TEST_CASE("every bench kernel (method x write, furnace x precision) has only ope
     }
 }
 
-TEST_CASE("the peak probe measures positive finite rates on the device, float faster than division")
+// Rates only: which class is faster is a timing, which a loaded machine can turn around (CI once
+// measured float below division with other suites on both cores); the measured peaks are in
+// docs/COST-PROBES.md.
+TEST_CASE("the peak probe measures positive finite rates on the device")
 {
     ggxcl::Sampler sampler;
     const PeakRates peaks = measure_peaks(sampler);
@@ -227,7 +230,6 @@ TEST_CASE("the peak probe measures positive finite rates on the device, float fa
         CHECK(std::isfinite(peaks[c]));
         CHECK(peaks[c] > 1e6);
     }
-    CHECK(peaks[OpClass::float_op] > peaks[OpClass::division]);
     CHECK(peaks.seconds > 0);
 }
 

@@ -154,4 +154,22 @@ std::vector<std::uint64_t> histogram_of(const std::vector<float>& planar, std::u
                                         nphi);
 }
 
+std::vector<float> run_user_kernel(const std::string& kernels, const std::string& kernel, const std::vector<float>& in,
+                                   std::size_t items, std::size_t outputs_per_item)
+{
+    ggxcl::Sampler& s = sampler();
+    cl::Program program(s.context(), ggxcl::kernel_source("ggx_samplers.h") + kernels);
+    program.build({s.device()}, ggxcl::device_options(s.device()).c_str());
+    cl::Buffer input(s.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
+                     const_cast<float*>(in.data()));
+    cl::Buffer output(s.context(), CL_MEM_WRITE_ONLY, items * outputs_per_item * sizeof(float));
+    cl::Kernel k(program, kernel.c_str());
+    k.setArg(0, input);
+    k.setArg(1, output);
+    s.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items));
+    std::vector<float> out(items * outputs_per_item);
+    s.queue().enqueueReadBuffer(output, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+    return out;
+}
+
 } // namespace ggxtest

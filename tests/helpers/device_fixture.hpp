@@ -55,6 +55,12 @@ ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& par
 // The reference's uniforms of sample `index` of stream `seed` in `sequence`.
 std::array<double, 2> reference_uniforms(ggxcl::Sequence sequence, std::uint64_t seed, std::uint64_t index);
 
+// Runs `kernel` of `kernels` (OpenCL C appended to the device headers, ggx_samplers.h, built with
+// the device's options) over `items` work-items: arguments (const float* in, float* out), `in` as
+// given, `outputs_per_item` floats of out per work-item, read back.
+std::vector<float> run_user_kernel(const std::string& kernels, const std::string& kernel, const std::vector<float>& in,
+                                   std::size_t items, std::size_t outputs_per_item);
+
 // Histogram of the o (planar) of a sample set in the reference binning.
 std::vector<std::uint64_t> histogram_of(const std::vector<float>& planar, std::uint64_t count, int nz, int nphi);
 

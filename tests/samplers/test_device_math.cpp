@@ -64,22 +64,11 @@ std::vector<Case> random_cases(std::size_t n)
 
 std::vector<float> device_math(const std::vector<Case>& cases)
 {
-    auto& s = ggxtest::sampler();
-    cl::Program program(s.context(), ggxcl::kernel_source("ggx_samplers.h") + math_kernel);
-    program.build({s.device()});
     std::vector<float> in;
     for (const Case& c : cases)
         for (double v : {c.w.x, c.w.y, c.w.z, c.m.x, c.m.y, c.m.z, c.i.x, c.i.y, c.i.z, c.ax, c.ay})
             in.push_back(float(v));
-    cl::Buffer input(s.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * 4, in.data());
-    cl::Buffer output(s.context(), CL_MEM_WRITE_ONLY, cases.size() * 9 * 4);
-    cl::Kernel k(program, "math");
-    k.setArg(0, input);
-    k.setArg(1, output);
-    s.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(cases.size()));
-    std::vector<float> out(cases.size() * 9);
-    s.queue().enqueueReadBuffer(output, CL_TRUE, 0, out.size() * 4, out.data());
-    return out;
+    return ggxtest::run_user_kernel(math_kernel, "math", in, cases.size(), 9);
 }
 
 // |device - reference| within rel * |reference| + abs.

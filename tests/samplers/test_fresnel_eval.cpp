@@ -49,18 +49,7 @@ __kernel void dielectric(__global const float* in, __global float* out)
 
 std::vector<float> run(const char* kernel_name, const std::vector<float>& in, std::size_t items, std::size_t per_item)
 {
-    auto& s = ggxtest::sampler();
-    cl::Program program(s.context(), ggxcl::kernel_source("ggx_samplers.h") + fresnel_kernel);
-    program.build({s.device()}, ggxcl::device_options(s.device()).c_str());
-    cl::Buffer input(s.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * 4, const_cast<float*>(in.data()));
-    cl::Buffer output(s.context(), CL_MEM_WRITE_ONLY, items * per_item * 4);
-    cl::Kernel k(program, kernel_name);
-    k.setArg(0, input);
-    k.setArg(1, output);
-    s.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items));
-    std::vector<float> out(items * per_item);
-    s.queue().enqueueReadBuffer(output, CL_TRUE, 0, out.size() * 4, out.data());
-    return out;
+    return ggxtest::run_user_kernel(fresnel_kernel, kernel_name, in, items, per_item);
 }
 
 bool close(double device, double reference, double rel, double abs)

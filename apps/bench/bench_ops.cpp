@@ -34,9 +34,11 @@ std::vector<std::optional<OpCounts>> count_task_ops(const ggxcl::Sampler& sample
         if (!counts_ops(tasks[t]))
             continue;
         const ggxcl::SampleParams& p = tasks[t].params;
+        // The programs the timed runs build (bench_speed.cpp): the furnace runs unguarded, as
+        // Sampler::furnace does.
         programs.push_back(tasks[t].job == BenchJob::write
                                ? ggxcl::benchmark::enqueue_program(sampler, p, {ggxcl::Field::m, ggxcl::Field::pdf_m})
-                               : ggxcl::benchmark::furnace_program(sampler, p));
+                               : ggxcl::benchmark::furnace_program(sampler, p, false));
         requests.push_back({ggxcl::kernel_source(programs.back().file), programs.back().options});
         counted.push_back(t);
     }

@@ -22,7 +22,7 @@ cl::Event enqueue_furnace_unguarded(Sampler& sampler, cl::CommandQueue& queue, c
     return sampler.enqueue_furnace_variant(queue, params, range, sums, {}, nullptr, false);
 }
 
-// Both go through detail::build_options, as the Sampler's launches do; the
+// Both make the launch's ProgramVariant and its options as the Sampler's launches do; the
 // device's quirk options are what build_program appends.
 ProgramText enqueue_program(const Sampler& sampler, const SampleParams& params, FieldSet fields, bool guards)
 {
@@ -30,18 +30,20 @@ ProgramText enqueue_program(const Sampler& sampler, const SampleParams& params, 
     if (fields.empty())
         throw InvalidArgument("fields", "none", "at least one field (" + field_list() + ")");
     const cl::Device& device = sampler.device();
-    return {"ggx_bulk.cl", "ggx_sample_bulk",
-            detail::build_options(device, *valid, detail::write_mask(fields), {}, guards) +
-                detail::device_quirk_options(device)};
+    const detail::ProgramVariant variant =
+        detail::variant_of(detail::ProgramKind::bulk, *valid, detail::write_mask(fields), {}, guards);
+    return {detail::program_file(variant.kind), "ggx_sample_bulk",
+            detail::build_options(device, variant) + detail::device_quirk_options(device)};
 }
 
 ProgramText furnace_program(const Sampler& sampler, const SampleParams& params, bool guards)
 {
     const detail::ValidatedParams valid = detail::validated(params);
     const cl::Device& device = sampler.device();
-    return {"ggx_furnace.cl", "ggx_furnace_bulk",
-            detail::build_options(device, *valid, detail::write_mask({Field::weight}), {}, guards) +
-                detail::device_quirk_options(device)};
+    const detail::ProgramVariant variant =
+        detail::variant_of(detail::ProgramKind::furnace, *valid, detail::write_mask({Field::weight}), {}, guards);
+    return {detail::program_file(variant.kind), "ggx_furnace_bulk",
+            detail::build_options(device, variant) + detail::device_quirk_options(device)};
 }
 
 } // namespace ggxcl::benchmark

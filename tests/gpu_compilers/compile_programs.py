@@ -41,7 +41,7 @@ def spill_problems(target, compiled):
 
 def check(program, target, sources, work):
     """One program on one target: a list of failure messages."""
-    base = os.path.join(work, f"{program['name']}-{target.isa}-{target.flags[3] if target.isa == 'amdgcn' else ''}")
+    base = os.path.join(work, f"{program['name']}-{target.slug}")
     compiled = gpu.compile_program(target, os.path.join(sources, program["file"]), program["options"], base)
     where = f"{program['name']} ({program['file']} {program['options']}) on {target.name}"
     if not compiled.ok:

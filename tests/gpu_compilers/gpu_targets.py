@@ -21,6 +21,11 @@ class Target:
     isa: str         # "amdgcn", "nvptx" or "spirv"
     flags: list      # clang's target flags
 
+    @property
+    def slug(self):
+        """The name as a file name: "RDNA2-gfx1030"."""
+        return re.sub(r"[^A-Za-z0-9.]+", "-", self.name)
+
 
 def amd(name, cpu):
     return Target(name, "amdgcn", ["-target", "amdgcn-unknown-amdhsa", f"-mcpu={cpu}", "-nogpulib",

@@ -29,7 +29,7 @@ def samples_per_item(sources):
 
 
 def measure(program, target, sources, work, per_item):
-    base = os.path.join(work, f"{program['name'].replace(':', '-')}-{target.flags[3]}")
+    base = os.path.join(work, f"{program['name'].replace(':', '-')}-{target.slug}")
     compiled = gpu.compile_program(target, os.path.join(sources, program["file"]), program["options"], base)
     if not compiled.ok:
         raise RuntimeError(f"{program['name']} on {target.name}: {compiled.log}")

@@ -154,6 +154,11 @@ std::vector<std::uint64_t> histogram_of(const std::vector<float>& planar, std::u
                                         nphi);
 }
 
+bool close_to(double device, double reference, double rel, double abs)
+{
+    return std::isfinite(device) && std::fabs(device - reference) <= rel * std::fabs(reference) + abs;
+}
+
 std::vector<float> run_user_kernel(const std::string& kernels, const std::string& kernel, const std::vector<float>& in,
                                    std::size_t items, std::size_t outputs_per_item)
 {

@@ -55,6 +55,9 @@ ggxcl::SampleSet device_samples(ggxref::Method method, const ggxref::Params& par
 // The reference's uniforms of sample `index` of stream `seed` in `sequence`.
 std::array<double, 2> reference_uniforms(ggxcl::Sequence sequence, std::uint64_t seed, std::uint64_t index);
 
+// |device - reference| <= rel |reference| + abs, and the device value finite.
+bool close_to(double device, double reference, double rel, double abs);
+
 // Runs `kernel` of `kernels` (OpenCL C appended to the device headers, ggx_samplers.h, built with
 // the device's options) over `items` work-items: arguments (const float* in, float* out), `in` as
 // given, `outputs_per_item` floats of out per work-item, read back.

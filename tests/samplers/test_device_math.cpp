@@ -71,12 +71,6 @@ std::vector<float> device_math(const std::vector<Case>& cases)
     return ggxtest::run_user_kernel(math_kernel, "math", in, cases.size(), 9);
 }
 
-// |device - reference| within rel * |reference| + abs.
-bool close(double device, double reference, double rel, double abs)
-{
-    return std::isfinite(device) && std::fabs(device - reference) <= rel * std::fabs(reference) + abs;
-}
-
 } // namespace
 
 TEST_CASE("device GGX math equals the reference on random inputs")
@@ -88,16 +82,16 @@ TEST_CASE("device GGX math equals the reference on random inputs")
         const Case& c = cases[k];
         const float* r = &d[9 * k];
         bool above = c.i.z > 0.0;
-        bad[0] += !close(r[0], ggxref::D(c.m, c.ax, c.ay), 1e-4, 0.0);
-        bad[1] += !close(r[1], ggxref::D(c.m, c.ax, c.ax), 1e-4, 0.0);
-        bad[2] += !close(r[2], ggxref::lambda(c.w, c.ax, c.ay), 1e-4, 1e-5);
-        bad[3] += !close(r[3], ggxref::G1(c.i, c.ax, c.ay), 1e-4, 1e-6);
-        bad[4] += !close(r[4], ggxref::G2_height_correlated(c.i, c.w, c.ax, c.ay), 1e-4, 1e-6);
-        bad[5] += !close(r[5], ggxref::G2_separable(c.i, c.w, c.ax, c.ay), 1e-4, 1e-6);
-        bad[6] += !close(r[6], ggxref::projected_area(c.i, c.ax, c.ay), 1e-4, 0.0);
-        bad[7] += !close(r[7], ggxref::vndf_pdf(c.m, c.i, c.ax, c.ay), 1e-4, 1e-6);
+        bad[0] += !ggxtest::close_to(r[0], ggxref::D(c.m, c.ax, c.ay), 1e-4, 0.0);
+        bad[1] += !ggxtest::close_to(r[1], ggxref::D(c.m, c.ax, c.ax), 1e-4, 0.0);
+        bad[2] += !ggxtest::close_to(r[2], ggxref::lambda(c.w, c.ax, c.ay), 1e-4, 1e-5);
+        bad[3] += !ggxtest::close_to(r[3], ggxref::G1(c.i, c.ax, c.ay), 1e-4, 1e-6);
+        bad[4] += !ggxtest::close_to(r[4], ggxref::G2_height_correlated(c.i, c.w, c.ax, c.ay), 1e-4, 1e-6);
+        bad[5] += !ggxtest::close_to(r[5], ggxref::G2_separable(c.i, c.w, c.ax, c.ay), 1e-4, 1e-6);
+        bad[6] += !ggxtest::close_to(r[6], ggxref::projected_area(c.i, c.ax, c.ay), 1e-4, 0.0);
+        bad[7] += !ggxtest::close_to(r[7], ggxref::vndf_pdf(c.m, c.i, c.ax, c.ay), 1e-4, 1e-6);
         // D(m) / (2 (iz + t)) = D(m) / (4 sigma(i)), the density of o given a visible m
-        bad[8] += !close(r[8], ggxref::D(c.m, c.ax, c.ay) / (4.0 * ggxref::projected_area(c.i, c.ax, c.ay)), 1e-4,
+        bad[8] += !ggxtest::close_to(r[8], ggxref::D(c.m, c.ax, c.ay) / (4.0 * ggxref::projected_area(c.i, c.ax, c.ay)), 1e-4,
                          1e-6);
         g2_forms_differ += above && c.w.z > 0 && std::fabs(r[4] - r[5]) > 1e-3;
     }

@@ -52,11 +52,6 @@ std::vector<float> run(const char* kernel_name, const std::vector<float>& in, st
     return ggxtest::run_user_kernel(fresnel_kernel, kernel_name, in, items, per_item);
 }
 
-bool close(double device, double reference, double rel, double abs)
-{
-    return std::isfinite(device) && std::fabs(device - reference) <= rel * std::fabs(reference) + abs;
-}
-
 struct FresnelCase {
     float c, eta, k, f0;
 };
@@ -86,10 +81,10 @@ TEST_CASE("Fresnel terms and roughness conventions equal the reference")
     for (std::size_t j = 0; j < cases.size(); ++j) {
         const FresnelCase& f = cases[j];
         const double dielectric = ggxref::fresnel_dielectric(f.c, f.eta);
-        bad[0] += !close(r[4 * j], dielectric, 2e-5, 2e-6);
+        bad[0] += !ggxtest::close_to(r[4 * j], dielectric, 2e-5, 2e-6);
         if (f.c >= 0.0f)
-            bad[1] += !close(r[4 * j + 1], ggxref::fresnel_conductor(f.c, f.eta, f.k), 2e-5, 2e-6);
-        bad[2] += !close(r[4 * j + 2], ggxref::fresnel_schlick(f.c, f.f0), 2e-6, 2e-6);
+            bad[1] += !ggxtest::close_to(r[4 * j + 1], ggxref::fresnel_conductor(f.c, f.eta, f.k), 2e-5, 2e-6);
+        bad[2] += !ggxtest::close_to(r[4 * j + 2], ggxref::fresnel_schlick(f.c, f.f0), 2e-6, 2e-6);
         const double alpha = double(f.f0) * f.f0;
         bad[3] += r[4 * j + 3] != float(alpha) + (f.f0 < 1e-3f ? 1.0f : 0.0f);
         if (dielectric == 1.0 && f.c != 0.0f) {  // total internal reflection: exactly 1 on the device too
@@ -134,10 +129,10 @@ TEST_CASE("the BRDF value equals the reference, and over each method's pdf gives
     const std::vector<float> r = run("eval", in, n, 1);
     std::size_t bad = 0, zero_ok = 0, below = 0, control = 0;
     for (std::size_t j = 0; j < n; ++j) {
-        bad += !close(r[j], expected[j], 1e-4, 1e-7 * (1.0 + expected[j]));
+        bad += !ggxtest::close_to(r[j], expected[j], 1e-4, 1e-7 * (1.0 + expected[j]));
         if (expected[j] == 0.0)
             ++below, zero_ok += r[j] == 0.0f;
-        control += !close(r[j], separable[j], 1e-3, 1e-6);
+        control += !ggxtest::close_to(r[j], separable[j], 1e-3, 1e-6);
     }
     CHECK(bad == 0);
     CHECK(below > 300);
@@ -166,7 +161,7 @@ TEST_CASE("every method's weight is the BRDF value over its pdf")
             for (std::uint32_t j = 0; j < n; ++j)
                 if (s.weight[j] > 0.0f) {
                     ++checked;
-                    bad += !close(f[j] / s.pdf_o[j], s.weight[j], 1e-3, 1e-6);
+                    bad += !ggxtest::close_to(f[j] / s.pdf_o[j], s.weight[j], 1e-3, 1e-6);
                 }
             CAPTURE(std::string(ggxcl::method_name(method)));
             CAPTURE(alpha);
@@ -231,8 +226,8 @@ TEST_CASE("the transmission and the whole dielectric equal the reference, from b
         const DielectricCase& c = cases[j];
         const double t = ggxref::btdf_cos(c.i, c.o, c.ax, c.ay, c.eta, c.radiance);
         const double all = ggxref::dielectric_cos(c.i, c.o, c.ax, c.ay, c.eta, c.radiance);
-        bad_t += !close(r[2 * j], t, 2e-4, 1e-6 * (1.0 + t));
-        bad_all += !close(r[2 * j + 1], all, 2e-4, 1e-6 * (1.0 + all));
+        bad_t += !ggxtest::close_to(r[2 * j], t, 2e-4, 1e-6 * (1.0 + t));
+        bad_all += !ggxtest::close_to(r[2 * j + 1], all, 2e-4, 1e-6 * (1.0 + all));
         transmitted += t > 0.0;
         reflected += c.i.z * c.o.z > 0.0 && all > 0.0;
     }
@@ -322,7 +317,7 @@ TEST_CASE("Sampler::eval gives the BRDF value in tangent and world space, and en
             const Vec3 i = {p.view.x, p.view.y, p.view.z};
             for (std::size_t j = 0; j < directions.size(); ++j) {
                 const double expected = ggxref::brdf_cos(ggxref::normalize(i), exact[j], 0.35f, 0.35f);
-                bad += !close(values[j], expected, 2e-4, 1e-6 * (1.0 + expected));
+                bad += !ggxtest::close_to(values[j], expected, 2e-4, 1e-6 * (1.0 + expected));
                 nonzero += values[j] > 0.0f;
             }
             CAPTURE(std::string(ggxcl::method_name(method)));
@@ -344,7 +339,7 @@ TEST_CASE("Sampler::eval gives the BRDF value in tangent and world space, and en
             s.queue().enqueueReadBuffer(out, CL_TRUE, 0, enqueued.size() * 4, enqueued.data());
             std::size_t differ = 0;
             for (std::size_t j = 0; j < values.size(); ++j)
-                differ += !close(enqueued[j], values[j], 1e-5, 1e-9);
+                differ += !ggxtest::close_to(enqueued[j], values[j], 1e-5, 1e-9);
             CHECK(differ == 0);
         }
     // The pdf and the value are different quantities: eval is not the pdf.

@@ -7,7 +7,8 @@
 //   GGX_PER_SAMPLE_{VIEW,ALPHA,NORMAL,UNIFORMS}=0|1   parameters read per sample from buffers
 //   GGX_SEQUENCE=<id>                where the uniforms come from otherwise (ggx_contract.h)
 //   GGX_ISOTROPIC, GGX_BELOW_HORIZON, GGX_WORLD_SPACE, GGX_NORMAL_IS_Z=0|1   what the request needs
-//   GGX_EVAL=0|1                     the pdf kernels write the BRDF value f |cos| of o instead
+//   GGX_DIELECTRIC, GGX_IMPORTANCE=0|1  a rough dielectric of index eta, its transport (ggx_bulk_params.h)
+//   GGX_EVAL=0|1                     the pdf kernels write the BSDF value f |cos| of o instead
 // Arrays are planar: component c of sample j is at [c * stride + j].
 // One sample per work-item.  Each kernel comes in two forms: the main one
 // for whole work-groups, whose loads and stores go to consecutive addresses
@@ -41,9 +42,9 @@ GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GG
                                 __global float* GGX_RESTRICT weight_out, __global float* GGX_RESTRICT u_out)
 {
     ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
-    float u1, u2;
-    ggx_bulk_uniforms(seed, first, j, p, &u1, &u2);
-    ggx_sample s = ggx_bulk_sample_of(p, u1, u2);
+    float u1, u2, u3;
+    ggx_bulk_uniforms(seed, first, j, p, &u1, &u2, &u3);
+    ggx_sample s = ggx_bulk_sample_of(p, u1, u2, u3);
 #if GGX_WRITE_M
     ggx_store3(m_out, j, stride, s.m);
 #endif
@@ -62,6 +63,9 @@ GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GG
 #if GGX_WRITE_U
     u_out[j] = u1;  // what the sample used, the caller's values as given
     u_out[j + stride] = u2;
+#if GGX_DIELECTRIC
+    u_out[j + 2u * stride] = u3;
+#endif
 #endif
 }
 
@@ -86,7 +90,7 @@ __kernel void ggx_sample_bulk_tail(GGX_SAMPLE_ARGS)
 }
 
 // pdf of each given direction o (planar, `stride`) for the method's sampler, or with GGX_EVAL its
-// BRDF value.
+// BSDF value.
 GGX_INLINE void ggx_pdf_into(uint j, uint stride, GGX_PARAM_ARGS, __global const float* GGX_RESTRICT o_in,
                              __global float* GGX_RESTRICT pdf_out)
 {

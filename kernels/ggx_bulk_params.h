@@ -5,7 +5,10 @@
 // uniforms: from the sequence GGX_SEQUENCE (a GGX_SEQUENCE_* id of
 // ggx_contract.h, Philox by default) or, with GGX_PER_SAMPLE_UNIFORMS=1,
 // the caller's.  GGX_ISOTROPIC=1 promises alpha_x == alpha_y: one roughness
-// is read and used for both.
+// is read and used for both.  GGX_DIELECTRIC=1 samples a rough dielectric
+// of relative index `eta` (ggx_dielectric.h) with a third uniform for the
+// lobe, in radiance transport, or importance with GGX_IMPORTANCE=1;
+// GGX_DIELECTRIC=0 reflects with Fresnel 1 and ignores eta.
 #ifndef GGX_BULK_PARAMS_H
 #define GGX_BULK_PARAMS_H
 
@@ -41,26 +44,35 @@
 #ifndef GGX_WORLD_SPACE
 #define GGX_WORLD_SPACE 0
 #endif
+#ifndef GGX_DIELECTRIC
+#define GGX_DIELECTRIC 0
+#endif
+#ifndef GGX_IMPORTANCE
+#define GGX_IMPORTANCE 0
+#endif
+#define GGX_RADIANCE (!GGX_IMPORTANCE)
 // GGX_NORMAL_IS_Z=1 (default 0, see ggx_sample_caps_iso.h): the uniform
 // normal is exactly (0, 0, 1).
 
-// The view, roughness and normal of sample j, per sample or uniform, and
-// the caller's uniforms (u1, u2) with GGX_PER_SAMPLE_UNIFORMS=1.
+// The view, roughness and normal of sample j, per sample or uniform, the
+// relative index, and the caller's uniforms (u1, u2, and u3 with
+// GGX_DIELECTRIC) with GGX_PER_SAMPLE_UNIFORMS=1.
 typedef struct {
     ggx_vec3 view, normal;
-    float ax, ay;
-    float u1, u2;
+    float ax, ay, eta;
+    float u1, u2, u3;
 } ggx_params;
 
 // The kernel arguments that carry them (GGX_PARAM_ARG_COUNT, at the positions
 // of ggx_contract.h): uniform values, then per-sample buffers.
 #define GGX_PARAM_ARGS                                                                      \
     float view_x, float view_y, float view_z, float alpha_x, float alpha_y, float normal_x, \
-        float normal_y, float normal_z, __global const float *GGX_RESTRICT view_in,             \
+        float normal_y, float normal_z, float eta, __global const float *GGX_RESTRICT view_in,  \
         __global const float *GGX_RESTRICT alpha_in, __global const float *GGX_RESTRICT normal_in, \
         __global const float *GGX_RESTRICT uniforms_in
 #define GGX_PARAM_VALUES                                                                    \
-    view_x, view_y, view_z, alpha_x, alpha_y, normal_x, normal_y, normal_z, view_in, alpha_in, normal_in, uniforms_in
+    view_x, view_y, view_z, alpha_x, alpha_y, normal_x, normal_y, normal_z, eta, view_in, alpha_in, normal_in, \
+        uniforms_in
 
 GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
 {
@@ -91,24 +103,31 @@ GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
 #if GGX_PER_SAMPLE_UNIFORMS
     p.u1 = uniforms_in[j];
     p.u2 = uniforms_in[j + stride];
+    p.u3 = GGX_DIELECTRIC ? uniforms_in[j + 2u * stride] : 0.0f;
 #else
     p.u1 = 0.0f;
     p.u2 = 0.0f;
+    p.u3 = 0.0f;
 #endif
+    p.eta = eta;
     return p;
 }
 
-// The two uniforms of sample first + j of stream `seed` (j < 2^32): the
-// caller's (read into p), or the sequence's.
-GGX_INLINE void ggx_bulk_uniforms(ulong seed, ulong first, uint j, ggx_params p, float* u1, float* u2)
+// The uniforms of sample first + j of stream `seed` (j < 2^32): the
+// caller's (read into p), or the sequence's; u3 (the lobe choice) with
+// GGX_DIELECTRIC only, else 0.
+GGX_INLINE void ggx_bulk_uniforms(ulong seed, ulong first, uint j, ggx_params p, float* u1, float* u2, float* u3)
 {
 #if GGX_PER_SAMPLE_UNIFORMS
     *u1 = p.u1;
     *u2 = p.u2;
+    *u3 = p.u3;
 #elif GGX_SEQUENCE == GGX_SEQUENCE_SOBOL
     ggx_sobol_launch_uniforms(seed, first, j, u1, u2);
+    *u3 = GGX_DIELECTRIC ? ggx_sobol_launch_lobe_uniform(seed, first, j) : 0.0f;
 #else
     ggx_uniforms(seed, first + j, u1, u2);
+    *u3 = GGX_DIELECTRIC ? ggx_lobe_uniform(seed, first + j) : 0.0f;
 #endif
 }
 
@@ -120,23 +139,39 @@ GGX_INLINE int ggx_unit_interval(float u)
     return bits < 0x3f800000u || bits == 0x80000000u;
 }
 
-// The sample of uniforms (u1, u2) for the method GGX_METHOD with parameters
-// p: world-space view, normal and results with GGX_WORLD_SPACE=1, else
-// tangent space.  The caller's uniforms outside [0, 1) give the fallback
-// sample about the normal the method works with (ggx_guards.h).
-GGX_INLINE ggx_sample ggx_bulk_sample_of(ggx_params p, float u1, float u2)
+// The normal the method works with: world space and caps-iso read it, the others use +z.
+GGX_INLINE ggx_vec3 ggx_bulk_normal(ggx_params p)
 {
-#if GGX_WORLD_SPACE
+    const int about_normal = GGX_WORLD_SPACE | (GGX_METHOD == GGX_METHOD_CAPS_ISO);
+    return about_normal ? p.normal : ggx_vec3_make(0.0f, 0.0f, 1.0f);
+}
+
+// The sample of uniforms (u1, u2, u3) for the method GGX_METHOD with
+// parameters p: world-space view, normal and results with GGX_WORLD_SPACE=1,
+// else tangent space; a dielectric's with GGX_DIELECTRIC=1.  The caller's
+// uniforms outside [0, 1) give the fallback sample about the normal the
+// method works with (ggx_guards.h; a dielectric's: on the view's side).
+GGX_INLINE ggx_sample ggx_bulk_sample_of(ggx_params p, float u1, float u2, float u3)
+{
+#if GGX_DIELECTRIC && GGX_WORLD_SPACE
+    ggx_sample s = ggx_sample_dielectric_world(GGX_METHOD, p.normal, p.view, p.ax, p.eta, GGX_RADIANCE, u1, u2, u3);
+#elif GGX_DIELECTRIC
+    ggx_sample s = ggx_sample_dielectric_method(GGX_METHOD, p.normal, p.view, p.ax, p.ay, p.eta, GGX_RADIANCE, u1, u2,
+                                                u3);
+#elif GGX_WORLD_SPACE
     ggx_sample s = ggx_sample_world(GGX_METHOD, p.normal, p.view, p.ax, u1, u2);
-    ggx_vec3 n = p.normal;
 #else
     ggx_sample s = ggx_sample_method(GGX_METHOD, p.normal, p.view, p.ax, p.ay, u1, u2);
-    ggx_vec3 n = GGX_METHOD == GGX_METHOD_CAPS_ISO ? p.normal : ggx_vec3_make(0.0f, 0.0f, 1.0f);
 #endif
 #if GGX_PER_SAMPLE_UNIFORMS
-    s = ggx_keep_or_fallback(s, ggx_unit_interval(u1) & ggx_unit_interval(u2), n);
+    ggx_vec3 n = ggx_bulk_normal(p);
+#if GGX_DIELECTRIC
+    n = ggx_dot(p.view, n) < 0.0f ? ggx_scale(n, -1.0f) : n;
+    const int u3_ok = ggx_unit_interval(u3);
 #else
-    (void)n;
+    const int u3_ok = 1;
+#endif
+    s = ggx_keep_or_fallback(s, ggx_unit_interval(u1) & ggx_unit_interval(u2) & u3_ok, n);
 #endif
     return s;
 }
@@ -144,27 +179,42 @@ GGX_INLINE ggx_sample ggx_bulk_sample_of(ggx_params p, float u1, float u2)
 // Sample first + j of stream `seed` with parameters p.
 GGX_INLINE ggx_sample ggx_bulk_sample(ulong seed, ulong first, uint j, ggx_params p)
 {
-    float u1, u2;
-    ggx_bulk_uniforms(seed, first, j, p, &u1, &u2);
-    return ggx_bulk_sample_of(p, u1, u2);
+    float u1, u2, u3;
+    ggx_bulk_uniforms(seed, first, j, p, &u1, &u2, &u3);
+    return ggx_bulk_sample_of(p, u1, u2, u3);
 }
 
-// The pdf of direction o for GGX_METHOD, in the space of ggx_bulk_sample.
-// The BRDF value f |cos| of o (ggx_bsdf.h): about the normal for caps-iso and in world space.
+// Whether a sample's o lies on the view's side of the surface (a dielectric's reflection).
+GGX_INLINE int ggx_bulk_reflected(ggx_params p, ggx_sample s)
+{
+    const ggx_vec3 n = ggx_bulk_normal(p);
+    return ggx_dot(p.view, n) * ggx_dot(s.o, n) > 0.0f;
+}
+
+// The BSDF value f |cos| of o (ggx_bsdf.h), Fresnel 1 or a dielectric's:
+// about the normal for caps-iso and in world space.
 GGX_INLINE float ggx_bulk_eval(ggx_params p, ggx_vec3 o)
 {
-#if GGX_WORLD_SPACE
-    return ggx_eval_reflection_world(p.normal, p.view, o, p.ax);
+    const int about_normal = GGX_WORLD_SPACE | (GGX_METHOD == GGX_METHOD_CAPS_ISO);  // folded: build options
+#if GGX_DIELECTRIC
+    if (about_normal)
+        return ggx_eval_dielectric_world(p.normal, p.view, o, p.ax, p.eta, GGX_RADIANCE);
+    return ggx_eval_dielectric(p.view, o, p.ax, p.ay, p.eta, GGX_RADIANCE);
 #else
-    if (GGX_METHOD == GGX_METHOD_CAPS_ISO)  // folded: the method is a build option
+    if (about_normal)
         return ggx_eval_reflection_world(p.normal, p.view, o, p.ax);
     return ggx_eval_reflection(p.view, o, p.ax, p.ay);
 #endif
 }
 
+// The pdf of direction o for GGX_METHOD, in the space of ggx_bulk_sample.
 GGX_INLINE float ggx_bulk_pdf(ggx_params p, ggx_vec3 o)
 {
-#if GGX_WORLD_SPACE
+#if GGX_DIELECTRIC && GGX_WORLD_SPACE
+    return ggx_pdf_dielectric_world(GGX_METHOD, p.normal, p.view, o, p.ax, p.eta);
+#elif GGX_DIELECTRIC
+    return ggx_pdf_dielectric_method(GGX_METHOD, p.normal, p.view, o, p.ax, p.ay, p.eta);
+#elif GGX_WORLD_SPACE
     return ggx_pdf_world(GGX_METHOD, p.normal, p.view, o, p.ax);
 #else
     return ggx_pdf_method(GGX_METHOD, p.normal, p.view, o, p.ax, p.ay);

@@ -63,8 +63,8 @@ enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
 // ggx_furnace_bulk, ggx_histogram and ggx_histogram_bins(_tail) begin with
 //   seed, first, count, stride (the histogram kernels: samples per work-item),
 // then the GGX_PARAM_ARG_COUNT parameter arguments of GGX_PARAM_ARGS
-// (ggx_bulk_params.h): view x, y, z, alpha x, y, normal x, y, z, then the
-// per-sample view, alpha, normal and uniforms buffers.  Their outputs follow:
+// (ggx_bulk_params.h): view x, y, z, alpha x, y, normal x, y, z, eta, then
+// the per-sample view, alpha, normal and uniforms buffers.  Their outputs follow:
 // ggx_sample_bulk's six buffers in field order, the furnace's partial sums,
 // the histogram's counts or the bin indices.
 #define GGX_ARG_SEED 0
@@ -72,8 +72,8 @@ enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
 #define GGX_ARG_COUNT 2
 #define GGX_ARG_STRIDE 3
 #define GGX_ARG_PARAMS 4
-#define GGX_PARAM_ARG_COUNT 12
-#define GGX_PARAM_UNIFORM_COUNT 8  // the floats before the four buffers
+#define GGX_PARAM_ARG_COUNT 13
+#define GGX_PARAM_UNIFORM_COUNT 9  // the floats before the four buffers
 #define GGX_ARG_OUTPUTS (GGX_ARG_PARAMS + GGX_PARAM_ARG_COUNT)
 
 // ggx_pdf_bulk(_tail): count, stride, the parameter arguments, the

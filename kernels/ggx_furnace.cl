@@ -14,7 +14,9 @@
 // so the partial sums depend neither on the work-group size nor, for
 // launches that start at multiples of GGX_FURNACE_PER_ITEM, on how a range
 // is split into launches.  Output (items = global size): sums[w] = sum of
-// its weights, sums[items + w] = sum of their squares.
+// its weights, sums[items + w] = sum of their squares, and with
+// GGX_DIELECTRIC sums[2 items + w] = the sum of the weights of its
+// reflected samples (o on the view's side): the reflectance's part.
 #ifndef GGX_METHOD
 #error "build with -DGGX_METHOD=<method id>"
 #endif
@@ -24,7 +26,7 @@ __kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride,
                                __global float* GGX_RESTRICT sums)
 {
     uint item = (uint)get_global_id(0), items = (uint)get_global_size(0);
-    float w_total = 0.0f, w2_total = 0.0f;
+    float w_total = 0.0f, w2_total = 0.0f, reflected_total = 0.0f;
 #pragma unroll
     for (uint k = 0; k < GGX_FURNACE_PER_ITEM; ++k) {
         uint index = item * GGX_FURNACE_PER_ITEM + k;
@@ -34,7 +36,15 @@ __kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride,
         float w = index < count ? s.weight : 0.0f;
         w_total += w;
         w2_total += w * w;
+#if GGX_DIELECTRIC
+        reflected_total += ggx_bulk_reflected(p, s) ? w : 0.0f;
+#endif
     }
     sums[item] = w_total;
     sums[items + item] = w2_total;
+#if GGX_DIELECTRIC
+    sums[2u * items + item] = reflected_total;
+#else
+    (void)reflected_total;
+#endif
 }

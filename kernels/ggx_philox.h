@@ -5,8 +5,11 @@
 //   key     = seed
 //   counter = (index_lo, index_hi)
 // and its two output words give u1 (word 0) and u2 (word 1), so host and
-// device see the same numbers whatever the chunking.  The host checks this
-// file bit for bit against the Random123 library (tests/).
+// device see the same numbers whatever the chunking.  A dielectric's third
+// uniform, the lobe choice, is word 0 of a second block of the same key at
+// counter (index_lo, index_hi xor 2^31): the counters of indices 2^63 and up,
+// which a stream of indices below 2^63 never uses for its u1, u2 (docs/MATH.md "Uniforms").  The host
+// checks this file bit for bit against the Random123 library (tests/).
 #ifndef GGX_PHILOX_H
 #define GGX_PHILOX_H
 
@@ -50,6 +53,14 @@ GGX_INLINE void ggx_uniforms(ggx_ulong seed, ggx_ulong index, float* u1, float* 
     ggx_philox2x32_10(&c0, &c1, (ggx_uint)seed);
     *u1 = ggx_word_to_unit(c0);
     *u2 = ggx_word_to_unit(c1);
+}
+
+// The third uniform of sample `index` in stream `seed`, for dielectrics (see above).
+GGX_INLINE float ggx_lobe_uniform(ggx_ulong seed, ggx_ulong index)
+{
+    ggx_uint c0 = (ggx_uint)index, c1 = (ggx_uint)(index >> 32) ^ 0x80000000u;
+    ggx_philox2x32_10(&c0, &c1, (ggx_uint)seed);
+    return ggx_word_to_unit(c0);
 }
 
 #endif

@@ -5,6 +5,8 @@
 //   ggx_pdf_<method>(...)    -> pdf of o recomputed from (i, o) alone
 //   ggx_eval_reflection(...)  -> the BRDF value f |cos| of any (i, o), for MIS (ggx_bsdf.h)
 //   ggx_fresnel_*(...)        -> Fresnel terms; roughness conventions (ggx_fresnel.h)
+// and, including this one, ggx_dielectric.h: every sampler on a rough
+// dielectric (reflection or refraction), ggx_world.h: all of it in world space.
 // Method ids: GGX_METHOD_* of ggx_contract.h (the C++ enum ggxcl::Method is
 // made from the same list); an id that is none of them gives the fallback
 // sample about n ("no sample", ggx_guards.h).

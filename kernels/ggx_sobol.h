@@ -1,4 +1,4 @@
-// ggx_sobol.h - the first two dimensions of the Sobol sequence in base 2,
+// ggx_sobol.h - the first two (three) dimensions of the Sobol sequence in base 2,
 // Owen-scrambled by a hash keyed by the seed (Burley 2020, "Practical
 // Hash-based Owen Scrambling", JCGT 9(4)), as an alternative to Philox for
 // the two uniforms of a sample.  Point k is sample index k, so chunks,
@@ -14,6 +14,9 @@
 //   each scrambled by ggx_owen_scramble_digits with its own key from (seed,
 //   dimension, high word of index): a stream beyond 2^32 samples continues
 //   with new scrambles; u = top 24 bits times 2^-24, as for Philox.
+// A dielectric's third uniform (the lobe choice) is Sobol's third dimension,
+// scrambled the same way with the key of dimension 2: the first 2^m points
+// of the three dimensions form a (1, m, 3)-net, the third alone a (0, m, 1)-net.
 #ifndef GGX_SOBOL_H
 #define GGX_SOBOL_H
 
@@ -100,7 +103,7 @@ GGX_INLINE ggx_uint ggx_mix32(ggx_uint x)
     return x;
 }
 
-// The scramble key of `dimension` (0 or 1) for stream `seed` and the samples
+// The scramble key of `dimension` (0, 1 or 2) for stream `seed` and the samples
 // of one 2^32 block (`block`: the index's high word).
 GGX_INLINE ggx_uint ggx_sobol_key(ggx_uint seed, ggx_uint dimension, ggx_uint block)
 {
@@ -133,6 +136,32 @@ GGX_INLINE void ggx_sobol_uniforms(ggx_ulong seed, ggx_ulong index, float* u1, f
     *u2 = ggx_word_to_unit(w2);
 }
 
+// The digits of Sobol's third dimension of point k as a 32-bit fraction: the
+// xor of the direction numbers v_j of the bits j of k.  Its primitive
+// polynomial x^2 + x + 1 with m_1 = 1, m_2 = 3 gives, for v_j = m_j 2^(32-j),
+// the recurrence v_j = v_(j-1) xor v_(j-2) xor v_(j-2) / 4 (Bratley & Fox
+// 1988); unrolled, every v_j is a constant.
+GGX_INLINE ggx_uint ggx_sobol_third_word(ggx_uint k)
+{
+    ggx_uint previous = 0x80000000u, current = 0xc0000000u;
+    ggx_uint x = (previous & (0u - (k & 1u))) ^ (current & (0u - ((k >> 1) & 1u)));
+GGX_UNROLL
+    for (int j = 2; j < 32; ++j) {
+        ggx_uint next = current ^ previous ^ (previous >> 2);
+        x ^= next & (0u - ((k >> j) & 1u));
+        previous = current;
+        current = next;
+    }
+    return x;
+}
+
+// The third uniform of sample `index` of stream `seed`.
+GGX_INLINE float ggx_sobol_lobe_uniform(ggx_ulong seed, ggx_ulong index)
+{
+    ggx_uint key = ggx_sobol_key((ggx_uint)seed, 2u, (ggx_uint)(index >> 32));
+    return ggx_word_to_unit(ggx_owen_scramble(ggx_sobol_third_word((ggx_uint)index), key));
+}
+
 // The same for sample first + j of a launch of fewer than 2^32 samples,
 // which crosses at most one 2^32 block: the keys of both candidate blocks
 // depend on (seed, first) alone, so a compiler computes them once per launch
@@ -148,6 +177,16 @@ GGX_INLINE void ggx_sobol_launch_uniforms(ggx_ulong seed, ggx_ulong first, ggx_u
     ggx_sobol_words_keyed((ggx_uint)index, next ? next1 : key1, next ? next2 : key2, &w1, &w2);
     *u1 = ggx_word_to_unit(w1);
     *u2 = ggx_word_to_unit(w2);
+}
+
+// The third uniform of sample first + j of a launch, its keys per launch as above.
+GGX_INLINE float ggx_sobol_launch_lobe_uniform(ggx_ulong seed, ggx_ulong first, ggx_uint j)
+{
+    ggx_uint block = (ggx_uint)(first >> 32);
+    ggx_uint key = ggx_sobol_key((ggx_uint)seed, 2u, block), next_key = ggx_sobol_key((ggx_uint)seed, 2u, block + 1u);
+    ggx_ulong index = first + j;
+    ggx_uint word = ggx_sobol_third_word((ggx_uint)index);
+    return ggx_word_to_unit(ggx_owen_scramble(word, (ggx_uint)(index >> 32) != block ? next_key : key));
 }
 
 #endif

@@ -7,7 +7,7 @@
 #ifndef GGX_WORLD_H
 #define GGX_WORLD_H
 
-#include "ggx_samplers.h"
+#include "ggx_dielectric.h"
 
 typedef struct {
     ggx_vec3 t, b, n;
@@ -63,6 +63,46 @@ GGX_INLINE float ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, f
         return ggx_pdf_caps_iso(n, i, o, alpha);
     ggx_basis basis = ggx_basis_from_normal(n);
     return ggx_pdf_method(method, n, ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha);
+}
+
+// The dielectric value f |cos| (ggx_eval_dielectric) of world-space i and o about the normal n.
+GGX_INLINE float ggx_eval_dielectric_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha, float eta, int radiance)
+{
+    ggx_basis basis = ggx_basis_from_normal(n);
+    return ggx_eval_dielectric(ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha, eta, radiance);
+}
+
+// A dielectric sample of `method` (ggx_dielectric.h) for world-space n and i; m and o in world space.
+GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, float alpha, float eta,
+                                                  int radiance, float u1, float u2, float u3)
+{
+    const int below = ggx_dot(i, n) < 0.0f;
+    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
+        return ggx_fallback_sample(n);
+    const ggx_vec3 i_above = below ? ggx_mirror_through(i, n) : i;
+    ggx_sample s = ggx_sample_world(method, n, i_above, alpha, u1, u2);
+    s = ggx_dielectric_from_reflection(s, n, i_above, alpha, alpha, below ? 1.0f / eta : eta, radiance, u3,
+                                       GGX_IS_METHOD(method, GGX_METHOD_NDF), 1);
+    if (below) {
+        s.m = ggx_mirror_through(s.m, n);
+        s.o = ggx_mirror_through(s.o, n);
+    }
+    return s;
+}
+
+// The density of the world-space o for `method`'s dielectric sampler, from (i, o) alone.
+GGX_INLINE float ggx_pdf_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha, float eta)
+{
+    const int below = ggx_dot(i, n) < 0.0f;
+    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
+        return 0.0f;
+    const ggx_vec3 i_above = below ? ggx_mirror_through(i, n) : i;
+    const ggx_vec3 o_side = below ? ggx_mirror_through(o, n) : o;
+    const float eta_side = below ? 1.0f / eta : eta;
+    const float reflection_pdf = ggx_pdf_world(method, n, i_above, o_side, alpha);
+    return ggx_guard_pdf(ggx_dielectric_pdf_above(method, n, i_above, o_side, alpha, alpha, eta_side,
+                                                  reflection_pdf, 1),
+                         alpha, alpha);
 }
 
 #endif

@@ -153,6 +153,17 @@ void check_writable_folder(const std::string& flag, const std::string& path)
         throw UsageError(flag, path, "a path in an existing, writable folder");
 }
 
+float parse_eta(const std::string& flag, const std::string& text)
+{
+    double value;
+    const float eta = to_double(text, value) ? float(value) : -1.0f;
+    if (!(eta == 0.0f || (eta > 0.0f && std::isfinite(eta) && eta != 1.0f)))
+        throw UsageError(flag, text,
+                         "0 (a conductor, Fresnel 1) or a relative index of refraction, finite, > 0 and != 1 "
+                         "(index below the surface over index above, e.g. 1.5 for glass in air)");
+    return eta;
+}
+
 double parse_angle(const std::string& flag, const std::string& text, double low, double high)
 {
     double value;

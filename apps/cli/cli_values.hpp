@@ -41,6 +41,9 @@ double parse_angle(const std::string& flag, const std::string& text, double low,
 std::vector<std::string> parse_name_list(const std::string& flag, const std::string& text,
                                          const std::vector<std::string>& allowed);
 
+// A relative index of refraction: 0 (none: a conductor) or finite, > 0 and != 1.
+float parse_eta(const std::string& flag, const std::string& text);
+
 // A significance level strictly between 0 and 1.
 double parse_level(const std::string& flag, const std::string& text);
 

@@ -22,6 +22,13 @@ void SampleOptions::add_view_options(CLI::App& cmd)
                                              "relaxed (-cl-fast-relaxed-math)")
         ->capture_default_str();
     cmd.add_option("--device", device, "device index or name part (see `ggx devices`); default GGXCL_DEVICE, else the first");
+    cmd.add_option("--eta", eta, "a rough dielectric: index below the surface over index above (e.g. 1.5), each "
+                                 "sample reflected or refracted with the exact Fresnel; 0: a conductor, Fresnel 1 "
+                                 "(every method but bounded)")
+        ->capture_default_str();
+    cmd.add_option("--transport", transport, "with --eta: radiance (transmission divided by eta^2, for path "
+                                             "tracing) or importance")
+        ->capture_default_str();
 }
 
 void SampleOptions::add_method_options(CLI::App& cmd)
@@ -55,6 +62,17 @@ ggxcl::Sequence SampleOptions::parsed_sequence() const
         return ggxcl::parse_sequence(sequence);
     } catch (const ggxcl::InvalidArgument&) {
         throw UsageError("--sequence", sequence, "one of philox, sobol");
+    }
+}
+
+float SampleOptions::parsed_eta() const { return parse_eta("--eta", eta); }
+
+ggxcl::Transport SampleOptions::parsed_transport() const
+{
+    try {
+        return ggxcl::parse_transport(transport);
+    } catch (const ggxcl::InvalidArgument&) {
+        throw UsageError("--transport", transport, "one of radiance, importance");
     }
 }
 
@@ -94,6 +112,12 @@ ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m) const
         throw UsageError("--precision", precision, "one of " + ggxcl::precision_list());
     }
     p.sequence = parsed_sequence();
+    p.eta = parsed_eta();
+    p.transport = parsed_transport();
+    if (p.eta != 0.0f && m == ggxcl::Method::bounded)
+        throw UsageError("--eta", eta,
+                         "0 with --method bounded: its cap leaves out microfacet normals that refract, so it cannot "
+                         "sample every transmitted direction (use caps or heitz for dielectrics)");
     if (!normal.empty()) {
         if (m != ggxcl::Method::caps_iso)
             throw UsageError("--normal", normal, "only with --method caps-iso (the others work in tangent space)");

@@ -24,8 +24,11 @@ struct SampleOptions {
     std::string device;  // selector, else GGXCL_DEVICE, else the first device
     std::string precision = "precise";
     std::string sequence = "philox";
+    std::string eta = "0";  // a rough dielectric's relative index; 0: a conductor
+    std::string transport = "radiance";
 
-    void add_view_options(CLI::App& cmd);  // --alpha, --theta, --phi, --seed, --sequence, --device, --precision
+    // --alpha, --theta, --phi, --seed, --sequence, --device, --precision, --eta, --transport
+    void add_view_options(CLI::App& cmd);
     void add_method_options(CLI::App& cmd); // --method, --normal
 
     // These options for a command that runs every method: caps-iso, which is
@@ -37,6 +40,8 @@ struct SampleOptions {
     ggxcl::Method parsed_method() const;
     std::uint64_t parsed_seed() const;
     ggxcl::Sequence parsed_sequence() const;
+    float parsed_eta() const;
+    ggxcl::Transport parsed_transport() const;
     // --seed, --first and -n; the range must end before index 2^64.
     ggxcl::SampleRange parsed_range(const std::string& first, const std::string& count) const;
     double parsed_theta() const;

@@ -66,9 +66,14 @@ struct SampleCommand {
         const ggxcl::SampleRange whole = job.range;
         job.range = shard_range(whole, part);
         job.out = shard_out_path(out, part);
+        const auto skipped = std::ptrdiff_t(job.range.first - whole.first), kept = std::ptrdiff_t(job.range.count);
         if (!job.per_sample.uniforms.empty()) {
-            auto rows = job.per_sample.uniforms.begin() + std::ptrdiff_t(job.range.first - whole.first);
-            job.per_sample.uniforms.assign(rows, rows + std::ptrdiff_t(job.range.count));
+            auto rows = job.per_sample.uniforms.begin() + skipped;
+            job.per_sample.uniforms.assign(rows, rows + kept);
+        }
+        if (!job.per_sample.lobe_uniforms.empty()) {
+            auto rows = job.per_sample.lobe_uniforms.begin() + skipped;
+            job.per_sample.lobe_uniforms.assign(rows, rows + kept);
         }
         prepared.shard_note = describe_shard(part, job.range, whole);
         prepared.shard_warning = part.warning;
@@ -112,7 +117,7 @@ struct SampleCommand {
             throw UsageError("--sequence", options.sequence, "nothing with --uniforms, which replaces the sequence");
         if (all_devices || !devices.empty())
             throw UsageError("--uniforms", uniforms, "one device: not with --devices or --all-devices");
-        job.per_sample.uniforms = read_uniforms(uniforms);
+        read_uniforms(uniforms, job.params.eta != 0.0f, job.per_sample);
         job.uniforms_file = uniforms;
     }
 };

@@ -36,17 +36,17 @@ void rows_for(std::size_t columns, const float* const* planes, std::size_t count
     ((columns == counts + 1 ? rows_from_planes<counts + 1>(planes, 0, count, rows) : void()), ...);
 }
 
-// The chunk's requested fields as rows (count x columns, 1 to 11 columns), in
+// The chunk's requested fields as rows (count x columns, 1 to 12 columns), in
 // `fields` order, into `rows`.
-void interleave(const ggxcl::SampleView& chunk, const std::vector<ggxcl::Field>& fields, std::size_t columns,
-                std::vector<float>& rows)
+void interleave(const ggxcl::SampleView& chunk, const std::vector<ggxcl::Field>& fields, bool dielectric,
+                std::size_t columns, std::vector<float>& rows)
 {
     rows.resize(chunk.count * columns);
     std::vector<const float*> planes;
     for (ggxcl::Field field : fields)
-        for (int c = 0; c < ggxcl::field_columns(field); ++c)
+        for (int c = 0; c < ggxcl::field_columns(field, dielectric); ++c)
             planes.push_back(chunk.column_source(field) + c * chunk.stride);
-    rows_for(columns, planes.data(), chunk.count, rows.data(), std::make_integer_sequence<int, 11>{});
+    rows_for(columns, planes.data(), chunk.count, rows.data(), std::make_integer_sequence<int, 12>{});
 }
 
 std::string device_names(const std::vector<ggxcl::Sampler*>& samplers)
@@ -60,11 +60,12 @@ std::string device_names(const std::vector<ggxcl::Sampler*>& samplers)
 nlohmann::json sidecar(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
 {
     nlohmann::json doc = describe_sampling(job.params, job.theta_degrees, job.phi_degrees, job.range);
-    doc["columns"] = column_names(job.fields);
+    const bool dielectric = job.params.eta != 0.0f;
+    doc["columns"] = column_names(job.fields, dielectric);
     doc["format"] = job.format == Format::npy ? "npy float32" : job.format == Format::csv ? "csv" : "ply binary";
     if (job.format == Format::ply)
         doc["ply"] = "vertices are the first three columns, colored by log10 of the fourth over [-2, 3]";
-    doc["shape"] = {job.range.count, column_names(job.fields).size()};
+    doc["shape"] = {job.range.count, column_names(job.fields, dielectric).size()};
     if (!job.uniforms_file.empty()) {
         doc.erase("sequence");
         doc["generator"] = "the caller's uniforms, rows of " + job.uniforms_file;
@@ -91,23 +92,28 @@ nlohmann::json describe_sampling(const ggxcl::SampleParams& p, double theta_degr
     doc["seed"] = range.seed;
     doc["first"] = range.first;
     doc["count"] = range.count;
+    if (p.eta != 0.0f) {
+        doc["eta"] = p.eta;
+        doc["transport"] = std::string(ggxcl::transport_name(p.transport));
+    }
     doc["sequence"] = std::string(ggxcl::sequence_name(p.sequence));
     doc["generator"] = ggxcl::sequence_description(p.sequence);
     doc["ggxcl_version"] = ggxcl::version();
     return doc;
 }
 
-std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields)
+std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields, bool dielectric)
 {
     std::vector<std::string> names;
     for (ggxcl::Field field : fields) {
         std::string base(ggxcl::field_name(field));
-        if (ggxcl::field_columns(field) == 3)
+        const int columns = ggxcl::field_columns(field, dielectric);
+        if (field == ggxcl::Field::m || field == ggxcl::Field::o)
             for (const char* axis : {"_x", "_y", "_z"})
                 names.push_back(base + axis);
-        else if (ggxcl::field_columns(field) == 2)
-            for (const char* index : {"1", "2"})
-                names.push_back(base + index);
+        else if (columns > 1)
+            for (int index = 1; index <= columns; ++index)
+                names.push_back(base + std::to_string(index));
         else
             names.push_back(base);
     }
@@ -139,14 +145,16 @@ void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job)
 
 void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
 {
-    const std::size_t columns = column_names(job.fields).size();
-    std::unique_ptr<SampleWriter> writer = make_writer(job.format, job.out, job.range.count, column_names(job.fields));
+    const bool dielectric = job.params.eta != 0.0f;
+    const std::vector<std::string> names = column_names(job.fields, dielectric);
+    const std::size_t columns = names.size();
+    std::unique_ptr<SampleWriter> writer = make_writer(job.format, job.out, job.range.count, names);
     AtomicFile json_file(sidecar_path(job.out));  // opened now: fail before sampling if unwritable
     Progress progress(job.out, job.range.count);
     WriterThread writing(*writer);  // the file is written while the next chunk is drawn
     auto write_chunk = [&](const ggxcl::SampleView& chunk, std::uint64_t offset) {
         std::vector<float> rows = writing.take_buffer();
-        interleave(chunk, job.fields, columns, rows);
+        interleave(chunk, job.fields, dielectric, columns, rows);
         writing.append(std::move(rows));
         progress.advance(offset + chunk.count);
     };

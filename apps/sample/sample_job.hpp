@@ -31,7 +31,7 @@ nlohmann::json describe_sampling(const ggxcl::SampleParams& params, double theta
                                  const ggxcl::SampleRange& range);
 
 // Column names in file order, e.g. m_x, m_y, m_z, pdf_o.
-std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields);
+std::vector<std::string> column_names(const std::vector<ggxcl::Field>& fields, bool dielectric = false);
 
 // For a .ply: the direction the --fields list names (o by default) and its pdf.
 std::vector<ggxcl::Field> ply_fields(const std::vector<ggxcl::Field>& requested);

@@ -14,36 +14,44 @@ namespace ggxapp {
 
 namespace {
 
-std::string row_text(std::size_t row, double u1, double u2)
+std::string row_text(std::size_t row, const double* values, std::size_t columns)
 {
     std::ostringstream out;
     out.precision(17);
-    out << "row " << row << ": " << u1 << "," << u2;
+    out << "row " << row << ": ";
+    for (std::size_t c = 0; c < columns; ++c)
+        out << (c ? "," : "") << values[c];
     return out.str();
 }
 
 } // namespace
 
-std::vector<std::array<float, 2>> read_uniforms(const std::string& path)
+void read_uniforms(const std::string& path, bool dielectric, ggxcl::PerSampleInputs& inputs)
 {
+    const std::size_t columns = dielectric ? 3 : 2;
+    const std::string shape = dielectric ? "(N, 3) (u1, u2 and the lobe's u3, with --eta)" : "(N, 2)";
     NpyDoubles array;
     try {
         array = read_npy_doubles(path);
     } catch (const std::runtime_error& e) {
-        throw UsageError("--uniforms", path, std::string("a float32 or float64 .npy of shape (N, 2): ") + e.what());
+        throw UsageError("--uniforms", path, "a float32 or float64 .npy of shape " + shape + ": " + e.what());
     }
-    if (array.columns != 2 || array.rows == 0)
+    if (array.columns != columns || array.rows == 0)
         throw UsageError("--uniforms", path,
-                         "a .npy of shape (N, 2) with N >= 1, not (" + std::to_string(array.rows) + ", " +
+                         "a .npy of shape " + shape + " with N >= 1, not (" + std::to_string(array.rows) + ", " +
                              std::to_string(array.columns) + ")");
-    std::vector<std::array<float, 2>> rows(array.rows);
-    for (std::size_t j = 0; j < rows.size(); ++j) {
-        double u1 = array.data[2 * j], u2 = array.data[2 * j + 1];
-        if (!(u1 >= 0.0 && u1 < 1.0 && u2 >= 0.0 && u2 < 1.0))
-            throw UsageError("--uniforms", path + " " + row_text(j, u1, u2), "rows of two numbers in [0, 1)");
-        rows[j] = {ggxcl::uniform_to_float(u1), ggxcl::uniform_to_float(u2)};
+    inputs.uniforms.resize(array.rows);
+    inputs.lobe_uniforms.resize(dielectric ? array.rows : 0);
+    for (std::size_t j = 0; j < array.rows; ++j) {
+        const double* row = array.data.data() + columns * j;
+        for (std::size_t c = 0; c < columns; ++c)
+            if (!(row[c] >= 0.0 && row[c] < 1.0))
+                throw UsageError("--uniforms", path + " " + row_text(j, row, columns),
+                                 "rows of " + std::to_string(columns) + " numbers in [0, 1)");
+        inputs.uniforms[j] = {ggxcl::uniform_to_float(row[0]), ggxcl::uniform_to_float(row[1])};
+        if (dielectric)
+            inputs.lobe_uniforms[j] = ggxcl::uniform_to_float(row[2]);
     }
-    return rows;
 }
 
 } // namespace ggxapp

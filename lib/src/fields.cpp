@@ -33,6 +33,11 @@ int field_columns(Field field)
     return field == Field::u ? 2 : 1;
 }
 
+int field_columns(Field field, bool dielectric)
+{
+    return field == Field::u && dielectric ? 3 : field_columns(field);
+}
+
 std::string field_list()
 {
     std::string list;

@@ -28,8 +28,8 @@ std::string build_options(const cl::Device& device, const SampleParams& params, 
 
 void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in)
 {
-    const float values[GGX_PARAM_UNIFORM_COUNT] = {p.view.x,  p.view.y,   p.view.z,   p.alpha_x,
-                                                   p.alpha_y, p.normal.x, p.normal.y, p.normal.z};
+    const float values[GGX_PARAM_UNIFORM_COUNT] = {p.view.x,   p.view.y,   p.view.z,   p.alpha_x, p.alpha_y,
+                                                   p.normal.x, p.normal.y, p.normal.z, p.eta};
     for (cl_uint k = 0; k < GGX_PARAM_UNIFORM_COUNT; ++k)
         kernel.setArg(first_arg + k, values[k]);
     const cl::Buffer* buffers[] = {&in.view, &in.alpha, &in.normal, &in.uniforms};
@@ -61,13 +61,15 @@ void check_buffer_size(const cl::Buffer& buffer, const std::string& name, int pl
 void check_buffer_sizes(const DeviceOutputs* outputs, const DeviceInputs& inputs, const SampleParams& params,
                         std::uint64_t stride)
 {
+    const bool dielectric = params.eta != 0.0f;
     if (outputs)
         for (Field f : all_fields)
-            check_buffer_size(outputs->of(f), "outputs." + std::string(field_name(f)), field_columns(f), stride);
+            check_buffer_size(outputs->of(f), "outputs." + std::string(field_name(f)), field_columns(f, dielectric),
+                              stride);
     check_buffer_size(inputs.view, "inputs.view", 3, stride);
     check_buffer_size(inputs.alpha, "inputs.alpha", is_isotropic(params, inputs) ? 1 : 2, stride);
     check_buffer_size(inputs.normal, "inputs.normal", 3, stride);
-    check_buffer_size(inputs.uniforms, "inputs.uniforms", 2, stride);
+    check_buffer_size(inputs.uniforms, "inputs.uniforms", dielectric ? 3 : 2, stride);
 }
 
 std::size_t group_size(std::size_t device_max, std::size_t requested)

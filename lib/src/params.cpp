@@ -66,6 +66,32 @@ void check_uniforms(std::size_t index, const std::array<float, 2>& u)
                               "two numbers in [0, 1)");
 }
 
+// eta: 0 (no dielectric) or a relative index; bounded has no exact dielectric sampler.
+void check_eta(const SampleParams& params)
+{
+    const float eta = params.eta;
+    if (eta == 0.0f)
+        return;
+    if (!(eta > 0.0f) || !std::isfinite(eta) || eta == 1.0f)
+        throw InvalidArgument("eta", text(eta),
+                              "0 (a conductor, Fresnel 1) or a relative index of refraction: finite, > 0 and != 1");
+    if (params.method == Method::bounded)
+        throw InvalidArgument("eta", text(eta),
+                              "0 for bounded: its cap leaves out microfacet normals whose reflection leaves the "
+                              "surface but which refract, so it cannot sample every transmitted direction; use caps "
+                              "(or heitz) for dielectrics");
+    const int transport = static_cast<int>(params.transport);
+    if (transport < 0 || transport >= int(all_transports.size()))
+        throw InvalidArgument("transport", std::to_string(transport), "radiance or importance");
+}
+
+// u3 in [0, 1); NaN fails the compares.
+void check_lobe_uniform(std::size_t index, float u)
+{
+    if (!(u >= 0.0f && u < 1.0f))
+        throw InvalidArgument("lobe_uniforms[" + std::to_string(index) + "]", text(u), "a number in [0, 1)");
+}
+
 // params with unit view and normal; params must be valid.
 SampleParams with_unit_vectors(const SampleParams& params)
 {
@@ -84,6 +110,20 @@ std::string_view precision_name(Precision precision)
     case Precision::relaxed: return "relaxed";
     }
     return "unknown";
+}
+
+std::string_view transport_name(Transport transport)
+{
+    switch (transport) {
+    case Transport::radiance: return "radiance";
+    case Transport::importance: return "importance";
+    }
+    return "unknown";
+}
+
+Transport parse_transport(std::string_view name)
+{
+    return detail::parse_named(name, all_transports, transport_name, "transport");
 }
 
 Precision parse_precision(std::string_view name)
@@ -113,9 +153,10 @@ Sequence parse_sequence(std::string_view name)
 std::string sequence_description(Sequence sequence)
 {
     if (sequence == Sequence::sobol)
-        return "Sobol dimensions 1 and 2 of point index mod 2^32, each Owen-scrambled by Burley's hash keyed by "
-               "(seed, dimension, index / 2^32); u = top 24 bits times 2^-24";
-    return "Philox2x32-10, key seed, counter (index lo, index hi); u1 word 0, u2 word 1";
+        return "Sobol dimensions 1 and 2 (and 3 for u3) of point index mod 2^32, each Owen-scrambled by Burley's "
+               "hash keyed by (seed, dimension, index / 2^32); u = top 24 bits times 2^-24";
+    return "Philox2x32-10, key seed, counter (index lo, index hi); u1 word 0, u2 word 1 (u3: word 0 of counter "
+           "(index lo, index hi xor 2^31))";
 }
 
 float uniform_to_float(double u)
@@ -181,6 +222,7 @@ void validate(const SampleParams& params)
     check_isotropic(params, params.alpha_x, params.alpha_y);
     check_direction("view", params.view);
     check_direction("normal", params.normal);
+    check_eta(params);
 }
 
 SampleParams normalized(const SampleParams& params)
@@ -239,6 +281,14 @@ void validate(const PerSampleInputs& inputs, const SampleParams& params, std::ui
     check_size("uniforms", inputs.uniforms.size());
     for (std::size_t j = 0; j < inputs.uniforms.size(); ++j)
         check_uniforms(j, inputs.uniforms[j]);
+    const std::size_t lobe_count = params.eta != 0.0f ? inputs.uniforms.size() : 0;
+    if (inputs.lobe_uniforms.size() != lobe_count)
+        throw InvalidArgument("lobe_uniforms", std::to_string(inputs.lobe_uniforms.size()) + " entries",
+                              params.eta != 0.0f ? "one per entry of uniforms (" + std::to_string(lobe_count) +
+                                                       "): a dielectric's third uniform u3"
+                                                 : "none without eta (only a dielectric draws a third uniform)");
+    for (std::size_t j = 0; j < inputs.lobe_uniforms.size(); ++j)
+        check_lobe_uniform(j, inputs.lobe_uniforms[j]);
 }
 
 } // namespace ggxcl

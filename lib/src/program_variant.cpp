@@ -64,6 +64,8 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
     v.guards = guards;
     v.normal_is_z = inputs.normal() == nullptr && params.normal.x == 0.0f && params.normal.y == 0.0f &&
                     params.normal.z == 1.0f;
+    v.dielectric = params.eta != 0.0f;
+    v.importance = v.dielectric && params.transport == Transport::importance;
     return v;
 }
 
@@ -108,6 +110,8 @@ bool variant_is_reachable(const ProgramVariant& v)
     if ((v.method == Method::caps_iso || v.world_space) && !v.isotropic)
         return false;
     if (v.per_sample_normal && v.normal_is_z)
+        return false;
+    if ((v.importance && !v.dielectric) || (v.dielectric && v.method == Method::bounded))
         return false;
     if (v.kind == ProgramKind::histogram && (v.bins.bins_z < 1 || v.bins.bins_phi < 1))
         return false;

@@ -26,6 +26,8 @@ namespace ggxcl::detail {
     X(world_space, "GGX_WORLD_SPACE")                 \
     X(guards, "GGX_GUARDS")                           \
     X(normal_is_z, "GGX_NORMAL_IS_Z")                 \
+    X(dielectric, "GGX_DIELECTRIC")                   \
+    X(importance, "GGX_IMPORTANCE")                   \
     X(eval, "GGX_EVAL")
 
 // The programs the runtime builds: one kernel file each.
@@ -71,7 +73,8 @@ std::string variant_defines(const ProgramVariant& variant);
 ProgramVariant with_kind_fixed(ProgramVariant variant);
 
 // Whether variant_of can give this variant for some valid request (caps-iso and world space are
-// isotropic; a per-sample normal is never promised to be z; what with_kind_fixed fixes).
+// isotropic; a per-sample normal is never promised to be z; importance transport and every method
+// but bounded with a dielectric only; what with_kind_fixed fixes).
 bool variant_is_reachable(const ProgramVariant& variant);
 
 // What tells two variants apart: the kind, the precision and the -D options.

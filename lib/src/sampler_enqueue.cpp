@@ -176,16 +176,17 @@ void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceI
                 values[j] = fill[j / count];
             return cl::Buffer(context_, values.begin(), values.end(), false);
         };
-        const float unit_z[] = {0.0f, 0.0f, 1.0f}, half[] = {0.5f, 0.5f}, zero[] = {0.0f, 0.0f, 0.0f};
+        const float unit_z[] = {0.0f, 0.0f, 1.0f}, half[] = {0.5f, 0.5f, 0.5f}, zero[] = {0.0f, 0.0f, 0.0f};
+        const bool dielectric = (*valid).eta != 0.0f;
         DeviceInputs scratch_inputs = inputs;
         if (inputs.view() != nullptr) scratch_inputs.view = floats(3, unit_z);
         if (inputs.alpha() != nullptr) scratch_inputs.alpha = floats(2, half);
         if (inputs.normal() != nullptr) scratch_inputs.normal = floats(3, unit_z);
-        if (inputs.uniforms() != nullptr) scratch_inputs.uniforms = floats(2, half);
+        if (inputs.uniforms() != nullptr) scratch_inputs.uniforms = floats(dielectric ? 3 : 2, half);
         DeviceOutputs outputs;
         for (Field f : all_fields)
             if (fields.has(f))
-                outputs.of(f) = floats(field_columns(f), zero);
+                outputs.of(f) = floats(field_columns(f, dielectric), zero);
         enqueue_validated(queue_, valid, {0, 0, count}, outputs, 0, scratch_inputs, nullptr, true).wait();
         return 0;
     });

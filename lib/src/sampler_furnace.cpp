@@ -22,17 +22,30 @@ namespace {
 constexpr std::uint64_t samples_per_launch = 1u << 26;  // a multiple of samples_per_item
 constexpr std::uint64_t samples_per_item = detail::furnace_per_item;
 
-// The partial sums of one launch added in double, in work-item order, to
-// sum and sum_of_squares; false if one of them is not finite.
-bool add_partial_sums(const std::vector<float>& host, std::size_t items, double& sum, double& sum_of_squares)
+// The planes of partial sums a launch writes: weights, squares, and a dielectric's reflected weights.
+std::size_t sum_planes(const SampleParams& params)
 {
+    return params.eta != 0.0f ? 3 : 2;
+}
+
+// The partial sums of one launch (`planes` planes of `items`) added in
+// double, in work-item order, to `total`; false, with `total` unchanged,
+// if one of them is not finite, unless `keep_any` adds them anyway.
+bool add_partial_sums(const std::vector<float>& host, std::size_t items, std::size_t planes, FurnaceSums& total,
+                      bool keep_any)
+{
+    FurnaceSums sums = total;
+    bool finite = true;
     for (std::size_t g = 0; g < items; ++g) {
-        if (!std::isfinite(host[g]) || !std::isfinite(host[items + g]))
-            return false;
-        sum += host[g];
-        sum_of_squares += host[items + g];
+        const float reflected = planes > 2 ? host[2 * items + g] : 0.0f;
+        finite = finite && std::isfinite(host[g]) && std::isfinite(host[items + g]) && std::isfinite(reflected);
+        sums.sum += host[g];
+        sums.sum_of_squares += host[items + g];
+        sums.reflected_sum += reflected;
     }
-    return true;
+    if (finite || keep_any)
+        total = sums;
+    return finite;
 }
 
 } // namespace
@@ -40,6 +53,16 @@ bool add_partial_sums(const std::vector<float>& host, std::size_t items, double&
 double FurnaceSums::mean() const
 {
     return count ? sum / double(count) : 0.0;
+}
+
+double FurnaceSums::reflectance() const
+{
+    return count ? reflected_sum / double(count) : 0.0;
+}
+
+double FurnaceSums::transmittance() const
+{
+    return count ? (sum - reflected_sum) / double(count) : 0.0;
 }
 
 double FurnaceSums::variance() const
@@ -76,7 +99,7 @@ cl::Event Sampler::enqueue_furnace_variant(cl::CommandQueue& queue, const Sample
         throw InvalidArgument("count", std::to_string(range.count), "1 .. 2^31 per enqueue_furnace");
     return detail::translate_cl_errors([&] {
         detail::check_buffer_sizes(nullptr, inputs, *valid, range.count);
-        detail::check_buffer_size(sums, "sums", 2, furnace_items(range.count));
+        detail::check_buffer_size(sums, "sums", int(sum_planes(params)), furnace_items(range.count));
         return enqueue_furnace_validated(queue, valid, range, sums, inputs, wait, guards);
     });
 }
@@ -110,16 +133,13 @@ cl::Event Sampler::enqueue_furnace_validated(cl::CommandQueue& queue, const deta
 void Sampler::add_furnace_launch(const detail::ValidatedParams& params, const SampleRange& range,
                                  const cl::Buffer& sums, std::vector<float>& host, FurnaceSums& total)
 {
-    std::size_t used = furnace_items(range.count);
+    const std::size_t used = furnace_items(range.count), planes = sum_planes(*params);
     for (bool guarded : {false, true}) {
         enqueue_furnace_validated(queue_, params, range, sums, {}, nullptr, guarded);
-        detail::read_and_wait(queue_, sums, 0, 2 * used * sizeof(float), host.data());
-        double sum = total.sum, sum_of_squares = total.sum_of_squares;  // one order of additions, whatever the launches
-        if (add_partial_sums(host, used, sum, sum_of_squares) || guarded) {
-            total.sum = sum;
-            total.sum_of_squares = sum_of_squares;
+        detail::read_and_wait(queue_, sums, 0, planes * used * sizeof(float), host.data());
+        // One order of additions, whatever the launches; the guarded pass counts even if not finite.
+        if (add_partial_sums(host, used, planes, total, guarded) || guarded)
             return;
-        }
     }
 }
 
@@ -132,7 +152,7 @@ FurnaceSums Sampler::furnace(const SampleParams& params, const SampleRange& rang
     detail::translate_cl_errors([&] {
         std::uint64_t start = 0, launch_size = std::min(samples_per_launch, range.count);
         auto run_launches = [&](std::uint64_t per_launch) {
-            std::size_t floats = 2 * furnace_items(per_launch);
+            std::size_t floats = sum_planes(*valid) * furnace_items(per_launch);
             cl::Buffer sums = detail::device_buffer(context_, CL_MEM_WRITE_ONLY, floats * sizeof(float));
             std::vector<float> host(floats);
             for (; start < range.count; start += per_launch) {  // start: the first sample not summed

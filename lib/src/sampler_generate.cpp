@@ -54,6 +54,19 @@ std::vector<float> planar_pairs(const std::vector<std::array<float, 2>>& values,
     return planes;
 }
 
+// The caller's uniforms [start, start+n): u1 and u2 as planar_pairs, then for a dielectric the
+// plane of u3 (0.5 in the unused rest).
+std::vector<float> planar_uniforms(const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
+                                   std::uint64_t capacity)
+{
+    std::vector<float> planes = planar_pairs(in.uniforms, start, n, capacity);
+    if (in.lobe_uniforms.empty())
+        return planes;
+    planes.resize(3 * capacity, 0.5f);
+    std::copy_n(in.lobe_uniforms.begin() + std::ptrdiff_t(start), n, planes.begin() + std::ptrdiff_t(2 * capacity));
+    return planes;
+}
+
 // Device buffers for the per-sample inputs of one chunk, refilled per chunk.
 struct ChunkInputs {
     DeviceInputs buffers;
@@ -69,7 +82,7 @@ struct ChunkInputs {
         if (!in.views.empty()) buffers.view = make(3);
         if (!in.alphas.empty()) buffers.alpha = make(2);
         if (!in.normals.empty()) buffers.normal = make(3);
-        if (!in.uniforms.empty()) buffers.uniforms = make(2);
+        if (!in.uniforms.empty()) buffers.uniforms = make(in.lobe_uniforms.empty() ? 2 : 3);
     }
 
     void upload(cl::CommandQueue& queue, const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
@@ -78,7 +91,7 @@ struct ChunkInputs {
         if (!in.views.empty()) write(queue, buffers.view, planar_units(in.views, start, n, capacity));
         if (!in.alphas.empty()) write(queue, buffers.alpha, planar_pairs(in.alphas, start, n, capacity));
         if (!in.normals.empty()) write(queue, buffers.normal, planar_units(in.normals, start, n, capacity));
-        if (!in.uniforms.empty()) write(queue, buffers.uniforms, planar_pairs(in.uniforms, start, n, capacity));
+        if (!in.uniforms.empty()) write(queue, buffers.uniforms, planar_uniforms(in, start, n, capacity));
     }
 
     static void write(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float>& data)
@@ -117,13 +130,13 @@ struct QueueDrain {
 // says the copies or maps are complete.
 class ChunkSlot {
 public:
-    ChunkSlot(const cl::Context& context, FieldSet fields, std::uint64_t capacity, bool map)
-        : fields_(fields), capacity_(capacity), map_(map)
+    ChunkSlot(const cl::Context& context, FieldSet fields, std::uint64_t capacity, bool map, bool dielectric)
+        : fields_(fields), capacity_(capacity), map_(map), dielectric_(dielectric)
     {
         for (Field f : all_fields)
             if (fields.has(f))
                 out_.of(f) = detail::device_buffer(context, map ? CL_MEM_READ_WRITE | CL_MEM_ALLOC_HOST_PTR : CL_MEM_WRITE_ONLY,
-                                                  bytes(field_columns(f) * capacity));
+                                                  bytes(columns(f) * capacity));
     }
 
     DeviceOutputs& outputs() { return out_; }
@@ -140,9 +153,9 @@ public:
                 continue;
             if (map_)
                 mapped_[int(f)] = static_cast<float*>(
-                    queue.enqueueMapBuffer(out_.of(f), CL_FALSE, CL_MAP_READ, 0, bytes(field_columns(f) * capacity_)));
+                    queue.enqueueMapBuffer(out_.of(f), CL_FALSE, CL_MAP_READ, 0, bytes(columns(f) * capacity_)));
             else
-                read_planes(queue, out_.of(f), field_columns(f), n, capacity_, host_.column_source(f));
+                read_planes(queue, out_.of(f), columns(f), n, capacity_, host_.column_source(f));
         }
         queue.enqueueMarkerWithWaitList(nullptr, &ready_);
         queue.flush();
@@ -172,9 +185,11 @@ public:
     }
 
 private:
+    int columns(Field f) const { return field_columns(f, dielectric_); }
+
     FieldSet fields_;
     std::uint64_t capacity_, count_ = 0;
-    bool map_;
+    bool map_, dielectric_;
     DeviceOutputs out_;
     SampleSet host_;
     float* mapped_[all_fields.size()] = {};
@@ -220,7 +235,9 @@ void Sampler::run_chunks(const detail::ValidatedParams& params, const SampleRang
         std::uint64_t start = 0, chunk = fitted_capacity(max_alloc_, chunk_size_, range.count, 3);
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
             // Two slots: the device draws and fetches chunk k + 1 while the sink takes chunk k.
-            ChunkSlot slots[2] = {ChunkSlot(context_, fields, capacity, map), ChunkSlot(context_, fields, capacity, map)};
+            const bool dielectric = (*params).eta != 0.0f;
+            ChunkSlot slots[2] = {ChunkSlot(context_, fields, capacity, map, dielectric),
+                                  ChunkSlot(context_, fields, capacity, map, dielectric)};
             ChunkInputs inputs(context_, per_sample, *params, capacity);
             QueueDrain drain{queue_};      // before the slots go, whatever ends the pass
             std::uint64_t next = start;    // the first sample not yet enqueued
@@ -304,14 +321,16 @@ SampleSet Sampler::generate_validated(const detail::ValidatedParams& params, con
 {
     SampleSet all;
     all.count = range.count;
+    const bool dielectric = (*params).eta != 0.0f;
     auto copy_chunk = [&](const SampleView&, const SampleSet* chunk, std::uint64_t offset) {
         for (Field f : all_fields) {
             if (!fields.has(f))
                 continue;
             std::vector<float>& whole = all.column_source(f);
+            const int columns = field_columns(f, dielectric);
             if (whole.empty())  // the first chunk: the whole arrays are allocated once a chunk arrives
-                whole.resize(field_columns(f) * range.count);
-            for (int c = 0; c < field_columns(f); ++c)
+                whole.resize(columns * range.count);
+            for (int c = 0; c < columns; ++c)
                 std::copy_n(chunk->column_source(f).data() + c * chunk->count, chunk->count,
                             whole.data() + c * range.count + offset);
         }

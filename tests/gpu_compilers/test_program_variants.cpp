@@ -89,13 +89,17 @@ TEST_CASE("every pair of values that a reachable bulk variant can hold appears")
     CHECK(covered.count({index("GGX_PER_SAMPLE_NORMAL"), 0, index("GGX_NORMAL_IS_Z"), 1}) == 1);
     CHECK(covered.count({index("GGX_PER_SAMPLE_NORMAL"), 1, index("GGX_NORMAL_IS_Z"), 1}) == 0);
     CHECK(covered.count({iso, 0, world, 1}) == 0);
+    CHECK(covered.count({method, int(Method::bounded), index("GGX_DIELECTRIC"), 1}) == 0);
+    CHECK(covered.count({method, int(Method::caps), index("GGX_IMPORTANCE"), 1}) == 1);
     // The number of pairs: all value pairs less those that break a rule of variant_is_reachable.
     std::size_t all = 0;
     for (std::size_t a = 0; a < options.size(); ++a)
         for (std::size_t b = a + 1; b < options.size(); ++b)
             if (options[a].name.rfind("histogram.", 0) != 0 && options[b].name.rfind("histogram.", 0) != 0)
                 all += std::size_t(options[a].value_count * options[b].value_count);
-    const std::size_t excluded = 1 /* iso 0, world 1 */ + 1 /* caps-iso, iso 0 */ + 1 /* normal 1, is_z 1 */;
+    const std::size_t excluded = 1 /* iso 0, world 1 */ + 1 /* caps-iso, iso 0 */ + 1 /* normal 1, is_z 1 */ +
+                                 1 /* dielectric 0, importance 1 */ + 1 /* bounded, dielectric 1 */ +
+                                 1 /* bounded, importance 1 (needs a dielectric) */;
     std::size_t bulk_pairs = 0;
     for (const auto& p : covered)
         bulk_pairs += options[std::size_t(std::get<0>(p))].name.rfind("histogram.", 0) != 0 &&
@@ -114,7 +118,7 @@ TEST_CASE("a request's variant is reachable and gives its options")
     CHECK(variant_defines(v) ==
           "-DGGX_METHOD=3 -DGGX_WRITE_MASK=5 -DGGX_SEQUENCE=0 -DGGX_PER_SAMPLE_VIEW=0 -DGGX_PER_SAMPLE_ALPHA=0 "
           "-DGGX_PER_SAMPLE_NORMAL=0 -DGGX_PER_SAMPLE_UNIFORMS=0 -DGGX_ISOTROPIC=1 -DGGX_BELOW_HORIZON=0 "
-          "-DGGX_WORLD_SPACE=0 -DGGX_GUARDS=1 -DGGX_NORMAL_IS_Z=1 -DGGX_EVAL=0");
+          "-DGGX_WORLD_SPACE=0 -DGGX_GUARDS=1 -DGGX_NORMAL_IS_Z=1 -DGGX_DIELECTRIC=0 -DGGX_IMPORTANCE=0 -DGGX_EVAL=0");
     p.alpha_y = 0.5f;
     p.view = {0.5f, 0.0f, -0.8f};
     v = variant_of(ProgramKind::bulk, p, 5, {}, false);

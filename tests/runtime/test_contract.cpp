@@ -51,7 +51,7 @@ std::string mismatches(const std::vector<std::string>& names, const Expected& ex
 Expected param_arguments(int first)
 {
     const char* names[GGX_PARAM_ARG_COUNT] = {"view_x",   "view_y",   "view_z",  "alpha_x",
-                                              "alpha_y",  "normal_x", "normal_y", "normal_z",
+                                              "alpha_y",  "normal_x", "normal_y", "normal_z", "eta",
                                               "view_in",  "alpha_in", "normal_in", "uniforms_in"};
     Expected e;
     for (int k = 0; k < GGX_PARAM_ARG_COUNT; ++k)

@@ -169,7 +169,7 @@ TEST_CASE("both counting strategies give the same counts: local atomics and bin 
     k.setArg(GGX_ARG_FIRST, cl_ulong(range.first));
     k.setArg(GGX_ARG_COUNT, cl_uint(range.count));
     k.setArg(GGX_ARG_STRIDE, cl_uint(per_item));
-    const float uniforms[GGX_PARAM_UNIFORM_COUNT] = {v.x, v.y, v.z, p.alpha_x, p.alpha_y, 0.0f, 0.0f, 1.0f};
+    const float uniforms[GGX_PARAM_UNIFORM_COUNT] = {v.x, v.y, v.z, p.alpha_x, p.alpha_y, 0.0f, 0.0f, 1.0f, 0.0f};
     for (int a = 0; a < GGX_PARAM_ARG_COUNT; ++a)
         if (a < GGX_PARAM_UNIFORM_COUNT)
             k.setArg(GGX_ARG_PARAMS + a, uniforms[a]);

@@ -16,8 +16,8 @@ enum class Field {
     o = 1,      // reflected direction, 3 floats
     pdf_m = 2,  // density of m per steradian
     pdf_o = 3,  // density of o per steradian
-    weight = 4, // f cos(o) / pdf(o) with Fresnel 1 and height-correlated G2; 0 when o is below the horizon
-    u = 5,      // the two uniforms (u1, u2) the sample was drawn from, 2 floats
+    weight = 4, // f cos(o) / pdf(o) with Fresnel 1 (or a dielectric's), height-correlated G2; 0 when wasted
+    u = 5,      // the uniforms (u1, u2) the sample was drawn from, 2 floats (3 with u3 for a dielectric)
 };
 
 inline constexpr std::array<Field, 6> all_fields = {Field::m,     Field::o,      Field::pdf_m,
@@ -26,6 +26,8 @@ inline constexpr std::array<Field, 6> all_fields = {Field::m,     Field::o,     
 std::string_view field_name(Field field);   // "m", "o", "pdf_m", "pdf_o", "weight", "u"
 Field parse_field(std::string_view name);   // throws InvalidArgument naming the allowed fields
 int field_columns(Field field);             // 3 for m and o, 2 for u, else 1
+// The same for a request: u has 3 columns (u1, u2, u3) for a dielectric (eta set).
+int field_columns(Field field, bool dielectric);
 std::string field_list();                   // "m, o, pdf_m, pdf_o, weight, u"
 
 // Fields parsed from a comma-separated list such as "m,o,pdf_m", in the given order.

@@ -53,6 +53,18 @@ std::string_view sequence_name(Sequence sequence);  // "philox", "sobol"
 Sequence parse_sequence(std::string_view name);     // throws InvalidArgument naming the sequences
 std::string sequence_description(Sequence sequence);  // how its uniforms are made, for sidecars
 
+// How a rough dielectric's transmission is weighted (SampleParams::eta):
+//   radiance   - the BTDF of light carried from lights to the eye, divided
+//                by eta'^2 as it enters a medium of relative index eta'
+//                (pbrt-v4's TransportMode::Radiance): what a path tracer uses;
+//   importance - the adjoint, without that factor (light tracing, photons);
+//                its white furnace is the energy the interface conserves.
+enum class Transport { radiance = 0, importance = 1 };
+inline constexpr std::array<Transport, 2> all_transports = {Transport::radiance, Transport::importance};
+
+std::string_view transport_name(Transport transport);  // "radiance", "importance"
+Transport parse_transport(std::string_view name);      // throws InvalidArgument naming both
+
 // Parameters shared by every sample of a batch.
 struct SampleParams {
     Method method = Method::caps;
@@ -67,6 +79,17 @@ struct SampleParams {
     // normal (Duff et al. 2017) and transform in and out; caps-iso needs none.
     // Isotropic only (alpha_x == alpha_y): the normal alone fixes no tangent.
     bool world_space = false;
+    // A rough dielectric instead of a mirror-like conductor: eta = 0 (the
+    // default) reflects with Fresnel 1; eta > 0, eta != 1 is the index below
+    // the surface over the index above.  Each sample then reflects with
+    // probability F(i.m) (the exact dielectric Fresnel) and refracts
+    // otherwise, drawing a third uniform for the choice; o is the direction
+    // drawn, pdf_o its density over the whole sphere with the lobe's
+    // probability, weight f |cos| / pdf_o in `transport`.  A view below the
+    // surface sees it from the other side (index 1/eta).  Every method but
+    // bounded (whose cap omits normals that refract: docs/MATH.md).
+    float eta = 0.0f;
+    Transport transport = Transport::radiance;
     // Outside its domain (a roughness of 0, the view exactly opposite the
     // normal, ...) every method returns the fallback m = o = n, pdfs and
     // weight 0 (docs/STABILITY.md).  What these guards cost is
@@ -98,6 +121,7 @@ struct PerSampleInputs {
     std::vector<std::array<float, 2>> alphas;    // (alpha_x, alpha_y)
     std::vector<Vec3> normals;
     std::vector<std::array<float, 2>> uniforms;  // the caller's (u1, u2), each in [0, 1)
+    std::vector<float> lobe_uniforms;            // with eta and uniforms: the caller's u3 in [0, 1)
 };
 
 // The view from polar angle theta and azimuth phi in degrees:
@@ -106,7 +130,7 @@ Vec3 view_from_angles(double theta_degrees, double phi_degrees);
 
 // Throws InvalidArgument unless the parameters are usable: alpha finite
 // and > 0, view and normal finite and of non-zero length, isotropic alpha
-// for caps-iso.  Views and normals are normalized by the caller's choice:
+// for caps-iso, eta 0 or finite, > 0 and != 1 (and 0 for bounded).  Views and normals are normalized by the caller's choice:
 // normalized() returns a copy with unit vectors.
 void validate(const SampleParams& params);
 SampleParams normalized(const SampleParams& params);
@@ -124,7 +148,8 @@ void validate(const SampleRange& range);
 float uniform_to_float(double u);
 
 // Each non-empty per-sample vector must hold `count` entries of valid values
-// (uniforms finite and in [0, 1): the error names the first bad index).
+// (uniforms finite and in [0, 1): the error names the first bad index);
+// lobe_uniforms go with uniforms exactly when params.eta is set.
 void validate(const PerSampleInputs& inputs, const SampleParams& params, std::uint64_t count);
 
 // What a request needs, which selects the program variant (see build options):

@@ -88,13 +88,19 @@ struct Histogram {
     std::uint64_t total() const;
 };
 
-// Sums of the white-furnace estimator weights (Fresnel 1) of a range of
-// samples: their mean estimates the directional albedo of the surface.
+// Sums of the white-furnace estimator weights (Fresnel 1, or a
+// dielectric's) of a range of samples: their mean estimates the directional
+// albedo of the surface.  For a dielectric (SampleParams::eta) the weights
+// of reflected samples (o on the view's side) are also summed apart: the
+// mean splits into reflectance + transmittance.
 struct FurnaceSums {
     std::uint64_t count = 0;
     double sum = 0.0, sum_of_squares = 0.0;
-    double mean() const;      // the albedo estimate
-    double variance() const;  // per-sample variance of the weight
+    double reflected_sum = 0.0;  // dielectrics: the reflected samples' weights (else 0)
+    double mean() const;           // the albedo estimate
+    double variance() const;       // per-sample variance of the weight
+    double reflectance() const;    // reflected_sum / count
+    double transmittance() const;  // (sum - reflected_sum) / count
 };
 
 // Threads: every member of a Sampler may be called from several threads at
@@ -211,7 +217,8 @@ public:
 
     // Enqueues it for one range (count <= 2^31): `sums` receives
     // 2 * furnace_items(count) floats, the partial weight sums of the
-    // work-items, then their partial sums of squared weights.  The kernel
+    // work-items, then their partial sums of squared weights; for a
+    // dielectric 3 * furnace_items(count), then those of reflected samples.  The kernel
     // applies the fallbacks of docs/STABILITY.md and so runs slower than
     // furnace(), which draws without them and redraws a launch with them only
     // when one of its sums is not finite.

@@ -1,0 +1,187 @@
+// ggx_dielectric.h - rough dielectrics (Walter et al. 2007) with every
+// sampler of normals: a sampled m reflects the view with probability
+// F(i.m), the exact dielectric Fresnel, and refracts it otherwise.
+//   ggx_sample_dielectric_method(method, n, i, ax, ay, eta, radiance, u1, u2, u3)
+//   ggx_pdf_dielectric_method(method, n, i, o, ax, ay, eta)
+// (tangent space; n is read by caps-iso) and their world-space forms in
+// ggx_world.h.  eta: index below the surface over index above, > 0 and
+// != 1; radiance = 1 for radiance transport (a transmission's weight divided
+// by eta^2), 0 for importance.  u3 chooses the lobe.  A sample's o is the
+// direction drawn, reflected or transmitted; pdf_o its density over the
+// whole sphere with the lobe's probability (F p_r(o) or (1 - F) p_t(o));
+// weight = f |o.n| / pdf_o; pdf_m the method's density of m.  An invalid
+// sample (i.m <= 0, or o on the wrong side) has pdf_o = weight = 0.
+// A view below the surface (i.n < 0) sees the interface from the other side:
+// the frame is mirrored through the surface (i -> i - 2 (i.n) n), eta becomes
+// 1/eta, and m and o are mirrored back (m then faces the view's side, and
+// the fallback sample is m = o = the normal on the view's side).
+// bounded has no exact dielectric form (its cap omits normals that refract
+// fine: docs/MATH.md "Rough dielectrics"): it gives the fallback sample and
+// pdf 0.  docs/MATH.md states the math.
+#ifndef GGX_DIELECTRIC_H
+#define GGX_DIELECTRIC_H
+
+#include "ggx_samplers.h"
+
+// v mirrored through the plane of the unit normal n: v - 2 (v.n) n.
+GGX_INLINE ggx_vec3 ggx_mirror_through(ggx_vec3 v, ggx_vec3 n)
+{
+    return ggx_add(v, ggx_scale(n, -2.0f * ggx_dot(v, n)));
+}
+
+// The unit w in the local coordinates the roughness functions take: w itself
+// in tangent space (n = z), or, for an isotropic surface about a world-space n
+// (about_n = 1), (|w_t|, 0, w.n): D and Lambda depend on nothing else there.
+GGX_INLINE ggx_vec3 ggx_local_of(ggx_vec3 w, ggx_vec3 n, int about_n)
+{
+    if (!about_n)
+        return w;
+    const float wn = ggx_dot(w, n);
+    return ggx_vec3_make(ggx_sqrt(ggx_tangential2(w, n, wn)), 0.0f, wn);
+}
+
+// Snell's law through m for c = i.m > 0 below the critical angle: with
+// d = (eta - 1)(eta + 1), cos_t = sqrt(d + c^2) / eta (the form of
+// ggx_fresnel_dielectric, without cancellation) and
+// o = -i / eta + (c / eta - cos_t) m, so o.m = -cos_t (Walter et al. eq. 40).
+GGX_INLINE ggx_vec3 ggx_refract(ggx_vec3 i, ggx_vec3 m, float c, float eta, float cos_t)
+{
+    const float inv_eta = 1.0f / eta;
+    return ggx_add(ggx_scale(i, -inv_eta), ggx_scale(m, c * inv_eta - cos_t));
+}
+
+GGX_INLINE float ggx_refracted_cosine(float c, float eta)
+{
+    const float d = (eta - 1.0f) * (eta + 1.0f);
+    return ggx_sqrt(ggx_fmax(d + c * c, 0.0f)) / eta;
+}
+
+// The Jacobian |dm/do| of a refraction, eta^2 |o.m| / (i.m + eta o.m)^2 with
+// o.m = -cos_t, written without the cancellation of c - eta cos_t near
+// eta = 1: c - eta cos_t = -d / (c + eta cos_t).
+GGX_INLINE float ggx_refraction_jacobian(float c, float eta, float cos_t)
+{
+    const float d = (eta - 1.0f) * (eta + 1.0f);
+    const float sum = c + eta * cos_t;
+    return eta * eta * cos_t * (sum * sum) / (d * d);
+}
+
+// The density of the normal m for the method's family: D(m) mz for ndf
+// (Walter et al. eq. 24), the VNDF 2 (i.m) D(m) / (iz + t(i)) otherwise
+// (Heitz 2018 eq. 1); i_local, m_local as ggx_local_of gives, c = i.m > 0.
+GGX_INLINE float ggx_normal_density(int ndf, ggx_vec3 i_local, ggx_vec3 m_local, float c, float ax, float ay)
+{
+    const float D = ggx_D(m_local, ax, ay);
+    if (ndf)
+        return D * m_local.z;
+    const float inv = ggx_inv_iz_plus_t(i_local.z, ggx_t(i_local, ax, ay), ax, ay, i_local);
+    return 2.0f * c * D * inv;
+}
+
+// f |o.n| / pdf_o of a transmission through m (Walter et al. eqs. 21, 38-41;
+// SPEC "Rough dielectrics"), the even Lambda for o below: G2 (i.m) / (iz mz)
+// for ndf, G2 / G1(i) for the VNDF methods; radiance divides by eta^2.
+GGX_INLINE float ggx_transmission_weight(int ndf, ggx_vec3 i_local, ggx_vec3 o_local, ggx_vec3 m_local, float c,
+                                         float ax, float ay, float eta, int radiance)
+{
+    const ggx_vec3 o_up = ggx_vec3_make(o_local.x, o_local.y, -o_local.z);
+    const float iz = i_local.z, ti = ggx_t(i_local, ax, ay);
+    const float g2 = ggx_G2_from_t(iz, o_up.z, ti, ggx_t(o_up, ax, ay));
+    const float weight = ndf ? g2 * c / (iz * m_local.z) : g2 * (iz + ti) / (2.0f * iz);
+    const float scaled = radiance ? weight / (eta * eta) : weight;
+    return iz > 0.0f ? scaled : 0.0f;
+}
+
+// The dielectric sample from the reflection sample s of a view i above the
+// surface (i.n >= 0; the sampler's m, pdf_m, reflected o, its pdf and weight).
+// s with pdf_o = 0 (the fallback, or a direction without density) keeps its m and o.
+GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, ggx_vec3 i, float ax, float ay,
+                                                     float eta, int radiance, float u3, int ndf, int about_n)
+{
+    const float c = ggx_dot(i, s.m);
+    const float F = ggx_fresnel_dielectric(ggx_fmax(c, 0.0f), eta);
+    ggx_sample out = s;
+    if (!(c > 0.0f && s.pdf_o > 0.0f)) {  // a back-facing m (ndf) transmits and reflects nothing
+        out.pdf_o = 0.0f;
+        out.weight = 0.0f;
+        return out;
+    }
+    if (u3 < F) {  // reflection, with probability F (always under total internal reflection)
+        const int valid = ggx_dot(s.o, n) > 0.0f;  // a reflection stays on the view's side
+        out.pdf_o = valid ? F * s.pdf_o : 0.0f;
+        out.weight = valid ? s.weight : 0.0f;
+        return out;
+    }
+    const float cos_t = ggx_refracted_cosine(c, eta);
+    out.o = ggx_refract(i, s.m, c, eta, cos_t);
+    const int valid = ggx_dot(out.o, n) < 0.0f;  // a transmission crosses the surface
+    const ggx_vec3 i_local = ggx_local_of(i, n, about_n), m_local = ggx_local_of(s.m, n, about_n);
+    const float weight =
+        ggx_transmission_weight(ndf, i_local, ggx_local_of(out.o, n, about_n), m_local, c, ax, ay, eta, radiance);
+    out.pdf_o = valid ? (1.0f - F) * s.pdf_m * ggx_refraction_jacobian(c, eta, cos_t) : 0.0f;
+    out.weight = valid ? weight : 0.0f;
+    return out;
+}
+
+// The density of o for a view i above the surface (i.n >= 0), both lobes:
+// F(i.h) times the method's reflection pdf for o above; for o below, the
+// generalized half vector m = -(i + eta o) turned to face n, valid where
+// i.m > 0 and o.m < 0, with (1 - F(i.m)) pdf_m(m) |dm/do|.
+GGX_INLINE float ggx_dielectric_pdf_above(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay,
+                                          float eta, float reflection_pdf, int about_n)
+{
+    const float on = ggx_dot(o, n);
+    if (on > 0.0f)
+        return ggx_fresnel_dielectric(ggx_fmax(ggx_dot(i, ggx_half_vector(i, o)), 0.0f), eta) * reflection_pdf;
+    ggx_vec3 m = ggx_add(i, ggx_scale(o, eta));
+    const float len2 = ggx_dot(m, m);
+    m = ggx_scale(m, (ggx_dot(m, n) > 0.0f ? 1.0f : -1.0f) * (len2 > 0.0f ? ggx_rsqrt(len2) : 0.0f));
+    const float c = ggx_dot(i, m), om = ggx_dot(o, m);
+    if (!(on < 0.0f && c > 0.0f && om < 0.0f))
+        return 0.0f;
+    const float density = ggx_normal_density(method == GGX_METHOD_NDF, ggx_local_of(i, n, about_n),
+                                              ggx_local_of(m, n, about_n), c, ax, ay);
+    const float cos_t = -om, sum = c + eta * om;
+    return (1.0f - ggx_fresnel_dielectric(c, eta)) * density * eta * eta * cos_t / (sum * sum);
+}
+
+// A dielectric sample of `method` in tangent space (caps-iso: about n).
+GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay, float eta,
+                                                   int radiance, float u1, float u2, float u3)
+{
+    const int about_n = GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO);
+    const ggx_vec3 up = about_n ? n : ggx_vec3_make(0.0f, 0.0f, 1.0f);
+    const int below = ggx_dot(i, up) < 0.0f;
+    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
+        return ggx_fallback_sample(up);
+    const ggx_vec3 i_above = below ? ggx_mirror_through(i, up) : i;
+    const float eta_side = below ? 1.0f / eta : eta;
+    ggx_sample s = ggx_sample_method(method, n, i_above, ax, ay, u1, u2);
+    s = ggx_dielectric_from_reflection(s, up, i_above, ax, ay, eta_side, radiance, u3,
+                                       GGX_IS_METHOD(method, GGX_METHOD_NDF), about_n);
+    if (below) {
+        s.m = ggx_mirror_through(s.m, up);
+        s.o = ggx_mirror_through(s.o, up);
+    }
+    return s;
+}
+
+// The density of o for `method`'s dielectric sampler, recomputed from (i, o) alone.
+GGX_INLINE float ggx_pdf_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay,
+                                           float eta)
+{
+    const int about_n = GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO);
+    const ggx_vec3 up = about_n ? n : ggx_vec3_make(0.0f, 0.0f, 1.0f);
+    const int below = ggx_dot(i, up) < 0.0f;
+    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
+        return 0.0f;
+    const ggx_vec3 i_above = below ? ggx_mirror_through(i, up) : i;
+    const ggx_vec3 o_side = below ? ggx_mirror_through(o, up) : o;
+    const float eta_side = below ? 1.0f / eta : eta;
+    const float reflection_pdf = ggx_pdf_method(method, n, i_above, o_side, ax, ay);
+    const float pdf =
+        ggx_dielectric_pdf_above(method, up, i_above, o_side, ax, ay, eta_side, reflection_pdf, about_n);
+    return ggx_guard_pdf(pdf, ax, ay);
+}
+
+#endif

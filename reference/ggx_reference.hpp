@@ -82,5 +82,15 @@ uint32_t owen_scramble(uint32_t word, uint32_t key);
 std::array<uint32_t, 2> sobol_words(uint32_t seed, uint64_t index);
 std::array<double, 2> uniforms(uint64_t seed, uint64_t index);        // Philox
 std::array<double, 2> sobol_uniforms(uint64_t seed, uint64_t index);  // the scrambled Sobol points
+// A dielectric's third uniform u3 (the lobe choice; kernels/ggx_sobol.h, ggx_philox.h): Sobol's third
+// dimension (primitive polynomial x^2 + x + 1, m_1 = 1, m_2 = 3) of point k = index mod 2^32: its 32
+// direction numbers v_1 .. v_32 as 32-bit fractions, the unscrambled point, and the point scrambled
+// as the first two with the key of dimension 2; or word 0 of Philox2x32-10 with key = seed and
+// counter (index lo, index hi xor 2^31). u3 = top 24 bits times 2^-24.
+std::array<uint32_t, 32> sobol_third_directions();
+uint32_t sobol_third_point(uint32_t k);
+uint32_t sobol_third_word(uint32_t seed, uint64_t index);
+double lobe_uniform_sobol(uint64_t seed, uint64_t index);
+double lobe_uniform_philox(uint64_t seed, uint64_t index);
 
 }  // namespace ggxref

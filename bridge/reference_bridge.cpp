@@ -4,6 +4,7 @@
 #include "ggx_quadrature.hpp"
 
 #include <array>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -61,8 +62,26 @@ std::vector<double> bin_probabilities(ggxcl::Method method, const ggxcl::SampleP
 {
     const ggxref::Method m = reference_method(method);
     const ggxref::Params p = reference_params(params);
+    if (params.eta != 0.0f) {
+        if (direction != ggxcl::Field::o)
+            throw ggxcl::InvalidArgument("direction", std::string(ggxcl::field_name(direction)),
+                                         "o for a dielectric (eta): the directions drawn over the whole sphere");
+        return ggxref::dielectric_bin_probabilities(m, p, params.eta, bins_z, bins_phi);
+    }
     return direction == ggxcl::Field::m ? ggxref::bin_probabilities_m(m, p, bins_z, bins_phi)
                                         : ggxref::bin_probabilities(m, p, bins_z, bins_phi);
+}
+
+ggxref::ChiSquare histogram_fit(const ggxcl::Histogram& histogram, const std::vector<double>& probabilities,
+                                bool dielectric)
+{
+    if (!dielectric)
+        return ggxref::chi_square_gof_float(histogram.counts, probabilities);
+    std::vector<std::uint64_t> counts = histogram.counts;
+    std::vector<double> expected = probabilities;
+    counts.push_back(histogram.invalid);
+    expected.push_back(std::max(0.0, 1.0 - std::accumulate(probabilities.begin(), probabilities.end(), 0.0)));
+    return ggxref::chi_square_gof_float(counts, expected);
 }
 
 } // namespace ggxbridge

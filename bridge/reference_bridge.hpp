@@ -10,6 +10,7 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "ggx_reference.hpp"
+#include "ggx_stats.hpp"
 
 namespace ggxbridge {
 
@@ -25,8 +26,15 @@ ggxcl::SampleParams library_params(ggxref::Method method, const ggxref::Params& 
 
 // The probability of each bin of a device histogram of `direction` (o or m)
 // under `method`'s pdf at the (normalized) params: what `ggx histogram` and
-// the Python Sampler.histogram test their counts against.
+// the Python Sampler.histogram test their counts against.  With params.eta
+// (a dielectric) the directions o over the whole sphere, both lobes.
 std::vector<double> bin_probabilities(ggxcl::Method method, const ggxcl::SampleParams& params, int bins_z,
                                       int bins_phi, ggxcl::Field direction);
+
+// The chi-square test of a device histogram against bin_probabilities: its bins, and for a
+// dielectric one more category, the invalid samples (Histogram::invalid), whose probability is
+// what the bins leave of 1.
+ggxref::ChiSquare histogram_fit(const ggxcl::Histogram& histogram, const std::vector<double>& probabilities,
+                                bool dielectric);
 
 } // namespace ggxbridge

@@ -16,8 +16,10 @@
 // (1 bins m, 0 bins o), plus those of ggx_bulk_params.h.
 // Bin of a unit d: z bin floor((dz + 1)/2 nz), phi bin k for phi in
 // [2 pi k/nphi, 2 pi (k+1)/nphi), phi the angle of (dx, dy) in [0, 2 pi)
-// (atan2's, with -0 as 0); index z_bin * nphi + phi_bin.  The extra last
-// counter holds samples whose direction is not finite.
+// (atan2's, with -0 as 0); index z_bin * nphi + phi_bin.  Two counters
+// follow the bins: samples whose direction is not finite, and a dielectric's
+// invalid samples (pdf_o = 0: no density anywhere, so no bin expects them).
+// A conductor bins every o, its wasted reflections below the surface too.
 #include "ggx_bulk_params.h"
 
 #if !defined(GGX_METHOD) || !defined(GGX_BINS_Z) || !defined(GGX_BINS_PHI)
@@ -27,6 +29,7 @@
 #define GGX_BIN_M 0
 #endif
 #define GGX_BINS (GGX_BINS_Z * GGX_BINS_PHI)
+#define GGX_COUNTERS (GGX_BINS + 2)
 
 // The angle of (x, y) in [0, 2 pi) within 1e-5 rad: atan of min/max on
 // [0, 1] by a polynomial, then the octant.  No call: it vectorizes.
@@ -81,16 +84,17 @@ GGX_INLINE uint ggx_sample_bin(ulong seed, ulong first, uint j, uint count, GGX_
 {
     ggx_params p = ggx_load_params(j, count, GGX_PARAM_VALUES);
     ggx_sample s = ggx_bulk_sample(seed, first, j, p);
-    return ggx_bin_of(GGX_BIN_M ? s.m : s.o);
+    const uint bin = ggx_bin_of(GGX_BIN_M ? s.m : s.o);
+    return (GGX_DIELECTRIC && !GGX_BIN_M && !(s.pdf_o > 0.0f)) ? (uint)GGX_BINS + 1u : bin;
 }
 
 // Work-group g counts samples [g * size * per_item, (g + 1) * size * per_item) of the launch.
 __kernel void ggx_histogram(ulong seed, ulong first, uint count, uint per_item, GGX_PARAM_ARGS,
                             __global uint* counts)
 {
-    __local uint local_counts[GGX_BINS + 1];
+    __local uint local_counts[GGX_COUNTERS];
     uint size = get_local_size(0), lid = get_local_id(0);
-    for (uint b = lid; b <= GGX_BINS; b += size)
+    for (uint b = lid; b < GGX_COUNTERS; b += size)
         local_counts[b] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
     uint base = get_group_id(0) * size * per_item;
@@ -100,7 +104,7 @@ __kernel void ggx_histogram(ulong seed, ulong first, uint count, uint per_item, 
             atomic_inc(&local_counts[ggx_sample_bin(seed, first, j, count, GGX_PARAM_VALUES)]);
     }
     barrier(CLK_LOCAL_MEM_FENCE);
-    for (uint b = lid; b <= GGX_BINS; b += size)
+    for (uint b = lid; b < GGX_COUNTERS; b += size)
         if (local_counts[b] != 0u)
             atomic_add(&counts[b], local_counts[b]);
 }
@@ -124,14 +128,14 @@ __kernel void ggx_histogram_bins_tail(ulong seed, ulong first, uint count, uint 
 // Work-item g (alone in its work-group) counts bins[g * per_item, (g + 1) * per_item) of count.
 __kernel void ggx_histogram_count(__global const uint* bins, uint count, uint per_item, __global uint* counts)
 {
-    __local uint local_counts[GGX_BINS + 1];
-    for (uint b = 0; b <= GGX_BINS; ++b)
+    __local uint local_counts[GGX_COUNTERS];
+    for (uint b = 0; b < GGX_COUNTERS; ++b)
         local_counts[b] = 0u;
     uint begin = get_global_id(0) * per_item;
     uint end = min(count, begin + per_item);
     for (uint j = begin; j < end; ++j)
         ++local_counts[bins[j]];
-    for (uint b = 0; b <= GGX_BINS; ++b)
+    for (uint b = 0; b < GGX_COUNTERS; ++b)
         if (local_counts[b] != 0u)
             atomic_add(&counts[b], local_counts[b]);
 }

@@ -22,8 +22,8 @@ std::string file_name(const std::string& path)
     return path.substr(path.rfind('/') + 1);
 }
 
-nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, const ggxref::ChiSquare& fit,
-                       double seconds)
+nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, const ggxcl::Histogram& counts,
+                       const ggxref::ChiSquare& fit, double seconds)
 {
     nlohmann::json doc = describe_sampling(job.params, job.theta_degrees, job.phi_degrees, job.range);
     doc["expected_from_pdf_of"] = std::string(ggxcl::method_name(job.against));
@@ -33,6 +33,11 @@ nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, c
     doc["dof"] = fit.dof;
     doc["p_value"] = fit.p_value;
     doc["bins_used"] = fit.bins_used;
+    if (job.params.eta != 0.0f) {
+        doc["invalid_samples"] = counts.invalid;
+        doc["invalid"] = "samples without density (a reflection that left the view's side, a transmission that did "
+                         "not cross), tested as one more category against what the bins leave of 1";
+    }
     doc["pooling"] = "bins expecting fewer than 5 samples are pooled into one";
     doc["observed"] = file_name(job.prefix) + ".observed.npy";
     doc["expected"] = file_name(job.prefix) + ".expected.npy";
@@ -69,14 +74,14 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
     auto start = std::chrono::steady_clock::now();
     ggxcl::Histogram counts = sampler.histogram(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ggxref::ChiSquare fit = ggxref::chi_square_gof_float(counts.counts, probabilities);
+    ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
 
     std::vector<double> observed(counts.counts.begin(), counts.counts.end()), expected(probabilities.size());
     for (std::size_t b = 0; b < expected.size(); ++b)
         expected[b] = probabilities[b] * double(job.range.count);
     write_npy_f64(job.prefix + ".observed.npy", job.bins_z, job.bins_phi, observed);
     write_npy_f64(job.prefix + ".expected.npy", job.bins_z, job.bins_phi, expected);
-    nlohmann::json doc = summary(sampler, job, fit, seconds);
+    nlohmann::json doc = summary(sampler, job, counts, fit, seconds);
     write_text_file(job.prefix + ".json", doc.dump(2) + "\n");
 
     HistogramResult result{fit.statistic, fit.p_value, double(job.range.count) / seconds, fit.dof, ""};

@@ -35,7 +35,7 @@ constexpr int max_phi_bins = 1 << 16;
 
 void check_bins(int bins_z, int bins_phi, Field direction, std::size_t local_bytes)
 {
-    std::size_t most = local_bytes / sizeof(cl_uint) - 1;
+    std::size_t most = local_bytes / sizeof(cl_uint) - 2;  // and the two counters after the bins
     if (bins_z < 1 || bins_phi < 1 || std::size_t(bins_z) * bins_phi > most)
         throw InvalidArgument("bins", std::to_string(bins_z) + "x" + std::to_string(bins_phi),
                               "at least 1x1 and at most " + std::to_string(most) +
@@ -58,7 +58,7 @@ struct Sampler::HistogramRun {
     const SampleRange& range;
     std::size_t bins;
     std::string options;
-    cl::Buffer counts;   // bins + 1 counters, zeroed before each pass
+    cl::Buffer counts;   // bins + 2 counters (non-finite, invalid), zeroed before each pass
     cl::Buffer indices;  // CPU strategy: a pass's bin indices
     std::uint32_t counters = 1;  // CPU strategy: work-groups of one that count a pass
 
@@ -67,7 +67,7 @@ struct Sampler::HistogramRun {
                  bool by_indices, std::uint64_t pass)
         : sampler(s), params(p), range(r), bins(bin_count), options(std::move(opts))
     {
-        counts = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, (bins + 1) * sizeof(cl_uint));
+        counts = detail::device_buffer(sampler.context_, CL_MEM_READ_WRITE, (bins + 2) * sizeof(cl_uint));
         if (!by_indices)
             return;
         const std::uint64_t n = std::min(pass, range.count);
@@ -93,13 +93,13 @@ struct Sampler::HistogramRun {
         // Zeroed by a write, not clEnqueueFillBuffer: Oclgrind's checker takes
         // filled memory as uninitialized (shown by a minimal kernel in test_oclgrind).
         const std::vector<cl_uint> zeros(bins + 1, 0u);
-        detail::write_and_wait(sampler.queue_, counts, 0, (bins + 1) * sizeof(cl_uint), zeros.data());
+        detail::write_and_wait(sampler.queue_, counts, 0, (bins + 2) * sizeof(cl_uint), zeros.data());
     }
 
     std::vector<cl_uint> read_counts() const
     {
-        std::vector<cl_uint> host(bins + 1);
-        detail::read_and_wait(sampler.queue_, counts, 0, (bins + 1) * sizeof(cl_uint), host.data());
+        std::vector<cl_uint> host(bins + 2);
+        detail::read_and_wait(sampler.queue_, counts, 0, (bins + 2) * sizeof(cl_uint), host.data());
         return host;
     }
 
@@ -143,7 +143,7 @@ struct Sampler::HistogramRun {
 
 std::uint64_t Histogram::total() const
 {
-    return std::accumulate(counts.begin(), counts.end(), non_finite);
+    return std::accumulate(counts.begin(), counts.end(), non_finite + invalid);
 }
 
 Histogram Sampler::histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
@@ -157,7 +157,7 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
         const bool cpu = cpu_;
         const std::size_t bins = std::size_t(bins_z) * bins_phi;
         const std::string options = histogram_options(device_, unit, bins_z, bins_phi, direction);
-        Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0};
+        Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0, 0};
         // Passes of at most `pass` samples, halved when the device runs out of memory: the counts are
         // integers, the same however the range is cut.
         std::uint64_t start = 0, pass = std::min(cpu ? samples_per_index_pass : samples_per_launch, range.count);
@@ -169,6 +169,7 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
                 for (std::size_t b = 0; b < bins; ++b)
                     result.counts[b] += counts[b];
                 result.non_finite += counts[bins];
+                result.invalid += counts[bins + 1];
                 start += n;
             }
         });

@@ -76,9 +76,9 @@ std::vector<std::array<float, 2>> read_pairs(const py::handle& value, const char
     return out;
 }
 
-py::array_t<float> output_array(const py::object& out, ggxcl::Field field, std::size_t n)
+py::array_t<float> output_array(const py::object& out, ggxcl::Field field, std::size_t n, bool dielectric)
 {
-    const std::size_t columns = std::size_t(ggxcl::field_columns(field));
+    const std::size_t columns = std::size_t(ggxcl::field_columns(field, dielectric));
     const std::string name(ggxcl::field_name(field));
     if (out.is_none() || !out.contains(py::str(name)))
         return columns == 1 ? py::array_t<float>({py::ssize_t(n)}) : py::array_t<float>({py::ssize_t(n), py::ssize_t(columns)});

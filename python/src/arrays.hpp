@@ -30,6 +30,7 @@ std::vector<std::array<float, 2>> read_pairs(const pybind11::handle& value, cons
 
 // The output array of `field` for n samples: the caller's out[field]
 // (float32, C-contiguous, writeable, shape (n, columns) or (n,)) or a new one.
-pybind11::array_t<float> output_array(const pybind11::object& out, ggxcl::Field field, std::size_t n);
+pybind11::array_t<float> output_array(const pybind11::object& out, ggxcl::Field field, std::size_t n,
+                                       bool dielectric = false);
 
 } // namespace ggxpy

@@ -77,9 +77,12 @@ void add_enqueue(py::class_<ggxcl::Sampler>& sampler)
            const py::object& outputs, std::uint64_t seed, std::uint64_t first, std::uint32_t stride,
            const py::object& alpha, double theta, double phi, const py::object& view, const py::object& normal,
            const py::object& precision, const std::string& sequence, const py::object& inputs,
-           bool views_above_horizon, bool isotropic, const py::object& wait_for) {
+           bool views_above_horizon, bool isotropic, const py::object& wait_for, const py::object& eta,
+           const std::string& transport) {
             return enqueue(s, queue,
-                           args_of(method, n, alpha, theta, phi, view, normal, precision, sequence, py::none(), false),
+                           with_dielectric(args_of(method, n, alpha, theta, phi, view, normal, precision, sequence,
+                                                   py::none(), false),
+                                           eta, transport),
                            seed, first, stride, outputs, inputs, views_above_horizon, isotropic, wait_for);
         },
         py::arg("queue"), py::arg("method"), py::arg("n"), py::kw_only(), py::arg("outputs"), py::arg("seed") = 0,
@@ -87,9 +90,11 @@ void add_enqueue(py::class_<ggxcl::Sampler>& sampler)
         py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
         py::arg("precision") = py::none(), py::arg("sequence") = "philox", py::arg("inputs") = py::none(),
         py::arg("views_above_horizon") = false, py::arg("isotropic") = false, py::arg("wait_for") = py::none(),
+        py::arg("eta") = py::none(), py::arg("transport") = "radiance",
         "Enqueues samples first .. first + n - 1 into pyopencl Buffers (outputs={'m': buf, ...}, planar: plane c "
         "of a field at c * stride floats, stride 0 = n) on a pyopencl queue of this sampler's context; per-sample "
-        "inputs likewise (inputs={'view', 'alpha', 'normal', 'uniforms'}); returns a pyopencl.Event.");
+        "inputs likewise (inputs={'view', 'alpha', 'normal', 'uniforms'}; uniforms and u have 3 planes with eta); "
+        "returns a pyopencl.Event.");
 }
 
 } // namespace ggxpy

@@ -45,10 +45,10 @@ std::vector<ggxcl::Field> fields_of(const py::object& fields)
 }
 
 // Copies a planar chunk of `field` into rows [offset, offset + count) of `out`.
-void copy_rows(const ggxcl::SampleSet& chunk, ggxcl::Field field, std::uint64_t offset, float* out)
+void copy_rows(const ggxcl::SampleSet& chunk, ggxcl::Field field, bool dielectric, std::uint64_t offset, float* out)
 {
     const std::vector<float>& planes = chunk.column_source(field);
-    const int columns = ggxcl::field_columns(field);
+    const int columns = ggxcl::field_columns(field, dielectric);
     for (std::uint64_t j = 0; j < chunk.count; ++j)
         for (int c = 0; c < columns; ++c)
             out[(offset + j) * columns + c] = planes[c * chunk.count + j];
@@ -61,10 +61,11 @@ py::dict sample(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, 
         throw ggxcl::InvalidArgument("n", "0", "at least 1 sample");
     const Request r = make_request(args);
     const std::vector<ggxcl::Field> list = fields_of(fields);
+    const bool dielectric = r.params.eta != 0.0f;
     py::dict result;
     std::vector<std::pair<ggxcl::Field, float*>> targets;
     for (ggxcl::Field f : list) {
-        py::array_t<float> a = output_array(out, f, args.count);
+        py::array_t<float> a = output_array(out, f, args.count, dielectric);
         targets.push_back({f, a.mutable_data()});
         result[py::str(std::string(ggxcl::field_name(f)))] = a;
     }
@@ -73,7 +74,7 @@ py::dict sample(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, 
         s.generate_chunks(r.params, {seed, first, args.count}, ggxcl::FieldSet(list),
                           [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
                               for (const auto& [field, data] : targets)
-                                  copy_rows(chunk, field, offset, data);
+                                  copy_rows(chunk, field, dielectric, offset, data);
                               check_signals();
                           },
                           r.per_sample);
@@ -109,6 +110,10 @@ py::dict furnace(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed,
     result["mean"] = sums.mean();
     result["variance"] = sums.variance();
     result["count"] = sums.count;
+    if (r.params.eta != 0.0f) {
+        result["reflectance"] = sums.reflectance();
+        result["transmittance"] = sums.transmittance();
+    }
     return result;
 }
 
@@ -128,7 +133,7 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
         probabilities =
             ggxbridge::bin_probabilities(expected_of, ggxcl::normalized(r.params), bins_z, bins_phi, direction);
     }
-    const ggxref::ChiSquare fit = ggxref::chi_square_gof_float(counts.counts, probabilities);
+    const ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, r.params.eta != 0.0f);
     py::array_t<std::uint64_t> observed({bins_z, bins_phi});
     py::array_t<double> expected({bins_z, bins_phi});
     std::memcpy(observed.mutable_data(), counts.counts.data(), counts.counts.size() * sizeof(std::uint64_t));
@@ -141,6 +146,7 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     result["dof"] = fit.dof;
     result["p_value"] = fit.p_value;
     result["non_finite"] = counts.non_finite;
+    result["invalid"] = counts.invalid;
     return result;
 }
 
@@ -185,71 +191,85 @@ void register_sampler(py::module_& m)
             [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
                double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
                const py::object& fields, const py::object& precision, const std::string& sequence,
-               const py::object& uniforms, bool world_space, const py::object& out) {
-                return sample(s, args_of(method, n, alpha, theta, phi, view, normal, precision, sequence, uniforms,
-                                         world_space),
+               const py::object& uniforms, bool world_space, const py::object& out, const py::object& eta,
+               const std::string& transport) {
+                return sample(s,
+                              with_dielectric(args_of(method, n, alpha, theta, phi, view, normal, precision, sequence,
+                                                      uniforms, world_space),
+                                              eta, transport),
                               seed, first, fields, out);
             },
             py::arg("method"), py::arg("n"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(), py::arg("seed") = 0,
             py::arg("first") = 0, py::arg("fields") = py::make_tuple("m", "o", "pdf_m", "pdf_o", "weight"),
             py::arg("precision") = py::none(), py::arg("sequence") = "philox", py::arg("uniforms") = py::none(),
-            py::arg("world_space") = false, py::arg("out") = py::none())
+            py::arg("world_space") = false, py::arg("out") = py::none(), py::arg("eta") = py::none(),
+            py::arg("transport") = "radiance")
         .def(
             "pdf",
             [](ggxcl::Sampler& s, const std::string& method, const py::object& directions, const py::object& alpha,
                double theta, double phi, const py::object& view, const py::object& normal, const py::object& precision,
-               bool world_space) {
+               bool world_space, const py::object& eta) {
                 return of_directions(s,
-                                     args_of(method, 0, alpha, theta, phi, view, normal, precision, "philox",
-                                             py::none(), world_space),
+                                     with_dielectric(args_of(method, 0, alpha, theta, phi, view, normal, precision,
+                                                             "philox", py::none(), world_space),
+                                                     eta, "radiance"),
                                      directions, false);
             },
             py::arg("method"), py::arg("directions"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
-            py::arg("precision") = py::none(), py::arg("world_space") = false)
+            py::arg("precision") = py::none(), py::arg("world_space") = false, py::arg("eta") = py::none())
         .def(
             "eval",
             [](ggxcl::Sampler& s, const py::object& directions, const py::object& alpha, double theta, double phi,
-               const py::object& view, const py::object& normal, const py::object& precision, bool world_space) {
+               const py::object& view, const py::object& normal, const py::object& precision, bool world_space,
+               const py::object& eta, const std::string& transport) {
                 if (!normal.is_none() && !world_space)
                     throw ggxcl::InvalidArgument("normal", std::string(py::repr(normal)),
                                                  "None in tangent space (the normal is z), or world_space=True");
                 // The value is the same for every method: caps's program computes it.
                 return of_directions(s,
-                                     args_of("caps", 0, alpha, theta, phi, view, normal, precision, "philox",
-                                             py::none(), world_space),
+                                     with_dielectric(args_of("caps", 0, alpha, theta, phi, view, normal, precision,
+                                                             "philox", py::none(), world_space),
+                                                     eta, transport),
                                      directions, true);
             },
             py::arg("directions"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
-            py::arg("precision") = py::none(), py::arg("world_space") = false)
+            py::arg("precision") = py::none(), py::arg("world_space") = false, py::arg("eta") = py::none(),
+            py::arg("transport") = "radiance")
         .def(
             "furnace",
             [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
                double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
-               const py::object& precision, const std::string& sequence) {
-                return furnace(s, args_of(method, n, alpha, theta, phi, view, normal, precision, sequence, py::none(),
-                                          false),
+               const py::object& precision, const std::string& sequence, const py::object& eta,
+               const std::string& transport) {
+                return furnace(s,
+                               with_dielectric(args_of(method, n, alpha, theta, phi, view, normal, precision, sequence,
+                                                       py::none(), false),
+                                               eta, transport),
                                seed, first);
             },
             py::arg("method"), py::arg("n"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(), py::arg("seed") = 0,
-            py::arg("first") = 0, py::arg("precision") = py::none(), py::arg("sequence") = "philox")
+            py::arg("first") = 0, py::arg("precision") = py::none(), py::arg("sequence") = "philox",
+            py::arg("eta") = py::none(), py::arg("transport") = "radiance")
         .def(
             "histogram",
             [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
                double phi, const py::object& normal, std::uint64_t seed, std::uint64_t first, int bins_z, int bins_phi,
                const std::string& of, const py::object& against, const py::object& precision,
-               const std::string& sequence) {
-                return histogram(s, args_of(method, n, alpha, theta, phi, py::none(), normal, precision, sequence,
-                                            py::none(), false),
+               const std::string& sequence, const py::object& eta) {
+                return histogram(s,
+                                 with_dielectric(args_of(method, n, alpha, theta, phi, py::none(), normal, precision,
+                                                         sequence, py::none(), false),
+                                                 eta, "radiance"),
                                  seed, first, bins_z, bins_phi, of, against);
             },
             py::arg("method"), py::arg("n"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("normal") = py::none(), py::arg("seed") = 0, py::arg("first") = 0,
             py::arg("bins_z") = 32, py::arg("bins_phi") = 64, py::arg("of") = "o", py::arg("against") = py::none(),
-            py::arg("precision") = py::none(), py::arg("sequence") = "philox");
+            py::arg("precision") = py::none(), py::arg("sequence") = "philox", py::arg("eta") = py::none());
     add_enqueue(sampler);
 }
 

@@ -60,12 +60,31 @@ void set_vector(const py::object& value, const char* name, std::size_t count, gg
     uniform = {v[0], v[1], v[2]};
 }
 
+// (n, 2) uniforms, or (n, 3) for a dielectric: u3 into lobe_uniforms.
 void set_uniforms(const RequestArgs& args, Request& r)
 {
-    std::vector<double> u = read_array(args.uniforms, "uniforms", args.count, 2);
+    const std::size_t columns = r.params.eta != 0.0f ? 3 : 2;
+    std::vector<double> u = read_array(args.uniforms, "uniforms", args.count, columns);
     r.per_sample.uniforms.resize(args.count);
-    for (std::size_t j = 0; j < args.count; ++j)
-        r.per_sample.uniforms[j] = {ggxcl::uniform_to_float(u[2 * j]), ggxcl::uniform_to_float(u[2 * j + 1])};
+    r.per_sample.lobe_uniforms.resize(columns == 3 ? args.count : 0);
+    for (std::size_t j = 0; j < args.count; ++j) {
+        const double* row = u.data() + columns * j;
+        r.per_sample.uniforms[j] = {ggxcl::uniform_to_float(row[0]), ggxcl::uniform_to_float(row[1])};
+        if (columns == 3)
+            r.per_sample.lobe_uniforms[j] = ggxcl::uniform_to_float(row[2]);
+    }
+}
+
+void set_dielectric(const RequestArgs& args, Request& r)
+{
+    if (!args.eta.is_none()) {
+        try {
+            r.params.eta = args.eta.cast<float>();
+        } catch (const py::cast_error&) {
+            throw ggxcl::InvalidArgument("eta", std::string(py::repr(args.eta)), "None or a number");
+        }
+    }
+    r.params.transport = ggxcl::parse_transport(args.transport);
 }
 
 } // namespace
@@ -89,9 +108,17 @@ RequestArgs args_of(const std::string& method, std::size_t n, const py::object& 
     return a;
 }
 
+RequestArgs with_dielectric(RequestArgs args, const py::object& eta, const std::string& transport)
+{
+    args.eta = eta;
+    args.transport = transport;
+    return args;
+}
+
 Request make_request(const RequestArgs& args)
 {
     Request r;
+    set_dielectric(args, r);
     r.params.method = ggxcl::parse_method(args.method);
     r.params.world_space = args.world_space;
     set_alpha(args, r);

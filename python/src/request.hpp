@@ -2,7 +2,8 @@
 // histogram turned into the library's parameters: the method by name, alpha
 // as a number, a pair or a per-sample array, the view from (theta, phi)
 // degrees or as a vector or per-sample array, the normal likewise, the
-// precision mode, the sequence and the caller's uniforms.
+// precision mode, the sequence, the caller's uniforms, and a dielectric's
+// relative index and transport.
 #pragma once
 
 #include <cstddef>
@@ -21,6 +22,8 @@ struct RequestArgs {
     double theta = 60.0, phi = 0.0;
     std::string sequence = "philox";
     bool world_space = false;
+    pybind11::object eta = pybind11::none();  // None: a conductor (Fresnel 1)
+    std::string transport = "radiance";
 };
 
 struct Request {
@@ -32,6 +35,9 @@ struct Request {
 RequestArgs args_of(const std::string& method, std::size_t n, const pybind11::object& alpha, double theta, double phi,
                     const pybind11::object& view, const pybind11::object& normal, const pybind11::object& precision,
                     const std::string& sequence, const pybind11::object& uniforms, bool world_space);
+
+// `args` for a rough dielectric of index `eta` (None: none) in `transport`.
+RequestArgs with_dielectric(RequestArgs args, const pybind11::object& eta, const std::string& transport);
 
 // Throws ggxcl::InvalidArgument naming the argument at fault.
 Request make_request(const RequestArgs& args);

@@ -80,11 +80,16 @@ struct DeviceOutputs {
 
 // Counts of directions in bins of equal solid angle over (phi, cos theta):
 // z = cos(theta) in [-1, 1] split into bins_z, phi in [0, 2 pi) into
-// bins_phi; counts[z_bin * bins_phi + phi_bin].
+// bins_phi; counts[z_bin * bins_phi + phi_bin].  Of a dielectric's o the
+// whole sphere holds both lobes.
 struct Histogram {
     int bins_z = 0, bins_phi = 0;
     std::vector<std::uint64_t> counts;
     std::uint64_t non_finite = 0;  // samples whose direction was NaN or Inf
+    // Dielectrics (SampleParams::eta): samples without density (pdf_o = 0, a
+    // reflection that left the view's side or a transmission that did not
+    // cross), counted here instead of in a bin.
+    std::uint64_t invalid = 0;
     std::uint64_t total() const;
 };
 

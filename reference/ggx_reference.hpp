@@ -94,3 +94,5 @@ double lobe_uniform_sobol(uint64_t seed, uint64_t index);
 double lobe_uniform_philox(uint64_t seed, uint64_t index);
 
 }  // namespace ggxref
+
+#include "ggx_dielectric.hpp"  // the rough dielectric: sampling, densities, bins, furnace

@@ -1,11 +1,11 @@
 // ggx_dielectric.hpp - the rough dielectric in the reference (Walter et al. 2007; SPEC "Rough
 // dielectrics"): sampling both lobes with every method's normals, the density of o over the whole
-// sphere, its exact bin probabilities and the single-scattering white furnace. Included by
-// ggx_reference.hpp.
+// sphere, its exact bin probabilities, the single-scattering white furnace, and the share of the
+// transmission that the bounded cap cannot reach. Included by ggx_reference.hpp.
 //
 // Conventions: eta = index below the surface / index above, finite, > 0 and != 1 (anything else:
-// the fallback sample, densities and probabilities 0, a NaN albedo). A view with i.n < 0 sees the
-// interface from below: every function works in the frame mirrored through the surface
+// the fallback sample, densities and probabilities 0, a NaN albedo or share). A view with i.n < 0
+// sees the interface from below: every function works in the frame mirrored through the surface
 // (x -> x - 2 (x.n) n: z -> -z for the tangent-space methods, and for caps_iso too the view is
 // mirrored about its n, rather than n turned to -n, which for n = z would be caps-iso's excluded
 // normal -z) with 1/eta, and mirrors m and o back. radiance = true is radiance transport (a
@@ -51,5 +51,11 @@ struct DielectricAlbedo {
     double reflectance, transmittance;
 };
 DielectricAlbedo dielectric_albedo(const Params&, double eta, bool radiance);
+
+// The share of the exact dielectric's transmitted energy (importance transport) carried by the normals
+// that the bounded cap (Eto & Tokuyoshi) never draws: int over m of VNDF(m) (1 - F(i.m)) weight_t(m)
+// where pdf_m(Method::bounded) = 0, over the same integral on all m (bounded_refraction_loss.cpp).
+// Tangent space; a view below meets the bounded cap of its mirrored view.
+double bounded_lost_transmission(const Params&, double eta);
 
 }  // namespace ggxref

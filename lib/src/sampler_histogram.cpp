@@ -92,7 +92,7 @@ struct Sampler::HistogramRun {
     {
         // Zeroed by a write, not clEnqueueFillBuffer: Oclgrind's checker takes
         // filled memory as uninitialized (shown by a minimal kernel in test_oclgrind).
-        const std::vector<cl_uint> zeros(bins + 1, 0u);
+        const std::vector<cl_uint> zeros(bins + 2, 0u);
         detail::write_and_wait(sampler.queue_, counts, 0, (bins + 2) * sizeof(cl_uint), zeros.data());
     }
 

@@ -50,11 +50,14 @@ class Sampler:
         views_above_horizon: bool = False,
         isotropic: bool = False,
         wait_for: Optional[Sequence[Any]] = None,
+        eta: Optional[float] = None,
+        transport: str = "radiance",
     ) -> Any:
         """Samples first .. first + n - 1 into pyopencl Buffers (outputs={'m': buffer, ...}: planar, plane c of a
         field at c * stride floats, stride 0 meaning n) on a pyopencl queue of this sampler's context, after the
-        events of `wait_for`; per-sample inputs as Buffers too (inputs={'view', 'alpha', 'normal', 'uniforms'}).
-        Returns a pyopencl.Event. A buffer too small raises InvalidArgument naming it."""
+        events of `wait_for`; per-sample inputs as Buffers too (inputs={'view', 'alpha', 'normal', 'uniforms'};
+        with `eta`, uniforms and u have 3 planes). Returns a pyopencl.Event. A buffer too small raises
+        InvalidArgument naming it."""
     @property
     def device_name(self) -> str: ...
     chunk_size: int
@@ -76,12 +79,17 @@ class Sampler:
         uniforms: Optional[npt.NDArray[np.floating[Any]]] = None,
         world_space: bool = False,
         out: Optional[Mapping[str, npt.NDArray[np.float32]]] = None,
+        eta: Optional[float] = None,
+        transport: str = "radiance",
     ) -> Dict[str, npt.NDArray[np.float32]]:
         """Samples first .. first + n - 1 of stream `seed` of `method`: a dict of float32 arrays, m and o (n, 3),
         pdf_m, pdf_o, weight (n,), u (n, 2). The view is (theta, phi) in degrees unless `view` is given (a vector,
         or (n, 3) per sample); alpha is a number, a pair (alpha_x, alpha_y) or an (n,) or (n, 2) array; `normal` is
         caps-iso's and world space's normal; `uniforms` (n, 2) replaces the sequence (philox or sobol); `out` maps
-        fields to preallocated float32 arrays (a numpy.memmap too) that are filled instead."""
+        fields to preallocated float32 arrays (a numpy.memmap too) that are filled instead. `eta` (index below the
+        surface over index above) samples a rough dielectric: o reflected with probability F(i.m) or refracted,
+        pdf_o its density over the whole sphere, weight in `transport` ("radiance" or "importance"); u and
+        `uniforms` then have 3 columns (u3 chooses the lobe). Every method but bounded."""
     def pdf(
         self,
         method: str,
@@ -94,8 +102,10 @@ class Sampler:
         normal: Optional[Vector] = None,
         precision: Optional[str] = None,
         world_space: bool = False,
+        eta: Optional[float] = None,
     ) -> npt.NDArray[np.float32]:
-        """The pdf (per steradian) of each direction (n, 3) for `method`'s sampler."""
+        """The pdf (per steradian) of each direction (n, 3) for `method`'s sampler (with `eta`: its dielectric
+        sampler, over the whole sphere)."""
     def eval(
         self,
         directions: npt.NDArray[np.floating[Any]],
@@ -107,9 +117,12 @@ class Sampler:
         normal: Optional[Vector] = None,
         precision: Optional[str] = None,
         world_space: bool = False,
+        eta: Optional[float] = None,
+        transport: str = "radiance",
     ) -> npt.NDArray[np.float32]:
-        """The GGX BRDF value f(i, o) |cos theta_o| (Fresnel 1) of each direction (n, 3): with pdf(), what
-        multiple importance sampling needs; for a sampled o, eval / pdf_o is its weight."""
+        """The GGX BSDF value f(i, o) |cos theta_o| of each direction (n, 3): the BRDF with Fresnel 1, or with
+        `eta` the rough dielectric's, both lobes with the exact Fresnel, in `transport`. With pdf(), what multiple
+        importance sampling needs; for a sampled o, eval / pdf_o is its weight."""
     def furnace(
         self,
         method: str,
@@ -124,8 +137,11 @@ class Sampler:
         first: int = 0,
         precision: Optional[str] = None,
         sequence: str = "philox",
+        eta: Optional[float] = None,
+        transport: str = "radiance",
     ) -> Dict[str, float]:
-        """The fused white-furnace estimator: {'mean': albedo estimate, 'variance': per sample, 'count'}."""
+        """The fused white-furnace estimator: {'mean': albedo estimate, 'variance': per sample, 'count'}; with
+        `eta` also 'reflectance' and 'transmittance' (their sum is the mean)."""
     def histogram(
         self,
         method: str,
@@ -143,7 +159,9 @@ class Sampler:
         against: Optional[str] = None,
         precision: Optional[str] = None,
         sequence: str = "philox",
+        eta: Optional[float] = None,
     ) -> Dict[str, Any]:
         """Counts of o (or m) in bins of equal solid angle over (cos theta, phi), binned on the device:
         {'counts': (bins_z, bins_phi) uint64, 'expected': float64 from `against`'s pdf (default: the method's),
-        'chi_square', 'dof', 'p_value', 'non_finite'}."""
+        'chi_square', 'dof', 'p_value', 'non_finite', 'invalid'}. With `eta` (o only) both lobes over the whole
+        sphere; 'invalid' counts the samples without density, tested as one more category."""

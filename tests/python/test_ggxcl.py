@@ -6,7 +6,11 @@ equals the mean of the weights; per-sample arrays and the caller's
 uniforms; out= arrays; bad input raises errors naming the argument; a
 signal raises KeyboardInterrupt in the middle of a long call; pyopencl
 buffers written by Sampler.enqueue on a pyopencl queue equal sample(), its
-events chain, and a buffer too small raises InvalidArgument.
+events chain, and a buffer too small raises InvalidArgument.  Rough
+dielectrics (eta=): three uniforms (and the caller's three), pdf equal to
+pdf_o over the whole sphere, eval / pdf_o equal to the weight in both
+transports, the furnace's reflectance and transmittance, the histogram over
+both lobes (its negative controls are C++'s), pyopencl buffers, bad values.
 
 Run by CTest (test_python) with PYTHONPATH at the build tree's python/,
 GGX_BINARY the `ggx` tool and GGX_GENERATE_DUMP generate_dump (a C++
@@ -154,6 +158,61 @@ def test_out_fills_a_memmap_in_chunks(sampler, tmp_path):
     assert np.array_equal(np.load(tmp_path / "o.npy"), whole)
 
 
+def test_dielectric_samples_pdf_and_eval(sampler):
+    kw = dict(alpha=(0.3, 0.5), theta=50, eta=1.5)
+    d = sampler.sample("caps", 4000, seed=2, fields=("o", "pdf_o", "weight", "u"), **kw)
+    assert d["u"].shape == (4000, 3)
+    plain = sampler.sample("caps", 4000, seed=2, fields=("u",), alpha=(0.3, 0.5), theta=50)["u"]
+    assert np.array_equal(d["u"][:, :2], plain)  # u1, u2 as a conductor's; u3 chooses the lobe
+    transmitted = d["o"][:, 2] < 0
+    assert 0.8 < transmitted.mean() < 0.99
+    valid = d["pdf_o"] > 0
+    p = sampler.pdf("caps", d["o"], alpha=(0.3, 0.5), theta=50, eta=1.5)
+    assert np.allclose(p[valid], d["pdf_o"][valid], rtol=2e-3, atol=0)
+    for transport in ("radiance", "importance"):
+        t = sampler.sample("heitz", 3000, seed=4, fields=("o", "pdf_o", "weight"), transport=transport, **kw)
+        f = sampler.eval(t["o"], alpha=(0.3, 0.5), theta=50, eta=1.5, transport=transport)
+        used = t["weight"] > 0
+        assert np.allclose(f[used] / t["pdf_o"][used], t["weight"][used], rtol=2e-3, atol=0)
+    again = sampler.sample("caps", 4000, fields=("o",), uniforms=d["u"], **kw)
+    assert np.array_equal(again["o"], d["o"])  # the caller's three uniforms give the same samples
+
+
+def test_dielectric_furnace_and_histogram(sampler):
+    f = sampler.furnace("caps", 2 ** 16, alpha=0.5, theta=70, seed=9, eta=1.33, transport="importance")
+    w = sampler.sample("caps", 2 ** 16, alpha=0.5, theta=70, seed=9, fields=("o", "weight"), eta=1.33,
+                       transport="importance")
+    reflected = w["o"][:, 2] > 0
+    assert f["reflectance"] == pytest.approx(float(np.sum(w["weight"][reflected], dtype=np.float64)) / 2 ** 16,
+                                             rel=1e-5)
+    assert f["reflectance"] + f["transmittance"] == pytest.approx(f["mean"], rel=1e-12)
+    assert 0.5 < f["mean"] < 1.0
+    assert "reflectance" not in sampler.furnace("caps", 1024)
+    h = sampler.histogram("ndf", 4 * 10 ** 5, alpha=0.4, theta=130, seed=5, bins_z=16, bins_phi=32, eta=1.5)
+    assert int(h["counts"].sum()) + h["invalid"] == 4 * 10 ** 5
+    assert h["counts"][:8].sum() > 0 and h["counts"][8:].sum() > 0  # both hemispheres
+    assert h["p_value"] > 1e-3
+    with pytest.raises(ggxcl.InvalidArgument) as error:
+        sampler.histogram("caps", 1000, eta=1.5, of="m")
+    assert error.value.parameter == "direction"
+
+
+@pytest.mark.parametrize("kwargs, parameter", [
+    (dict(eta=1.0), "eta"),
+    (dict(eta=-2.0), "eta"),
+    (dict(method="bounded", eta=1.5), "eta"),
+    (dict(eta=1.5, transport="photons"), "transport"),
+    (dict(eta=1.5, uniforms=np.full((5, 2), 0.5)), "uniforms"),
+    (dict(eta=1.5, uniforms=np.full((5, 3), 0.5) + np.array([0, 0, 0.6])), "lobe_uniforms[0]"),
+])
+def test_bad_dielectric_input_names_the_argument(sampler, kwargs, parameter):
+    args = dict(method="caps", n=5, fields=("m",))
+    args.update(kwargs)
+    with pytest.raises(ggxcl.InvalidArgument) as error:
+        sampler.sample(args.pop("method"), args.pop("n"), **args)
+    assert error.value.parameter == parameter
+
+
 @pytest.mark.parametrize("kwargs, parameter", [
     (dict(method="walter"), "method"),
     (dict(alpha=float("nan")), "alpha_x"),
@@ -241,3 +300,12 @@ def test_pyopencl_buffers_equal_sample_and_chain_by_events(sampler):
     with pytest.raises(ggxcl.InvalidArgument) as error:
         on_context.enqueue(queue, "caps", n, outputs={"m": "not a buffer"})
     assert error.value.parameter == "outputs[m]"
+    u = cl.Buffer(context, cl.mem_flags.READ_WRITE, 3 * stride * 4)
+    on_context.enqueue(queue, "caps", n, outputs={"u": u}, seed=3, stride=stride, eta=1.5).wait()
+    host_u = np.empty(3 * stride, np.float32)
+    cl.enqueue_copy(queue, host_u, u)
+    assert np.array_equal(host_u.reshape(3, stride)[:, :n].T, sampler.sample("caps", n, seed=3, eta=1.5,
+                                                                              fields=("u",))["u"])
+    with pytest.raises(ggxcl.InvalidArgument) as error:  # a conductor's two planes are too few
+        on_context.enqueue(queue, "caps", n, outputs={"u": small}, stride=stride, eta=1.5)
+    assert error.value.parameter == "outputs.u"

@@ -89,3 +89,34 @@ TEST_CASE("histogram: the figure decodes as a 1280 x 400 PNG")
     stbi_image_free(pixels);
     fs::remove_all(scratch());
 }
+
+TEST_CASE("histogram and sample of a rough dielectric (--eta): both lobes pass, bounded and eta 1 are refused")
+{
+    const fs::path prefix = scratch() / "glass";
+    CHECK(ggx("histogram --method heitz --eta 1.5 --theta 130 -n 4e5 --check 0.001 --no-png --out " +
+              prefix.string()) == 0);
+    nlohmann::json s = summary(prefix);
+    CHECK(s["eta"].get<double>() == doctest::Approx(1.5));
+    CHECK(s["transport"] == "radiance");
+    CHECK(s["invalid_samples"].get<std::uint64_t>() > 0);  // inside glass, reflections that leave the surface
+    const fs::path wrong = scratch() / "wrong";
+    CHECK(ggx("histogram --method heitz --eta 1.5 --theta 130 -n 4e5 --against ndf --check 0.001 --no-png --out " +
+              wrong.string()) == 1);
+    for (const char* bad : {"--eta 1", "--eta -1.5", "--eta nan", "--eta x", "--method bounded --eta 1.5"}) {
+        CAPTURE(bad);
+        const std::string method = std::string(bad).find("--method") == std::string::npos ? "--method caps " : "";
+        const ggxtest::Run run = ggxtest::run_ggx("sample " + method + bad + " -n 10 --out " +
+                                                      (scratch() / "bad.npy").string(),
+                                                  scratch() / "stderr.txt");
+        CHECK(run.status == 2);
+        CHECK(run.err.find("--eta") != std::string::npos);
+        CHECK_FALSE(fs::exists(scratch() / "bad.npy"));
+    }
+    const fs::path cloud = scratch() / "glass.npy";
+    CHECK(ggx("sample --method caps --eta 1.5 --transport importance -n 100 --fields o,u --out " + cloud.string()) ==
+          0);
+    std::ifstream sidecar(scratch() / "glass.json");
+    const nlohmann::json doc = nlohmann::json::parse(sidecar);
+    CHECK(doc["columns"] == nlohmann::json({"o_x", "o_y", "o_z", "u1", "u2", "u3"}));
+    CHECK(doc["transport"] == "importance");
+}

@@ -249,3 +249,47 @@ TEST_CASE("eta: refused unless 0 or a relative index; bounded refuses it; lobe u
     p.eta = 0.0f;
     CHECK_THROWS_WITH_AS(ggxcl::validate(in, p, 64), doctest::Contains("lobe_uniforms"), ggxcl::InvalidArgument);
 }
+
+TEST_CASE("a dielectric through the caller's buffers: enqueue (three planes of u) and enqueue_furnace (three of sums)")
+{
+    ggxcl::Sampler& s = ggxtest::sampler();
+    ggxcl::SampleParams p = ggxtest::to_library(Method::heitz, ggxtest::make_params(0.4, 0.4, 150.0));
+    p.eta = 1.33f;
+    const std::uint32_t n = 3000, stride = 3072;
+    ggxcl::DeviceOutputs out;
+    out.o = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * stride * sizeof(float));
+    out.u = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 2 * stride * sizeof(float));
+    CHECK_THROWS_WITH_AS(s.enqueue(s.queue(), p, {6, 0, n}, out, stride), doctest::Contains("outputs.u"),
+                         ggxcl::InvalidArgument);
+    out.u = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * stride * sizeof(float));
+    s.enqueue(s.queue(), p, {6, 0, n}, out, stride).wait();
+    std::vector<float> o(3 * stride), u(3 * stride);
+    s.queue().enqueueReadBuffer(out.o, CL_TRUE, 0, o.size() * sizeof(float), o.data());
+    s.queue().enqueueReadBuffer(out.u, CL_TRUE, 0, u.size() * sizeof(float), u.data());
+    const ggxcl::SampleSet host = s.generate(p, {6, 0, n}, {ggxcl::Field::o, ggxcl::Field::u});
+    std::size_t differ = 0;
+    for (int c = 0; c < 3; ++c)
+        for (std::uint32_t j = 0; j < n; ++j)
+            differ += o[c * stride + j] != host.o[c * n + j] || u[c * stride + j] != host.u[c * n + j];
+    CHECK(differ == 0);
+
+    const std::uint64_t count = 1u << 16;
+    const std::size_t items = s.furnace_items(count);
+    cl::Buffer sums(s.context(), CL_MEM_READ_WRITE, 3 * items * sizeof(float));
+    s.enqueue_furnace(s.queue(), p, {6, 0, count}, sums).wait();
+    std::vector<float> partial(3 * items);
+    s.queue().enqueueReadBuffer(sums, CL_TRUE, 0, partial.size() * sizeof(float), partial.data());
+    double total = 0.0, reflected = 0.0;
+    for (std::size_t w = 0; w < items; ++w) {
+        total += partial[w];
+        reflected += partial[2 * items + w];
+    }
+    const ggxcl::FurnaceSums fused = s.furnace(p, {6, 0, count});
+    CHECK(total == doctest::Approx(fused.sum).epsilon(1e-6));
+    CHECK(reflected == doctest::Approx(fused.reflected_sum).epsilon(1e-6));
+    CHECK(reflected > 0.0);
+    CHECK(reflected < total);
+    cl::Buffer two_planes(s.context(), CL_MEM_READ_WRITE, 2 * items * sizeof(float));
+    CHECK_THROWS_WITH_AS(s.enqueue_furnace(s.queue(), p, {6, 0, count}, two_planes), doctest::Contains("sums"),
+                         ggxcl::InvalidArgument);
+}

@@ -1,5 +1,6 @@
-// bench_accuracy.cpp - numerical error against the reference and the
-// variance of the albedo estimator over a small table.
+// bench_accuracy.cpp - numerical error against the reference, the
+// variance of the albedo estimator over a small table, and a dielectric
+// furnace's reflectance and transmittance against the reference.
 #include "bench_accuracy.hpp"
 
 #include <algorithm>
@@ -47,6 +48,19 @@ void add_errors(const ggxcl::SampleSet& d, ggxcl::Method method, const ggxref::P
         if (method != ggxcl::Method::ndf || std::fabs(ggxref::dot(r.o, r.m)) >= 1e-2)
             pdfs.push_back(relative_error(d.pdf_o[j], r.pdf_o));
     }
+}
+
+// The mean of `values` and its standard error, from their spread.
+void mean_and_error(const std::vector<double>& values, double& mean, double& standard_error)
+{
+    const double k = double(values.size());
+    double sum = 0.0, squares = 0.0;
+    for (double v : values)
+        sum += v;
+    mean = sum / k;
+    for (double v : values)
+        squares += (v - mean) * (v - mean);
+    standard_error = std::sqrt(squares / (k - 1.0) / k);
 }
 
 } // namespace
@@ -139,6 +153,31 @@ double albedo_table_rmse(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::P
             }
         }
     return std::sqrt(squared / (double(size) * size * streams));
+}
+
+ggxref::DielectricAlbedo dielectric_exact(const ggxcl::SampleParams& params)
+{
+    return ggxref::dielectric_albedo(ggxbridge::reference_params(ggxcl::normalized(params)), params.eta,
+                                     params.transport == ggxcl::Transport::radiance);
+}
+
+DielectricAccuracy dielectric_accuracy(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+                                       const ggxref::DielectricAlbedo& exact)
+{
+    DielectricAccuracy a;
+    a.exact_reflectance = exact.reflectance;
+    a.exact_transmittance = exact.transmittance;
+    std::vector<double> reflectances, transmittances;
+    for (int s = 0; s < dielectric_streams; ++s) {
+        const ggxcl::FurnaceSums sums = sampler.furnace(params, {9000u + std::uint64_t(s), 0, dielectric_stream_samples});
+        reflectances.push_back(sums.reflectance());
+        transmittances.push_back(sums.transmittance());
+    }
+    mean_and_error(reflectances, a.reflectance, a.reflectance_se);
+    mean_and_error(transmittances, a.transmittance, a.transmittance_se);
+    a.samples = dielectric_streams * dielectric_stream_samples;
+    a.measured = true;
+    return a;
 }
 
 } // namespace ggxapp

@@ -10,6 +10,9 @@
 //    the table a renderer precomputes for energy compensation; and the
 //    table's RMSE measured against its exact albedos at a sample count.
 //  Both take the device's uniforms from the u field, so any sequence works.
+//  - A rough dielectric's fused furnace: its reflectance and transmittance
+//    against the reference's quadrature (ggxref::dielectric_albedo), the
+//    errors in standard errors from the spread of independent streams.
 #pragma once
 
 #include <cstdint>
@@ -60,5 +63,25 @@ std::vector<double> albedo_table(int size);
 double albedo_table_rmse(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
                          ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
                          const std::vector<double>& exact);
+
+struct DielectricAccuracy {
+    bool measured = false;
+    std::uint64_t samples = 0;                      // over all streams
+    double reflectance = 0, transmittance = 0;      // the furnace's means over the streams
+    double reflectance_se = 0, transmittance_se = 0;  // their standard errors, from the streams' spread
+    double exact_reflectance = 0, exact_transmittance = 0;
+    double reflectance_z() const { return (reflectance - exact_reflectance) / reflectance_se; }
+    double transmittance_z() const { return (transmittance - exact_transmittance) / transmittance_se; }
+};
+
+inline constexpr int dielectric_streams = 32;
+inline constexpr std::uint64_t dielectric_stream_samples = 1u << 17;
+
+// The exact reflectance and transmittance of params (eta and transport set).
+ggxref::DielectricAlbedo dielectric_exact(const ggxcl::SampleParams& params);
+
+// Sampler::furnace over dielectric_streams streams of dielectric_stream_samples each.
+DielectricAccuracy dielectric_accuracy(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+                                       const ggxref::DielectricAlbedo& exact);
 
 } // namespace ggxapp

@@ -29,7 +29,7 @@ const BenchRow* store_row(const BenchReport& r)
     return nullptr;
 }
 
-// The precise philox rows of the limits table, method by method (library order), write then furnace.
+// The precise philox conductor rows of the limits table, method by method (library order), write then furnace.
 std::vector<const BenchRow*> table_rows(const BenchReport& r)
 {
     std::vector<const BenchRow*> rows;
@@ -37,7 +37,7 @@ std::vector<const BenchRow*> table_rows(const BenchReport& r)
         for (const char* job : {"write", "furnace"})
             for (const BenchRow& row : r.rows)
                 if (row.method == ggxcl::method_name(m) && row.precision == "precise" && row.job == job &&
-                    row.sequence == "philox")
+                    row.sequence == "philox" && row.eta == 0.0f)
                     rows.push_back(&row);
     return rows;
 }
@@ -86,7 +86,7 @@ void write_ops_table(std::ostream& md, const std::vector<const BenchRow*>& rows)
 
 std::optional<RowLimit> row_limit(const BenchRow& row, const BenchReport& report)
 {
-    if (row.job != "write" && row.job != "furnace")
+    if ((row.job != "write" && row.job != "furnace") || row.eta != 0.0f)  // conductors only
         return std::nullopt;
     RowLimit limit;
     if (row.has_ops && report.has_peaks)

@@ -23,7 +23,8 @@ struct RowLimit {
     double percent = 0;                   // tighter / measured x 100
 };
 
-// The limits of a write or furnace row (nothing for other jobs, or when neither limit is known).
+// The limits of a conductor's write or furnace row (nothing for other jobs, dielectric rows, or when
+// neither limit is known).
 std::optional<RowLimit> row_limit(const BenchRow& row, const BenchReport& report);
 
 // The CSV's limit columns: the header's part (starting with a comma) and a row's cells.

@@ -30,6 +30,7 @@ const char* native_job_name(BenchJob job)
     case BenchJob::write: return "write_m_pdf_m";
     case BenchJob::furnace: return "furnace_sum";
     case BenchJob::world: return "world_space_o";
+    case BenchJob::write_o:
     case BenchJob::per_sample:
     case BenchJob::store: break;  // device-only jobs
     }

@@ -15,7 +15,7 @@ namespace ggxapp {
 bool counts_ops(const BenchTask& task)
 {
     return (task.job == BenchJob::write || task.job == BenchJob::furnace) && task.guards &&
-           task.params.sequence == ggxcl::Sequence::philox;
+           task.params.sequence == ggxcl::Sequence::philox && task.params.eta == 0.0f;
 }
 
 std::vector<std::optional<OpCounts>> count_task_ops(const ggxcl::Sampler& sampler, const std::vector<BenchTask>& tasks,

@@ -1,5 +1,5 @@
 // bench_ops.hpp - the operations per sample of the bench's write and furnace
-// tasks (guarded, philox): each task's program as the runtime builds it
+// tasks (guarded, philox, conductors): each task's program as the runtime builds it
 // (ggxcl::benchmark::enqueue_program, furnace_program: the embedded source
 // and the exact options) compiled to LLVM IR by clang (kernel_ir.hpp), once
 // per distinct program, all in parallel, before any timing starts; counted
@@ -23,7 +23,8 @@ namespace ggxapp {
 std::vector<std::optional<OpCounts>> count_task_ops(const ggxcl::Sampler& sampler, const std::vector<BenchTask>& tasks,
                                                     std::string& unavailable);
 
-// Whether a task's operations are counted: write or furnace, guarded, philox.
+// Whether a task's operations are counted: write or furnace, guarded, philox, a conductor (the
+// limits skip the dielectric rows).
 bool counts_ops(const BenchTask& task);
 
 } // namespace ggxapp

@@ -52,6 +52,13 @@ BenchPlan plan_bench(const BenchCommand& cmd)
     plan.settings.theta = parse_angle("--theta", cmd.theta, 0.0, 89.0);
     plan.base.alpha_x = plan.base.alpha_y = alpha[0];
     plan.base.view = ggxcl::view_from_angles(plan.settings.theta, 0.0);
+    plan.settings.eta = parse_eta("--eta", cmd.eta);
+    try {
+        plan.transport = ggxcl::parse_transport(cmd.transport);
+    } catch (const ggxcl::InvalidArgument&) {
+        throw UsageError("--transport", cmd.transport, "one of radiance, importance");
+    }
+    plan.settings.transport = std::string(ggxcl::transport_name(plan.transport));
     return plan;
 }
 

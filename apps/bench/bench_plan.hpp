@@ -1,7 +1,8 @@
 // bench_plan.hpp - the options of `ggx bench` as typed, and the plan they
 // give once checked: the method, precision and job lists, the speed runs'
-// parameters and the report's settings (counts, repeats, threads, table
-// size, budget).  Planning touches no file and no device.
+// parameters (and a dielectric's index and transport) and the report's
+// settings (counts, repeats, threads, table size, budget).  Planning touches
+// no file and no device.
 #pragma once
 
 #include <string>
@@ -19,6 +20,7 @@ struct BenchCommand {
     std::string sequences = "philox,sobol";
     std::string count = "2^24", native_count = "2^22", repeats = "7", threads = "2";
     std::string scene = "16", cell_samples = "2^14", budget_ms = "1";
+    std::string eta = "0", transport = "radiance";  // a rough dielectric's rows beside the conductor's (0: none)
     bool no_native = false, no_accuracy = false, no_startup = false;
     std::string csv, charts, markdown;
 };
@@ -28,7 +30,8 @@ struct BenchPlan {
     std::vector<std::string> sequences;  // besides philox: timed in precise mode, write and furnace jobs
     ggxcl::SampleParams base;  // the speed runs' roughness and view
     BenchReport settings;      // count, native_count, repeats, threads, scene_size,
-                               // samples_per_cell, budget_ms, alpha, theta
+                               // samples_per_cell, budget_ms, alpha, theta, eta, transport
+    ggxcl::Transport transport = ggxcl::Transport::radiance;  // the dielectric rows' (settings.eta)
 };
 
 // Throws UsageError naming the first bad option.

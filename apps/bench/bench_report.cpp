@@ -1,4 +1,5 @@
-// bench_report.cpp - CSV and Markdown of `ggx bench`, with the target checks.
+// bench_report.cpp - CSV and Markdown of `ggx bench`, with the target checks
+// and, with --eta, the rough dielectric's section.
 #include "bench_report.hpp"
 
 #include "bench_limits.hpp"
@@ -27,11 +28,13 @@ const std::vector<std::string>& method_order()
 }
 const char* const device_modes[] = {"precise", "relaxed"};
 
+// A row of a conductor (eta 0) or, with dielectric, of the dielectric (eta set).
 const BenchRow* find_row(const BenchReport& r, const std::string& method, const std::string& precision,
-                         const std::string& job, const std::string& sequence = "philox")
+                         const std::string& job, const std::string& sequence = "philox", bool dielectric = false)
 {
     for (const BenchRow& row : r.rows)
-        if (row.method == method && row.precision == precision && row.job == job && row.sequence == sequence)
+        if (row.method == method && row.precision == precision && row.job == job && row.sequence == sequence &&
+            (row.eta != 0.0f) == dielectric)
             return &row;
     return nullptr;
 }
@@ -286,6 +289,88 @@ void write_sequence_table(std::ostream& md, const BenchReport& r)
         }
 }
 
+// The CSV's last columns: the row's eta (0: a conductor), and a dielectric's transport and
+// furnace accuracy (R, T, the reference's and their standard errors).
+const char* const dielectric_csv_header =
+    ",eta,transport,reflectance,reflectance_exact,reflectance_se,transmittance,transmittance_exact,transmittance_se";
+
+std::string dielectric_csv_cells(const BenchRow& row)
+{
+    std::ostringstream cells;
+    cells << std::setprecision(6) << "," << row.eta << "," << row.transport;
+    const DielectricAccuracy& a = row.dielectric;
+    if (a.measured)
+        cells << "," << a.reflectance << "," << a.exact_reflectance << "," << a.reflectance_se << ","
+              << a.transmittance << "," << a.exact_transmittance << "," << a.transmittance_se;
+    else
+        cells << ",,,,,,";
+    return cells.str();
+}
+
+std::string signed_fixed(double value, int digits)
+{
+    return (value >= 0 ? "+" : "") + fixed(value, digits);
+}
+
+// The dielectric beside the conductor, per method, precision and job: both times and the ratio.
+void write_dielectric_speed(std::ostream& md, const BenchReport& r)
+{
+    md << "| method | precision | job | conductor: ns | dielectric: ns | dielectric: M samples/s | dielectric / "
+          "conductor |\n|---|---|---|---|---|---|---|\n";
+    for (const std::string& m : method_order())
+        for (const char* mode : device_modes)
+            for (const char* job : {"write-o", "furnace"}) {
+                const BenchRow* conductor = find_row(r, m, mode, job);
+                const BenchRow* dielectric = find_row(r, m, mode, job, "philox", true);
+                if (!conductor || !dielectric)
+                    continue;
+                const bool furnace = std::string(job) == "furnace";
+                md << "| " << m << " | " << mode << " | " << (furnace ? "fused furnace" : "write o + pdf_o") << " | "
+                   << ns_cell(conductor) << " | " << ns_cell(dielectric) << " | "
+                   << fixed(1e3 / dielectric->timing.median, 1) << " | " << fixed(ratio(dielectric, conductor), 2)
+                   << "x |\n";
+            }
+}
+
+// The dielectric furnace's reflectance and transmittance against the reference, in standard errors.
+void write_dielectric_accuracy(std::ostream& md, const BenchReport& r)
+{
+    const DielectricAccuracy* first = nullptr;
+    for (const BenchRow& row : r.rows)
+        if (row.dielectric.measured && !first)
+            first = &row.dielectric;
+    if (!first)
+        return;
+    md << "\nThe fused furnace's reflectance R and transmittance T against the reference's quadrature over "
+          "normals (ggxref::dielectric_albedo: R = "
+       << fixed(first->exact_reflectance, 5) << ", T = " << fixed(first->exact_transmittance, 5) << "), "
+       << first->samples << " samples in " << dielectric_streams
+       << " independent streams; the error in standard errors of the mean, from the streams' spread.\n\n"
+       << "| method | precision | R | error (SE) | T | error (SE) |\n|---|---|---|---|---|---|\n";
+    for (const std::string& m : method_order())
+        for (const char* mode : device_modes)
+            if (const BenchRow* f = find_row(r, m, mode, "furnace", "philox", true); f && f->dielectric.measured)
+                md << "| " << m << " | " << mode << " | " << fixed(f->dielectric.reflectance, 5) << " | "
+                   << signed_fixed(f->dielectric.reflectance_z(), 1) << " | " << fixed(f->dielectric.transmittance, 5)
+                   << " | " << signed_fixed(f->dielectric.transmittance_z(), 1) << " |\n";
+}
+
+void write_dielectric_section(std::ostream& md, const BenchReport& r)
+{
+    md << "\n## Rough dielectric: eta " << r.eta << ", " << r.transport << " transport\n\n"
+       << "Each method with SampleParams::eta = " << r.eta
+       << " (each sample reflects with the exact Fresnel F(i.m), else refracts: a third uniform) beside the same "
+          "method as a conductor (Fresnel 1), timed in the same interleaved rounds. The write job here stores o + "
+          "pdf_o (the direction drawn and its density over the whole sphere; with m + pdf_m alone the lobe choice "
+          "would be left out), for the conductor too; the fused furnace sums the weights and, apart, the "
+          "reflected ones. The ratio is what the third uniform and the refraction cost.\n\n";
+    write_dielectric_speed(md, r);
+    if (std::any_of(r.rows.begin(), r.rows.end(), [](const BenchRow& row) { return row.method == "bounded"; }))
+        md << "\nbounded: no dielectric rows; it has no exact dielectric sampler (its cap leaves out microfacet "
+              "normals that refract, so some transmitted directions are never drawn).\n";
+    write_dielectric_accuracy(md, r);
+}
+
 } // namespace
 
 std::uint64_t samples_at_budget(const BenchRow& row, const BenchReport& report)
@@ -326,7 +411,7 @@ std::string bench_csv(const BenchReport& r)
     csv << std::setprecision(6)
         << "method,precision,job,ns_median,ns_min,ns_max,gsamples_per_s,angle_p99,angle_max,pdf_rel_p99,pdf_rel_max,"
            "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured"
-        << limit_header << "\n";
+        << limit_header << dielectric_csv_header << "\n";
     for (const BenchRow& row : r.rows) {
         csv << row.method << "," << row.precision << "," << row.job << "," << row.timing.median << ","
             << row.timing.low << "," << row.timing.high << "," << 1.0 / row.timing.median << ",";
@@ -342,12 +427,12 @@ std::string bench_csv(const BenchReport& r)
         csv << "," << row.sequence << ",";
         if (row.rmse_measured > 0)
             csv << row.rmse_measured;
-        csv << limit_csv_cells(row, r) << "\n";
+        csv << limit_csv_cells(row, r) << dielectric_csv_cells(row) << "\n";
     }
     if (r.has_vectorized)
         csv << "caps,native-vectorized,furnace," << r.vectorized.median << "," << r.vectorized.low << ","
             << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,"
-            << std::string(limit_columns, ',') << "\n";
+            << std::string(limit_columns, ',') << dielectric_csv_cells(BenchRow{}) << "\n";
     return csv.str();
 }
 
@@ -371,6 +456,8 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
         md << "| " << t.what << " | " << t.measured << " | " << (t.met ? "yes" : "**no**") << " |\n";
     md << "\n## Speed (ns per sample)\n\n";
     write_speed_table(md, r);
+    if (r.eta != 0.0f)
+        write_dielectric_section(md, r);
     write_limit_section(md, r);
     md << "\n## Speed against numerical error\n\nDevice samples against the double-precision reference on the same "
           "uniforms (alpha 0.05, 0.3, 1 x view 0, 45, 80 degrees, 8192 samples each): angle between m's and "

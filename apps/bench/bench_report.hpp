@@ -1,6 +1,7 @@
 // bench_report.hpp - what `ggx bench` measured and how it is written: the
 // rows (one per method x precision mode x job, the native baseline with
-// precision "native"), derived columns (efficiency, RMSE at equal time),
+// precision "native"; with --eta a rough dielectric's rows, eta set, beside
+// conductor rows of the same jobs), derived columns (efficiency, RMSE at equal time),
 // the CSV, the Markdown report with its target checks, and the charts; the
 // rows' op counts and the device's peaks give how close each runs to its
 // limits (bench_limits.hpp).
@@ -27,6 +28,9 @@ struct BenchRow {
     double rmse_measured = 0;     // precise furnace rows: the table's RMSE at the budget, measured (0: not)
     bool has_ops = false;         // write and furnace rows: operations per sample of the kernel's IR
     OpCounts ops;
+    float eta = 0;                // a rough dielectric's relative index (SampleParams::eta); 0: a conductor
+    std::string transport;        // dielectric rows: radiance or importance
+    DielectricAccuracy dielectric;  // dielectric furnace rows: reflectance and transmittance against the reference
 };
 
 struct ReportTarget {
@@ -67,6 +71,8 @@ struct BenchReport {
     double budget_ms = 1.0;       // time budget of the whole albedo table for the RMSE column
     int rmse_streams = 8;         // independent streams per cell of the measured RMSE
     double alpha = 0, theta = 0;  // the speed runs' configuration
+    float eta = 0;                // --eta: the dielectric rows' index (0: none)
+    std::string transport = "radiance";  // --transport: theirs
     std::vector<BenchRow> rows;
     bool has_vectorized = false;
     Timing vectorized;            // native fused caps, its loop vectorized by the compiler

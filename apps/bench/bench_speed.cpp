@@ -98,6 +98,7 @@ std::string job_name(BenchJob job)
 {
     switch (job) {
     case BenchJob::write: return "write";
+    case BenchJob::write_o: return "write-o";
     case BenchJob::furnace: return "furnace";
     case BenchJob::world: return "world";
     case BenchJob::per_sample: return "per-sample";
@@ -119,7 +120,10 @@ DeviceTimer::DeviceTimer(ggxcl::Sampler& sampler, std::uint32_t count)
     write_out_.m = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * std::size_t(count) * sizeof(float));
     write_out_.pdf_m = cl::Buffer(context, CL_MEM_WRITE_ONLY, std::size_t(count) * sizeof(float));
     world_out_.o = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * std::size_t(world_count_) * sizeof(float));
-    sums_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 2 * sampler.furnace_items(count) * sizeof(float));
+    write_o_out_.o = write_out_.m;  // the same bytes: 3 planes and 1
+    write_o_out_.pdf_o = write_out_.pdf_m;
+    // Weights and their squares, and a dielectric's reflected weights (Sampler::enqueue_furnace).
+    sums_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * sampler.furnace_items(count) * sizeof(float));
     std::vector<float> normals, views;
     random_world_inputs(world_count_, normals, views);
     world_in_.normal = device_copy(sampler, normals);
@@ -155,6 +159,8 @@ cl::Event DeviceTimer::launch(const BenchTask& task, std::uint64_t seed)
     case BenchJob::write:
         return task.guards ? sampler_.enqueue(queue, params, {seed, 0, count_}, write_out_)
                            : ggxcl::benchmark::enqueue_unguarded(sampler_, queue, params, {seed, 0, count_}, write_out_);
+    case BenchJob::write_o:
+        return sampler_.enqueue(queue, params, {seed, 0, count_}, write_o_out_);
     case BenchJob::furnace:  // as Sampler::furnace runs it: unguarded, rerun with guards only on a NaN sum
         return ggxcl::benchmark::enqueue_furnace_unguarded(sampler_, queue, params, {seed, 0, count_}, sums_);
     case BenchJob::world: {

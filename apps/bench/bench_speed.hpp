@@ -3,7 +3,10 @@
 // cannot be right), the median of repeated runs after a warm-up run (which
 // builds and JIT-compiles the variant).
 //   write   - tangent-space view, m and pdf_m written to device buffers;
-//   furnace - the fused white-furnace estimator, nothing written but sums;
+//   write-o - the same with o and pdf_o written: what a dielectric (SampleParams::eta)
+//             draws, whose lobe choice m and pdf_m alone would leave out;
+//   furnace - the fused white-furnace estimator, nothing written but sums
+//             (a dielectric's reflected weights summed apart too);
 //   world   - world-space normal and view read per sample, o written in world
 //             space (classic methods build a basis, caps-iso needs none);
 //   per-sample - a view and an anisotropic alpha read per sample from buffers
@@ -20,9 +23,9 @@
 
 namespace ggxapp {
 
-enum class BenchJob { write, furnace, world, per_sample, store };
-inline constexpr BenchJob all_bench_jobs[] = {BenchJob::write, BenchJob::furnace, BenchJob::world, BenchJob::per_sample,
-                                              BenchJob::store};
+enum class BenchJob { write, write_o, furnace, world, per_sample, store };
+inline constexpr BenchJob all_bench_jobs[] = {BenchJob::write,      BenchJob::write_o,    BenchJob::furnace,
+                                              BenchJob::world,      BenchJob::per_sample, BenchJob::store};
 std::string job_name(BenchJob job);
 
 // Nanoseconds per sample: median, fastest and slowest of the timed runs.
@@ -63,7 +66,7 @@ private:
 
     ggxcl::Sampler& sampler_;
     std::uint32_t count_, world_count_;
-    ggxcl::DeviceOutputs write_out_, world_out_;
+    ggxcl::DeviceOutputs write_out_, write_o_out_, world_out_;  // write_o_out_: write_out_'s buffers
     ggxcl::DeviceInputs per_sample_in_;
     cl::Kernel store_;
     ggxcl::DeviceInputs world_in_;

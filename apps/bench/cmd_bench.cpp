@@ -1,7 +1,8 @@
 // cmd_bench.cpp - `ggx bench`: speed against accuracy of every method in
 // every precision mode on a device, side by side with the native C++
 // baseline: ns per sample of three jobs (m + pdf_m written, the fused
-// white-furnace estimator, world-space sampling), numerical error against
+// white-furnace estimator, world-space sampling; with --eta a rough
+// dielectric's beside the conductor's), numerical error against
 // the reference, the variance of the albedo estimator over a small table,
 // efficiency and RMSE at equal time, start-up time.  Prints the Markdown
 // report; --csv, --charts and --markdown write the CSV, the two PNG charts
@@ -10,6 +11,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "atomic_file.hpp"
@@ -65,9 +67,10 @@ std::vector<std::optional<OpCounts>> measure_limit_inputs(ggxcl::Sampler& sample
     return ops;
 }
 
-void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchCommand& cmd, BenchReport& report)
+// The conductor's tasks: every method x precision x job, the guards' cost and the other
+// sequences side by side.
+void add_conductor_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
 {
-    std::vector<BenchTask> tasks;
     for (const std::string& mode : plan.precisions)
         for (const std::string& name : plan.methods)
             for (const std::string& job_text : plan.jobs) {
@@ -83,9 +86,104 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
                         tasks.push_back({job_named(job_text), p});
                     }
             }
-    const bool writes = std::find(plan.jobs.begin(), plan.jobs.end(), "write") != plan.jobs.end();
-    if (writes)  // the write job's ceiling, once: the same bytes stored, nothing computed
+}
+
+bool plans_job(const BenchPlan& plan, const char* job)
+{
+    return std::find(plan.jobs.begin(), plan.jobs.end(), job) != plan.jobs.end();
+}
+
+// With --eta, every method but bounded as a dielectric: o + pdf_o written (beside the conductor
+// writing the same) and the fused furnace (beside the conductor's furnace task), philox.
+void add_dielectric_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
+{
+    if (plan.settings.eta == 0.0f)
+        return;
+    for (const std::string& mode : plan.precisions)
+        for (const std::string& name : plan.methods) {
+            ggxcl::SampleParams conductor = plan.base;
+            conductor.method = ggxcl::parse_method(name);
+            conductor.precision = ggxcl::parse_precision(mode);
+            if (conductor.method == ggxcl::Method::bounded)  // no exact dielectric sampler
+                continue;
+            ggxcl::SampleParams dielectric = conductor;
+            dielectric.eta = plan.settings.eta;
+            dielectric.transport = plan.transport;
+            if (plans_job(plan, "write")) {
+                tasks.push_back({BenchJob::write_o, conductor});
+                tasks.push_back({BenchJob::write_o, dielectric});
+            }
+            if (plans_job(plan, "furnace"))
+                tasks.push_back({BenchJob::furnace, dielectric});
+        }
+}
+
+std::vector<BenchTask> bench_tasks(const BenchPlan& plan)
+{
+    std::vector<BenchTask> tasks;
+    add_conductor_tasks(plan, tasks);
+    add_dielectric_tasks(plan, tasks);
+    if (plans_job(plan, "write"))  // the write job's ceiling, once: the same bytes stored, nothing computed
         tasks.push_back({BenchJob::store, plan.base});
+    return tasks;
+}
+
+// The reference's values the accuracy columns compare with, each computed once, when first needed.
+struct ExactValues {
+    std::vector<double> albedo_table;
+    std::optional<ggxref::DielectricAlbedo> dielectric;
+};
+
+// The accuracy columns of a guarded device row: a conductor's numerical error (write), albedo
+// variance and table RMSE (furnace); a dielectric furnace's reflectance and transmittance.
+void add_accuracy(ggxcl::Sampler& sampler, const BenchTask& task, const BenchReport& report, ExactValues& exact,
+                  BenchRow& row)
+{
+    const ggxcl::SampleParams& p = task.params;
+    if (p.eta != 0.0f) {
+        if (task.job == BenchJob::furnace) {
+            if (!exact.dielectric)
+                exact.dielectric = dielectric_exact(p);
+            row.dielectric = dielectric_accuracy(sampler, p, *exact.dielectric);
+        }
+        return;
+    }
+    if (task.job == BenchJob::write) {
+        row.has_error = true;
+        row.error = numerical_error(sampler, p.method, p.precision, p.sequence);
+    }
+    if (task.job == BenchJob::furnace && p.sequence == ggxcl::Sequence::philox) {
+        SceneVariance scene = albedo_scene_variance(sampler, p.method, p.precision, report.scene_size,
+                                                    report.samples_per_cell);
+        row.variance = scene.variance;
+        row.mean_albedo = scene.mean_albedo;
+    }
+    if (task.job == BenchJob::furnace && p.precision == ggxcl::Precision::precise) {
+        if (exact.albedo_table.empty())
+            exact.albedo_table = albedo_table(report.scene_size);
+        row.rmse_measured = albedo_table_rmse(sampler, p.method, p.precision, p.sequence, report.scene_size,
+                                              samples_at_budget(row, report), report.rmse_streams, exact.albedo_table);
+    }
+}
+
+BenchRow device_row(const BenchTask& task, Timing timing)
+{
+    const ggxcl::SampleParams& p = task.params;
+    if (task.job == BenchJob::store)
+        return row_of("all", "store-only", "write", timing);
+    const std::string precision(ggxcl::precision_name(p.precision));
+    BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), task.guards ? precision : precision + "-unguarded",
+                          job_name(task.job), timing);
+    row.sequence = std::string(ggxcl::sequence_name(p.sequence));
+    row.eta = p.eta;
+    if (p.eta != 0.0f)
+        row.transport = std::string(ggxcl::transport_name(p.transport));
+    return row;
+}
+
+void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchCommand& cmd, BenchReport& report)
+{
+    const std::vector<BenchTask> tasks = bench_tasks(plan);
     const std::vector<std::optional<OpCounts>> ops = measure_limit_inputs(sampler, tasks, report);
     std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
     DeviceTimer timer(sampler, report.count);
@@ -93,40 +191,13 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
     report.device_clock = timer.clock_description();
     if (timer.wall_clock())
         std::cerr << "device rows timed by wall clock: " << report.device_clock << "\n";
-    std::vector<double> exact;  // the albedo table's exact values, once
+    ExactValues exact;
     for (std::size_t t = 0; t < tasks.size(); ++t) {
-        const ggxcl::SampleParams& p = tasks[t].params;
-        std::string precision(ggxcl::precision_name(p.precision));
-        if (tasks[t].job == BenchJob::store) {
-            report.rows.push_back(row_of("all", "store-only", "write", timings[t]));
-            continue;
-        }
-        const bool guarded = tasks[t].guards;
-        BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), guarded ? precision : precision + "-unguarded",
-                              job_name(tasks[t].job), timings[t]);
-        row.sequence = std::string(ggxcl::sequence_name(p.sequence));
+        BenchRow row = device_row(tasks[t], timings[t]);
         if (ops[t])
             row.has_ops = true, row.ops = *ops[t];
-        if (!guarded) {  // measured for its speed only
-            report.rows.push_back(row);
-            continue;
-        }
-        if (!cmd.no_accuracy && tasks[t].job == BenchJob::write) {
-            row.has_error = true;
-            row.error = numerical_error(sampler, p.method, p.precision, p.sequence);
-        }
-        if (!cmd.no_accuracy && tasks[t].job == BenchJob::furnace && p.sequence == ggxcl::Sequence::philox) {
-            SceneVariance scene =
-                albedo_scene_variance(sampler, p.method, p.precision, report.scene_size, report.samples_per_cell);
-            row.variance = scene.variance;
-            row.mean_albedo = scene.mean_albedo;
-        }
-        if (!cmd.no_accuracy && tasks[t].job == BenchJob::furnace && p.precision == ggxcl::Precision::precise) {
-            if (exact.empty())
-                exact = albedo_table(report.scene_size);
-            row.rmse_measured = albedo_table_rmse(sampler, p.method, p.precision, p.sequence, report.scene_size,
-                                                  samples_at_budget(row, report), report.rmse_streams, exact);
-        }
+        if (!cmd.no_accuracy && tasks[t].guards && tasks[t].job != BenchJob::store)  // unguarded: speed only
+            add_accuracy(sampler, tasks[t], report, exact, row);
         report.rows.push_back(row);
     }
 }
@@ -151,7 +222,7 @@ void measure_native(const BenchPlan& plan, BenchReport& report)
             }
             for (const BenchRow& device : report.rows)
                 if (job == BenchJob::furnace && device.method == name && device.precision == "precise" &&
-                    device.job == "furnace" && device.sequence == "philox")
+                    device.job == "furnace" && device.sequence == "philox" && device.eta == 0.0f)
                     row.variance = device.variance, row.mean_albedo = device.mean_albedo;
             std::cerr << "  " << name << " native " << job_text << ": " << row.timing.median << " ns\n";
             rows.push_back(row);
@@ -218,7 +289,8 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
     write_outputs(cmd, report);
 }
 
-// The speed runs: every method in every precision mode.
+// The speed runs: every method in every precision mode, and with --eta every method but bounded
+// as a dielectric.
 std::vector<Batch> timed_batches(const BenchPlan& plan)
 {
     std::vector<Batch> batches;
@@ -227,6 +299,11 @@ std::vector<Batch> timed_batches(const BenchPlan& plan)
             ggxcl::SampleParams p = plan.base;
             p.method = ggxcl::parse_method(name);
             p.precision = ggxcl::parse_precision(mode);
+            batches.push_back({p, {0, 0, plan.settings.count}});
+            if (plan.settings.eta == 0.0f || p.method == ggxcl::Method::bounded)
+                continue;
+            p.eta = plan.settings.eta;
+            p.transport = plan.transport;
             batches.push_back({p, {0, 0, plan.settings.count}});
         }
     return batches;
@@ -255,6 +332,11 @@ Prepare add_bench_command(CLI::App& app)
     cmd->add_option("--scene", s->scene, "size of the albedo table (views x roughnesses)")->capture_default_str();
     cmd->add_option("--cell-samples", s->cell_samples, "samples per cell of the albedo table")->capture_default_str();
     cmd->add_option("--budget-ms", s->budget_ms, "time budget of the whole table for the RMSE column")->capture_default_str();
+    cmd->add_option("--eta", s->eta, "a rough dielectric's relative index (e.g. 1.5): its write (o + pdf_o) and "
+                                     "furnace rows beside the conductor's, every method but bounded; 0: none")
+        ->capture_default_str();
+    cmd->add_option("--transport", s->transport, "the dielectric rows' transport: radiance or importance")
+        ->capture_default_str();
     cmd->add_flag("--no-native", s->no_native, "skip the native C++ baseline");
     cmd->add_flag("--no-accuracy", s->no_accuracy, "skip the numerical and statistical accuracy columns");
     cmd->add_flag("--no-startup", s->no_startup, "skip the start-up timing");

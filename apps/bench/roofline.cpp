@@ -30,6 +30,7 @@ double stored_bytes_per_sample(BenchJob job)
 {
     switch (job) {
     case BenchJob::write: return 4 * sizeof(float);  // m (3 planes) and pdf_m
+    case BenchJob::write_o: return 4 * sizeof(float);  // o (3 planes) and pdf_o
     case BenchJob::furnace: return 2.0 * sizeof(float) / GGX_FURNACE_PER_ITEM;
     case BenchJob::store: return 4 * sizeof(float);  // bench_speed.cpp's store_only: 4 floats per work-item
     case BenchJob::world:

@@ -25,8 +25,8 @@ struct ComputeLimit {
 // Throws std::invalid_argument naming the class when a counted class has no positive peak.
 ComputeLimit compute_limit(const OpCounts& per_sample, const PeakRates& peaks);
 
-// Bytes a job stores per sample (write: m's three planes and pdf_m; furnace: two partial sums per
-// GGX_FURNACE_PER_ITEM samples; store: what store_only stores per work-item).  Throws
+// Bytes a job stores per sample (write: m's three planes and pdf_m; write-o: o's and pdf_o; furnace:
+// a conductor's two partial sums per GGX_FURNACE_PER_ITEM samples; store: what store_only stores per work-item).  Throws
 // std::invalid_argument for the jobs that also read per sample (world, per-sample).
 double stored_bytes_per_sample(BenchJob job);
 

@@ -6,7 +6,8 @@
 One point per method and precision mode (color: method, marker: mode), and
 in precise mode one per sequence of uniforms (filled: philox, hollow: sobol,
 whose RMSE is the measured one: the variance model holds for independent
-uniforms only); both axes logarithmic.  Lower left is better.
+uniforms only); both axes logarithmic.  Lower left is better.  Conductor rows
+only: a dielectric's rows (eta set, `ggx bench --eta`) are in the report's tables.
 
 Usage: python3 plot_bench.py BENCH.csv SPEED_ERROR.png SPEED_RMSE.png TITLE
 """
@@ -35,6 +36,11 @@ def y_of(row, y_column):
     return row[y_column]
 
 
+def conductor(row):
+    """Whether the row is a conductor's (eta 0; CSVs without the column hold only conductors)."""
+    return float(row.get("eta") or 0) == 0
+
+
 def method_colors(rows):
     """A colour per method, in the order the methods first appear in the data (the library's order)."""
     methods = []
@@ -49,7 +55,7 @@ def chart(rows, job, y_column, y_label, title, out_path):
     fig, ax = plt.subplots(figsize=(8, 5.5), dpi=100)
     for row in rows:
         y_text = y_of(row, y_column)
-        if row["job"] != job or not y_text or row["precision"] not in MARKERS:
+        if row["job"] != job or not y_text or row["precision"] not in MARKERS or not conductor(row):
             continue
         x, y = float(row["ns_median"]), max(float(y_text), 1e-9)
         hollow = row.get("sequence") == "sobol"

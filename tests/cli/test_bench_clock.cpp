@@ -3,18 +3,43 @@
 // (a driver that fills in no profiling timestamps gave 1 ns for 2^16
 // samples), and the report says how the rows were timed: by the events'
 // profiling on PoCL, by wall clock on Mesa rusticl, whose timestamps are
-// not filled in.
+// not filled in.  With --eta, a rough dielectric's rows beside the
+// conductor's for every exact method, and bounded's note.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
+
+// The cell of `line` under the header's column `name` (no quoted commas).
+std::string csv_cell(const std::string& csv, const std::string& line, const std::string& name)
+{
+    auto split = [](const std::string& text) {
+        std::vector<std::string> cells(1);
+        for (char c : text.substr(0, text.find('\n'))) {
+            if (c == ',')
+                cells.emplace_back();
+            else
+                cells.back().push_back(c);
+        }
+        return cells;
+    };
+    const std::vector<std::string> header = split(csv), cells = split(line);
+    const auto at = std::find(header.begin(), header.end(), name);
+    CAPTURE(name);
+    REQUIRE(at != header.end());
+    REQUIRE(cells.size() == header.size());
+    return cells[std::size_t(at - header.begin())];
+}
 
 std::string selected_device()
 {
@@ -52,4 +77,53 @@ TEST_CASE("ggx bench times device rows by a clock that can be right, and says wh
     } else {
         CHECK((md.find("event-profiled") != std::string::npos || md.find("wall-clock") != std::string::npos));
     }
+}
+
+TEST_CASE("ggx bench --eta puts a dielectric's rows beside the conductor's for every exact method")
+{
+    fs::path dir = ggxtest::scratch_dir("bench-eta");
+    ggxtest::Run run = ggxtest::run_ggx("bench --eta 1.5 --precisions precise --jobs write,furnace -n 2^14 --repeats 5 "
+                                        "--no-native --no-startup --scene 2 --cell-samples 2^8 --sequences philox --csv " +
+                                            (dir / "b.csv").string() + " --markdown " + (dir / "B.md").string(),
+                                        dir / "stderr.txt");
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    const std::string csv = ggxtest::read_all(dir / "b.csv");
+    for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
+        CAPTURE(method);
+        int conductor_o = 0, dielectric_o = 0, dielectric_furnace = 0, conductor_furnace = 0;
+        for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(csv)) {
+            if (row.method != method)
+                continue;
+            CAPTURE(row.line);
+            const bool dielectric = csv_cell(csv, row.line, "eta") == "1.5";
+            CHECK((dielectric || csv_cell(csv, row.line, "eta") == "0"));
+            CHECK(csv_cell(csv, row.line, "transport") == (dielectric ? "radiance" : ""));
+            conductor_o += row.job == "write-o" && !dielectric;
+            dielectric_o += row.job == "write-o" && dielectric;
+            conductor_furnace += row.job == "furnace" && !dielectric;
+            dielectric_furnace += row.job == "furnace" && dielectric;
+            if (row.job == "furnace" && dielectric)  // the reflectance and transmittance within 6 standard errors
+                for (const char* part : {"reflectance", "transmittance"}) {
+                    const double error = std::stod(csv_cell(csv, row.line, part)) -
+                                         std::stod(csv_cell(csv, row.line, std::string(part) + "_exact"));
+                    CHECK(std::fabs(error) < 6.0 * std::stod(csv_cell(csv, row.line, std::string(part) + "_se")));
+                }
+        }
+        const int exact = std::string(method) == "bounded" ? 0 : 1;  // bounded: no dielectric sampler
+        CHECK(conductor_o == exact);
+        CHECK(dielectric_o == exact);
+        CHECK(dielectric_furnace == exact);
+        CHECK(conductor_furnace == 1);
+    }
+    const std::string md = ggxtest::read_all(dir / "B.md");
+    CHECK(md.find("## Rough dielectric: eta 1.5, radiance transport") != std::string::npos);
+    for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso"}) {
+        CAPTURE(method);
+        CHECK(md.find("| " + std::string(method) + " | precise | write o + pdf_o | ") != std::string::npos);
+        CHECK(md.find("| " + std::string(method) + " | precise | fused furnace | ") != std::string::npos);
+    }
+    CHECK(md.find("| bounded | precise | fused furnace |") == std::string::npos);
+    CHECK(md.find("bounded: no dielectric rows; it has no exact dielectric sampler") != std::string::npos);
+    CHECK(md.find("ggxref::dielectric_albedo: R = ") != std::string::npos);
 }

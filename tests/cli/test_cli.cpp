@@ -210,6 +210,8 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"bench --scene 1", "--scene"},
         {"bench -n 2^31", "-n"},
         {"bench --csv /no/such/folder/b.csv", "--csv"},
+        {"bench --eta 1", "--eta"},
+        {"bench --eta 1.5 --transport sideways", "--transport"},
         {"converge --max-n 1000", "--max-n"},
         {"converge --min-n 2^10 --max-n 2^11", "--max-n"},
         {"converge --alphas 0.3,0", "--alphas"},
@@ -300,6 +302,12 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
                              "| heitz | furnace |", "every method within 2x of its limit (precise write and fused)"})
         CHECK(md.find(part) != std::string::npos);
     CHECK(md.find("G samples/s (precise, m + pdf_m written)") == std::string::npos);  // no absolute rate targets
+    CHECK(md.find("Rough dielectric") == std::string::npos);  // without --eta, conductors only
+    for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(csv)) {
+        CAPTURE(row.line);
+        CHECK(csv_cell(csv, row.line, "eta") == "0");
+        CHECK(row.job != "write-o");
+    }
     for (const char* png : {"b-speed-error.png", "b-speed-rmse.png"})
         CHECK(read_all(dir / png).substr(1, 3) == "PNG");
     fs::remove_all(dir);

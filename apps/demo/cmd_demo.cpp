@@ -3,6 +3,7 @@
 // sample cloud (.npy with sidecar, and .ply), a histogram with its figure,
 // and one summary page, index.md, with each method's chi-square p-value and
 // throughput and the figures embedded; one line per method says where.
+// With --eta, a rough dielectric: every method but bounded, over the whole sphere.
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -44,27 +45,71 @@ SampleJob cloud_job(const SampleOptions& options, ggxcl::Method method, std::uin
     return job;
 }
 
-std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult>& results, const std::string& device)
+// The methods the demo runs: all, or for a dielectric all but bounded (no exact dielectric sampler).
+std::vector<ggxcl::Method> demo_methods(const DemoCommand& demo)
 {
-    std::ostringstream md;
+    std::vector<ggxcl::Method> methods;
+    const bool dielectric = demo.options.parsed_eta() != 0.0f;
+    for (ggxcl::Method method : ggxcl::all_methods)
+        if (!dielectric || method != ggxcl::Method::bounded)
+            methods.push_back(method);
+    return methods;
+}
+
+// What the histograms bin: a conductor's reflections, or a dielectric's reflections and
+// refractions over the whole sphere.
+std::string binned_text(const DemoCommand& demo)
+{
+    const float eta = demo.options.parsed_eta();
+    if (eta == 0.0f)
+        return "Each method's reflected directions o,";
+    std::ostringstream text;
+    text << "A rough dielectric, eta " << eta << " (index below the surface over index above), "
+         << ggxcl::transport_name(demo.options.parsed_transport()) << " transport: each sample reflects with the "
+         << "exact Fresnel F(i.m), else refracts. Each method's directions o over the whole sphere (cos theta in "
+            "[-1, 1]: reflections above the surface, refractions below),";
+    return text.str();
+}
+
+// The page's first lines: the configuration and what was measured how.
+void write_intro(std::ostream& md, const DemoCommand& demo, const std::string& device)
+{
+    const bool dielectric = demo.options.parsed_eta() != 0.0f;
     md << "# ggx demo\n\nalpha " << demo.options.alpha << ", view theta " << demo.options.theta << " deg, phi "
-       << demo.options.phi << " deg, seed " << demo.options.seed << "; device: " << device << "\n\n"
-       << "Each method's reflected directions o, binned on the device over (phi, cos theta) in bins of equal solid "
-          "angle, against the counts its pdf predicts (chi-square, sparse bins pooled). Throughput is device "
-          "sampling and binning in "
+       << demo.options.phi << " deg, seed " << demo.options.seed;
+    if (dielectric)
+        md << ", eta " << demo.options.parsed_eta() << ", " << ggxcl::transport_name(demo.options.parsed_transport())
+           << " transport";
+    md << "; device: " << device << "\n\n"
+       << binned_text(demo)
+       << " binned on the device over (phi, cos theta) in bins of equal solid "
+          "angle, against the counts its pdf predicts (chi-square, sparse bins pooled). ";
+    if (dielectric)
+        md << "Samples without density (a reflection that left the view's side, a refraction that did not cross) "
+              "are counted apart and tested as one more category. ";
+    md << "Throughput is device sampling and binning in "
        << demo.options.precision << " mode" << (demo.options.precision == "precise" ? " (the default)" : "")
        << ", uniforms from the " << demo.options.sequence << " sequence"
        << (demo.options.sequence == "philox" ? " (the default)"
                                              : " (a net spreads its points more evenly than independent draws, so "
                                                "the chi-square statistic runs below its law and p-values near 1)")
-       << ".\n\n"
-       << "| method | chi-square | dof | p-value | samples/s | files |\n|---|---|---|---|---|---|\n";
+       << ".\n\n";
+}
+
+std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult>& results, const std::string& device)
+{
+    std::ostringstream md;
+    write_intro(md, demo, device);
+    md << "| method | chi-square | dof | p-value | samples/s | files |\n|---|---|---|---|---|---|\n";
     for (const MethodResult& r : results) {
         std::string name(ggxcl::method_name(r.method));
         md << "| " << name << " | " << r.histogram.chi_square << " | " << r.histogram.dof << " | "
            << r.histogram.p_value << " | " << r.histogram.samples_per_second << " | " << name << ".npy, " << name
            << ".ply, " << name << ".hist.* |\n";
     }
+    if (demo.options.parsed_eta() != 0.0f)
+        md << "\nbounded is left out: it has no exact dielectric sampler (its cap leaves out microfacet normals "
+              "that refract, so some transmitted directions are never drawn).\n";
     for (const MethodResult& r : results)
         if (!r.histogram.png.empty())
             md << "\n## " << ggxcl::method_name(r.method) << "\n\n![" << ggxcl::method_name(r.method)
@@ -81,7 +126,7 @@ DemoCounts check_demo(const DemoCommand& demo, std::vector<Batch>& batches)
 {
     DemoCounts counts{parse_count("-n", demo.count), parse_count("--histogram-n", demo.histogram_count)};
     std::vector<ggxcl::SampleParams> params;
-    for (ggxcl::Method method : ggxcl::all_methods)
+    for (ggxcl::Method method : demo_methods(demo))
         params.push_back(demo.options.for_method(method).params_for(method));
     std::uint64_t seed = demo.options.parsed_seed();
     for (const ggxcl::SampleParams& p : params) {
@@ -99,7 +144,7 @@ void run_demo(const DemoCommand& demo, DemoCounts counts)
     ggxcl::Sampler sampler(demo.options.device);
     std::cout << "device: " << sampler.device_name() << "\n";
     std::vector<MethodResult> results;
-    for (ggxcl::Method method : ggxcl::all_methods) {
+    for (ggxcl::Method method : demo_methods(demo)) {
         SampleOptions options = demo.options.for_method(method);
         std::string base = demo.out + "/" + std::string(ggxcl::method_name(method));
         run_sample_job(sampler, cloud_job(options, method, count, base + ".npy"));

@@ -1,6 +1,6 @@
 // test_cli.cpp - the `ggx` tool end to end: `sample` writes a .npy of the
 // requested columns and a JSON sidecar that read back correctly, `demo`
-// writes every method, and bad input exits 2 with a one-line message naming
+// writes every method (with --eta, a dielectric's), and bad input exits 2 with a one-line message naming
 // the flag and leaves no file behind.
 #include <doctest/doctest.h>
 
@@ -147,6 +147,38 @@ TEST_CASE("ggx demo writes clouds, histograms and a summary page for every metho
     }
     CHECK(page.find("binning in precise mode (the default)") != std::string::npos);  // the mode of the throughput
     CHECK(page.find("uniforms from the philox sequence (the default)") != std::string::npos);
+    CHECK(page.find("transport") == std::string::npos);  // a conductor: no eta, no transport
+    fs::remove_all(dir);
+}
+
+TEST_CASE("ggx demo --eta writes a rough dielectric's clouds and whole-sphere histograms for every method but bounded")
+{
+    fs::path dir = scratch() / "demo-eta";
+    REQUIRE(ggx("demo --eta 1.5 --transport importance -n 1000 --histogram-n 1e5 --no-png --out " + dir.string())
+                .status == 0);
+    std::string page = read_all(dir / "index.md");
+    for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso"}) {
+        CAPTURE(method);
+        ggxapp::NpyArray a = ggxapp::read_npy((dir / (std::string(method) + ".npy")).string());
+        REQUIRE(a.rows == 1000);
+        REQUIRE(a.columns == 8);  // m, o, pdf_o, weight
+        std::size_t below = 0;
+        for (std::size_t j = 0; j < a.rows; ++j)
+            below += a.data[j * 8 + 5] < 0.0f;  // o refracted below the surface
+        CHECK(below > 100);
+        CHECK(fs::exists(dir / (std::string(method) + ".ply")));
+        nlohmann::json h = nlohmann::json::parse(read_all(dir / (std::string(method) + ".hist.json")));
+        CHECK(h["eta"].get<double>() == doctest::Approx(1.5));
+        CHECK(h["transport"] == "importance");
+        CHECK(h.contains("invalid_samples"));
+        CHECK(h["p_value"].get<double>() > 1e-4);
+        CHECK(page.find("| " + std::string(method) + " |") != std::string::npos);
+    }
+    CHECK_FALSE(fs::exists(dir / "bounded.npy"));
+    CHECK(page.find("| bounded |") == std::string::npos);
+    CHECK(page.find("bounded is left out: it has no exact dielectric sampler") != std::string::npos);
+    CHECK(page.find("seed 0, eta 1.5, importance transport;") != std::string::npos);
+    CHECK(page.find("over the whole sphere") != std::string::npos);
     fs::remove_all(dir);
 }
 
@@ -224,6 +256,8 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"histogram --method caps --out /no/such/folder/h", "--out"},
         {"demo -n 0 --out " + (scratch() / "d").string(), "-n"},
         {"demo --alpha -1 --out " + (scratch() / "d").string(), "--alpha"},
+        {"demo --eta 1 --out " + (scratch() / "d").string(), "--eta"},
+        {"demo --eta 1.5 --transport sideways --out " + (scratch() / "d").string(), "--transport"},
         {"merge --out " + (scratch() / "m.txt").string() + " a.npy", "--out"},
         {"merge --out " + (scratch() / "m.npy").string() + " missing.npy", "SHARD"},
     };

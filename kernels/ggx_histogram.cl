@@ -85,7 +85,11 @@ GGX_INLINE uint ggx_sample_bin(ulong seed, ulong first, uint j, uint count, GGX_
     ggx_params p = ggx_load_params(j, count, GGX_PARAM_VALUES);
     ggx_sample s = ggx_bulk_sample(seed, first, j, p);
     const uint bin = ggx_bin_of(GGX_BIN_M ? s.m : s.o);
-    return (GGX_DIELECTRIC && !GGX_BIN_M && !(s.pdf_o > 0.0f)) ? (uint)GGX_BINS + 1u : bin;
+#if GGX_DIELECTRIC && !GGX_BIN_M
+    return s.pdf_o > 0.0f ? bin : (uint)GGX_BINS + 1u;
+#else
+    return bin;
+#endif
 }
 
 // Work-group g counts samples [g * size * per_item, (g + 1) * size * per_item) of the launch.

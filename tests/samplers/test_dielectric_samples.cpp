@@ -176,7 +176,7 @@ TEST_CASE("the dielectric white furnace: reflectance and transmittance against t
                 DielectricConfig c = config;
                 c.importance = importance;
                 const ggxcl::SampleParams p = ggxtest::dielectric_params(method, c);
-                const std::uint64_t n = 1u << 21;
+                const std::uint64_t n = 1u << 20;
                 const ggxcl::FurnaceSums sums = ggxtest::sampler().furnace(p, {21, 0, n});
                 const ggxref::DielectricAlbedo truth =
                     ggxref::dielectric_albedo(ggxbridge::reference_params(p), c.eta, !importance);

@@ -30,7 +30,7 @@ class ValidatedParams;  // SampleParams validated once by a public entry point (
 
 // Samples on the host.  Fields of several columns are planar: m[c * count + j]
 // is component c (x, y, z) of sample j, u[c * count + j] its uniform u1 (c = 0)
-// or u2 (c = 1).  Fields not requested stay empty.
+// or u2 (c = 1), and a dielectric's u3 (c = 2).  Fields not requested stay empty.
 struct SampleSet {
     std::uint64_t count = 0;
     std::vector<float> m, o, pdf_m, pdf_o, weight, u;
@@ -55,8 +55,8 @@ SampleView view_of(const SampleSet& set);  // its fields, stride = count
 
 // Per-sample parameters in the caller's buffers, planar with the stride of
 // the call: view and normal 3 planes (unit vectors), alpha 2 planes
-// (alpha_x, alpha_y), uniforms 2 planes (u1, u2 in [0, 1), used instead of
-// the sequence of SampleParams; a sample whose uniforms are not in [0, 1)
+// (alpha_x, alpha_y), uniforms 2 planes (u1, u2 in [0, 1); a dielectric's
+// 3, with u3), used instead of the sequence of SampleParams; a sample whose uniforms are not in [0, 1)
 // is the fallback m = o = n, pdfs and weight 0).  A default-constructed
 // buffer means "uniform" (for uniforms: from the sequence).
 // The two flags are promises about the buffers' contents that select a
@@ -70,7 +70,7 @@ struct DeviceInputs {
 };
 
 // Output buffers of the caller, planar with the stride of the call: m and o
-// hold 3 planes, u 2, the others one.  Only the fields whose buffer is set
+// hold 3 planes, u 2 (a dielectric's 3), the others one.  Only the fields whose buffer is set
 // are computed and written.
 struct DeviceOutputs {
     cl::Buffer m, o, pdf_m, pdf_o, weight, u;
@@ -175,10 +175,12 @@ public:
     void generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
                               const ChunkViewSink& sink, const PerSampleInputs& per_sample = {});
 
-    // The pdf of each direction o (per steradian) for the sampler of params.method.
+    // The pdf of each direction o (per steradian) for the sampler of params.method (with
+    // params.eta: its dielectric sampler's, both lobes over the whole sphere).
     std::vector<float> pdf(const SampleParams& params, const std::vector<Vec3>& directions,
                            const PerSampleInputs& per_sample = {});
-    // The BRDF value f(i, o) |cos theta_o| of each direction o, Fresnel 1 (kernels/ggx_bsdf.h), for
+    // The BSDF value f(i, o) |cos theta_o| of each direction o, Fresnel 1 (kernels/ggx_bsdf.h), or
+    // with params.eta the rough dielectric's in params.transport (ggx_eval_dielectric), for
     // the view, roughness and normal of params (the same for every method): with pdf(), the pair
     // multiple importance sampling needs; for a sampled o, eval / pdf_o is its weight.
     std::vector<float> eval(const SampleParams& params, const std::vector<Vec3>& directions,

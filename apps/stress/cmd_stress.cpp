@@ -3,6 +3,10 @@
 // cases of stress_grid; the failures are counted per (alpha, theta) cell
 // and kind.  Writes PREFIX.csv and a heat map per method, PREFIX-METHOD.png
 // (device and host rows, a panel per failure kind), and prints the totals.
+// With --eta the rough dielectric's map instead (stress_dielectric.hpp):
+// a layer of cells per index, an eta column in the CSV, the totals per
+// method and per index, and bounded listed as refused.
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 
@@ -11,6 +15,7 @@
 #include "commands.hpp"
 #include "plot.hpp"
 #include "sample_options.hpp"
+#include "stress_dielectric.hpp"
 #include "stress_run.hpp"
 
 namespace ggxapp {
@@ -18,7 +23,7 @@ namespace ggxapp {
 namespace {
 
 struct StressCommand {
-    std::string methods = "all", precision = "precise", device, out;
+    std::string methods = "all", precision = "precise", device, out, eta;
     bool no_png = false;
 };
 
@@ -30,48 +35,120 @@ std::vector<ggxcl::Method> parse_methods(const std::string& text)
     return methods;
 }
 
-void append_rows(std::ostringstream& csv, const std::string& method, const char* side, const std::string& precision,
-                 const StressAxes& axes, const StressMap& map)
+// --eta: all (dielectric_etas) or a comma-separated list, each a float index the library accepts
+// (finite, > 0, != 1); repeated values count once.
+std::vector<float> parse_etas(const std::string& text)
+{
+    if (text == "all")
+        return dielectric_etas();
+    const std::string allowed = "all, or a comma-separated list of relative indices of refraction (index below "
+                                "the surface over index above), each finite, > 0 and != 1 as a float, e.g. 1.5 or "
+                                "0.9999,1.0001";
+    if (text.empty() || text.front() == ',' || text.back() == ',' || text.find(",,") != std::string::npos)
+        throw UsageError("--eta", text, allowed);
+    std::vector<float> etas;
+    std::stringstream items(text);
+    for (std::string item; std::getline(items, item, ',');) {
+        float eta = 0.0f;
+        try {
+            eta = parse_eta("--eta", item);
+        } catch (const UsageError&) {
+        }
+        if (eta == 0.0f)
+            throw UsageError("--eta", text, allowed);
+        if (std::find(etas.begin(), etas.end(), eta) == etas.end())
+            etas.push_back(eta);
+    }
+    return etas;
+}
+
+// One CSV row per cell of `cells` (row-major over alpha x theta), each led by `lead`.
+template <class Cell>
+void append_cells(std::ostringstream& csv, const std::string& lead, const StressAxes& axes, const Cell* cells)
 {
     for (std::size_t r = 0; r < axes.alphas.size(); ++r)
         for (std::size_t c = 0; c < axes.cos_theta.size(); ++c) {
-            const CellCounts& cell = map[r * axes.cos_theta.size() + c];
-            csv << method << "," << side << "," << precision << "," << axes.alphas[r] << "," << axes.theta_degrees[c]
-                << "," << cell.cases;
+            const Cell& cell = cells[r * axes.cos_theta.size() + c];
+            csv << lead << axes.alphas[r] << "," << axes.theta_degrees[c] << "," << cell.cases;
             for (std::uint64_t n : cell.failures)
                 csv << "," << n;
             csv << "\n";
         }
 }
 
-void print_totals(const std::string& method, const char* side, const StressMap& map)
+void append_rows(std::ostringstream& csv, const std::string& method, const char* side, const std::string& precision,
+                 const StressAxes& axes, const StressMap& map)
 {
-    CellCounts total;
-    for (const CellCounts& cell : map) {
-        total.cases += cell.cases;
-        for (int k = 0; k < failure_kinds; ++k)
-            total.failures[k] += cell.failures[k];
+    append_cells(csv, method + "," + side + "," + precision + ",", axes, map.data());
+}
+
+void append_dielectric_rows(std::ostringstream& csv, const std::string& method, const char* side,
+                            const std::string& precision, const StressAxes& axes, const dielectric::Map& map)
+{
+    const std::size_t layer = axes.alphas.size() * axes.cos_theta.size();
+    for (std::size_t e = 0; e < axes.etas.size(); ++e) {
+        std::ostringstream lead;
+        lead << std::setprecision(9) << method << "," << side << "," << precision << "," << axes.etas[e] << ",";
+        append_cells(csv, lead.str(), axes, map.data() + e * layer);
     }
-    std::cout << "| " << method << " | " << side << " | " << total.cases;
+}
+
+template <class Cell>
+void add_cells(Cell& total, const Cell* cells, std::size_t count)
+{
+    for (std::size_t j = 0; j < count; ++j) {
+        total.cases += cells[j].cases;
+        for (std::size_t k = 0; k < total.failures.size(); ++k)
+            total.failures[k] += cells[j].failures[k];
+    }
+}
+
+template <class Cell>
+void print_total(const std::string& label, const char* side, const Cell& total)
+{
+    std::cout << "| " << label << " | " << side << " | " << total.cases;
     for (std::uint64_t n : total.failures)
         std::cout << " | " << n;
     std::cout << " |\n";
 }
 
+void print_totals(const std::string& method, const char* side, const StressMap& map)
+{
+    CellCounts total;
+    add_cells(total, map.data(), map.size());
+    print_total(method, side, total);
+}
+
 struct StressPlan {
     std::vector<ggxcl::Method> methods;
     ggxcl::Precision precision = ggxcl::Precision::precise;
+    std::vector<float> etas;  // empty: the conductor's map
 };
 
 StressPlan plan_stress(const StressCommand& cmd)
 {
-    StressPlan plan{parse_methods(cmd.methods)};
+    StressPlan plan;
+    plan.methods = parse_methods(cmd.methods);
     try {
         plan.precision = ggxcl::parse_precision(cmd.precision);
     } catch (const ggxcl::InvalidArgument&) {
         throw UsageError("--precision", cmd.precision, "one of " + ggxcl::precision_list());
     }
+    if (!cmd.eta.empty())
+        plan.etas = parse_etas(cmd.eta);
     return plan;
+}
+
+// The header of a totals table (Markdown) whose first column is `first`.
+void print_table_header(const std::string& first, int kinds, const char* (*name)(int))
+{
+    std::cout << "| " << first << " | side | cases";
+    for (int k = 0; k < kinds; ++k)
+        std::cout << " | " << name(k);
+    std::cout << " |\n|---|---|---|";
+    for (int k = 0; k < kinds; ++k)
+        std::cout << "---|";
+    std::cout << "\n";
 }
 
 // The CSV's header line and the totals table's header (Markdown).
@@ -81,19 +158,11 @@ void write_headers(std::ostringstream& csv)
     for (int k = 0; k < failure_kinds; ++k)
         csv << "," << failure_name(k);
     csv << "\n";
-    std::cout << "| method | side | cases";
-    for (int k = 0; k < failure_kinds; ++k)
-        std::cout << " | " << failure_name(k);
-    std::cout << " |\n|---|---|---|";
-    for (int k = 0; k < failure_kinds; ++k)
-        std::cout << "---|";
-    std::cout << "\n";
+    print_table_header("method", failure_kinds, failure_name);
 }
 
-void run_stress(const StressCommand& cmd, const StressPlan& plan)
+void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Sampler& sampler)
 {
-    check_writable_folder("--out", cmd.out + ".csv");
-    ggxcl::Sampler sampler(cmd.device);
     StressAxes axes = stress_axes();
     std::ostringstream csv;
     write_headers(csv);
@@ -108,6 +177,73 @@ void run_stress(const StressCommand& cmd, const StressPlan& plan)
         print_totals(name, "host", host);
     }
     write_text_file(cmd.out + ".csv", csv.str());
+}
+
+// The dielectric's maps of one method, device and host.
+struct DielectricMaps {
+    std::string method;
+    dielectric::Map device, host;
+};
+
+// The totals per index over every method run, device and host.
+void print_eta_totals(const StressAxes& axes, const std::vector<DielectricMaps>& runs)
+{
+    std::cout << "\nPer index, every method together:\n\n";
+    print_table_header("eta", dielectric::kinds, dielectric::kind_name);
+    const std::size_t layer = axes.alphas.size() * axes.cos_theta.size();
+    for (std::size_t e = 0; e < axes.etas.size(); ++e)
+        for (const char* side : {"device", "host"}) {
+            dielectric::Counts total;
+            for (const DielectricMaps& run : runs)
+                add_cells(total, (side[0] == 'd' ? run.device : run.host).data() + e * layer, layer);
+            std::ostringstream label;
+            label << std::setprecision(9) << axes.etas[e];
+            print_total(label.str(), side, total);
+        }
+}
+
+void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Sampler& sampler)
+{
+    StressAxes axes = dielectric_axes(plan.etas);
+    std::ostringstream csv;
+    csv << std::setprecision(9) << "method,side,precision,eta,alpha,theta_degrees,cases";
+    for (int k = 0; k < dielectric::kinds; ++k)
+        csv << "," << dielectric::kind_name(k);
+    csv << "\n";
+    print_table_header("method", dielectric::kinds, dielectric::kind_name);
+    std::vector<DielectricMaps> runs;
+    for (ggxcl::Method method : plan.methods) {
+        std::string name(ggxcl::method_name(method));
+        if (method == ggxcl::Method::bounded) {
+            std::cout << "| " << name << " | refused: no exact dielectric sampler |\n";
+            continue;
+        }
+        std::vector<StressCase> cases = dielectric_cases(method, axes);
+        DielectricMaps run{name, dielectric::device_map(sampler, method, plan.precision, cases, axes),
+                           dielectric::host_map(method, cases, axes)};
+        append_dielectric_rows(csv, name, "device", cmd.precision, axes, run.device);
+        append_dielectric_rows(csv, name, "host", "double", axes, run.host);
+        for (const char* side : {"device", "host"}) {
+            dielectric::Counts total;
+            const dielectric::Map& map = side[0] == 'd' ? run.device : run.host;
+            add_cells(total, map.data(), map.size());
+            print_total(name, side, total);
+        }
+        runs.push_back(std::move(run));
+    }
+    if (!runs.empty())
+        print_eta_totals(axes, runs);
+    write_text_file(cmd.out + ".csv", csv.str());
+}
+
+void run_stress(const StressCommand& cmd, const StressPlan& plan)
+{
+    check_writable_folder("--out", cmd.out + ".csv");
+    ggxcl::Sampler sampler(cmd.device);
+    if (plan.etas.empty())
+        run_conductor_stress(cmd, plan, sampler);
+    else
+        run_dielectric_stress(cmd, plan, sampler);
     if (!cmd.no_png)
         run_plot_script("plot_stress.py", {cmd.out + ".csv", cmd.out});
 }
@@ -123,6 +259,9 @@ Prepare add_stress_command(CLI::App& app)
     cmd->add_option("--precision", s->precision, "precision mode on the device: one of " + ggxcl::precision_list())
         ->capture_default_str();
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
+    cmd->add_option("--eta", s->eta, "the rough dielectric's map instead, over these relative indices (index below "
+                                     "the surface over index above; comma-separated, each > 0 and != 1), or all: "
+                                     "near 1 from both sides, typical and extreme (every method but bounded)");
     cmd->add_option("--out", s->out, "output prefix: PREFIX.csv and PREFIX-METHOD.png")->required();
     cmd->add_flag("--no-png", s->no_png, "write the CSV only (no Python needed)");
     return [cmd, s]() -> std::optional<Work> {

@@ -77,19 +77,56 @@ std::array<float, 2> rim_pair(ggxcl::Method method, const std::array<float, 2>& 
     return {float(u < 1.0 ? u : 0.0), one_below};
 }
 
-} // namespace
-
-StressAxes stress_axes()
+// The roughness rows alpha = 1e-7 .. 1e2 in half decades and the given view columns.
+StressAxes axes_of(const std::vector<double>& cos_theta)
 {
     StressAxes axes;
     for (int r = 0; r <= 18; ++r)
         axes.alphas.push_back(std::pow(10.0, -7.0 + 0.5 * r));
     const double rad = 3.14159265358979323846 / 180.0;
-    axes.cos_theta = {1.0, std::cos(30 * rad), std::cos(60 * rad), std::cos(85 * rad), std::cos(89 * rad), 1e-4, 1e-7,
-                      0.0, std::cos(95 * rad), std::cos(120 * rad), std::cos(150 * rad), std::cos(179 * rad), -1.0};
+    axes.cos_theta = cos_theta;
     for (double c : axes.cos_theta)
         axes.theta_degrees.push_back(std::acos(c) / rad);
     return axes;
+}
+
+// The view as a dielectric sees it: mirrored through the surface when below (i.n < 0).
+ggxcl::Vec3 view_from_above(const ggxcl::Vec3& view, const ggxref::Vec3& n)
+{
+    const ggxref::Vec3 i{view.x, view.y, view.z};
+    const double height = ggxref::dot(i, n);
+    const ggxref::Vec3 v = height < 0.0 ? i - (2.0 * height) * n : i;
+    return {float(v.x), float(v.y), float(v.z)};
+}
+
+// The dielectric's uniforms: stress_cases' pairs (the edges, the random ones, the rim pair), each
+// with u3 = 0 (reflects wherever F > 0), 1/2 (random for the random pairs) and 1 - 2^-24 (refracts
+// wherever F < 1).
+std::vector<std::array<float, 3>> uniform_triples(const std::array<float, 2>& rim)
+{
+    std::vector<std::array<float, 3>> triples;
+    auto add = [&](float u1, float u2, float middle) {
+        for (float u3 : {0.0f, middle, one_below})
+            triples.push_back({u1, u2, u3});
+    };
+    for (float a : {0.0f, 0.5f, one_below})
+        for (float b : {0.0f, 0.5f, one_below})
+            add(a, b, 0.5f);
+    for (std::uint64_t k = 0; k < 8; ++k) {
+        std::array<double, 2> u = ggxref::uniforms(2026, k);
+        add(float(u[0]), float(u[1]), float(ggxref::uniforms(2027, k)[0]));
+    }
+    add(rim[0], rim[1], 0.5f);
+    return triples;
+}
+
+} // namespace
+
+StressAxes stress_axes()
+{
+    const double rad = 3.14159265358979323846 / 180.0;
+    return axes_of({1.0, std::cos(30 * rad), std::cos(60 * rad), std::cos(85 * rad), std::cos(89 * rad), 1e-4, 1e-7,
+                    0.0, std::cos(95 * rad), std::cos(120 * rad), std::cos(150 * rad), std::cos(179 * rad), -1.0});
 }
 
 std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axes)
@@ -108,6 +145,39 @@ std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axe
                                          row, column});
                 }
         }
+    return cases;
+}
+
+std::vector<float> dielectric_etas()
+{
+    return {1e-3f, 1.0f / 1.5f, 0.9999f, 1.0f - 0x1p-24f, 1.0f + 0x1p-23f, 1.0001f, 1.33f, 1.5f, 2.4f, 10.0f, 100.0f};
+}
+
+StressAxes dielectric_axes(const std::vector<float>& etas)
+{
+    const double rad = 3.14159265358979323846 / 180.0;
+    std::vector<double> cos_theta{1.0, -1.0, 1e-4, -1e-4, 1e-7, -1e-7, 0.0};
+    for (double degrees : {30.0, 45.0, 60.0, 85.0, 89.0, 91.0, 95.0, 120.0, 135.0, 150.0, 179.0})
+        cos_theta.push_back(std::cos(degrees * rad));
+    std::sort(cos_theta.begin(), cos_theta.end(), [](double a, double b) { return a > b; });
+    StressAxes axes = axes_of(cos_theta);
+    axes.etas = etas;
+    return axes;
+}
+
+std::vector<StressCase> dielectric_cases(ggxcl::Method method, const StressAxes& axes)
+{
+    std::vector<StressCase> cases;
+    for (float eta : axes.etas)
+        for (int row = 0; row < int(axes.alphas.size()); ++row)
+            for (int column = 0; column < int(axes.cos_theta.size()); ++column)
+                for (const ggxref::Vec3& n : normals_for(method))
+                    for (const auto& alpha : roughness_pairs(method, axes.alphas[row])) {
+                        const ggxcl::Vec3 view = view_about(n, axes.cos_theta[column]);
+                        const ggxcl::Vec3 normal{float(n.x), float(n.y), float(n.z)};
+                        for (const auto& u : uniform_triples(rim_pair(method, alpha, view_from_above(view, n), n)))
+                            cases.push_back({alpha[0], alpha[1], view, normal, u[0], u[1], row, column, u[2], eta});
+                    }
     return cases;
 }
 

@@ -1,9 +1,12 @@
-// stress_run.cpp - device and host runs of the stress cases, classified.
+// stress_run.cpp - device and host runs of the stress cases, classified: the conductor's map
+// (stress_run.hpp) and the rough dielectric's (stress_dielectric.hpp).
 #include "stress_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "reference_bridge.hpp"
+#include "stress_dielectric.hpp"
 
 namespace ggxapp {
 
@@ -60,15 +63,29 @@ std::string stress_defines(ggxcl::Method method, bool guards)
     return "-DGGX_METHOD=" + std::to_string(static_cast<int>(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0");
 }
 
-namespace {
-
-// The precision mode's options are the library's own (ggxcl::precision_options).
-std::string stress_options(const cl::Device& device, ggxcl::Method method, ggxcl::Precision precision, bool guards)
+std::string stress_options(const cl::Device& device, const std::string& defines, ggxcl::Precision precision)
 {
-    return stress_defines(method, guards) + ggxcl::device_options(device) + ggxcl::precision_options(device, precision);
+    return defines + ggxcl::device_options(device) + ggxcl::precision_options(device, precision);
 }
 
-} // namespace
+std::vector<float> run_stress_kernel(ggxcl::Sampler& sampler, const std::string& options,
+                                     const std::vector<float>& in, std::size_t count, int output_planes)
+{
+    std::vector<float> out(output_planes * count);
+    cl::Program program(sampler.context(), ggxcl::kernel_source("ggx_stress.cl"));
+    program.build({sampler.device()}, options.c_str());
+    cl::Kernel kernel(program, "ggx_stress");
+    cl::Buffer in_buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
+                         const_cast<float*>(in.data()));
+    cl::Buffer out_buffer(sampler.context(), CL_MEM_WRITE_ONLY, out.size() * sizeof(float));
+    kernel.setArg(0, cl_uint(count));
+    kernel.setArg(1, in_buffer);
+    kernel.setArg(2, out_buffer);
+    std::size_t global = (count + 255) / 256 * 256;
+    sampler.queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(256));
+    sampler.queue().enqueueReadBuffer(out_buffer, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+    return out;
+}
 
 const char* failure_name(int kind)
 {
@@ -103,19 +120,8 @@ StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
 {
     const std::size_t n = cases.size();
-    std::vector<float> in = planar_inputs(cases), out(output_planes * n);
-    cl::Program program(sampler.context(), ggxcl::kernel_source("ggx_stress.cl"));
-    program.build({sampler.device()}, stress_options(sampler.device(), method, precision, guards).c_str());
-    cl::Kernel kernel(program, "ggx_stress");
-    cl::Buffer in_buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
-                         in.data());
-    cl::Buffer out_buffer(sampler.context(), CL_MEM_WRITE_ONLY, out.size() * sizeof(float));
-    kernel.setArg(0, cl_uint(n));
-    kernel.setArg(1, in_buffer);
-    kernel.setArg(2, out_buffer);
-    std::size_t global = (n + 255) / 256 * 256;
-    sampler.queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(256));
-    sampler.queue().enqueueReadBuffer(out_buffer, CL_TRUE, 0, out.size() * sizeof(float), out.data());
+    const std::string options = stress_options(sampler.device(), stress_defines(method, guards), precision);
+    std::vector<float> out = run_stress_kernel(sampler, options, planar_inputs(cases), n, output_planes);
     StressMap map(axes.alphas.size() * axes.cos_theta.size());
     for (std::size_t j = 0; j < n; ++j) {
         auto at = [&](int k) { return double(out[k * n + j]); };
@@ -138,5 +144,257 @@ StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& c
     }
     return map;
 }
+
+// ---- The rough dielectric's map (stress_dielectric.hpp) ----
+
+namespace dielectric {
+
+namespace {
+
+constexpr int input_planes = 12, output_planes = 11;
+
+double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+bool all_finite(const StressOutcome& s)
+{
+    double values[] = {s.m[0],  s.m[1],  s.m[2],   s.o[0],      s.o[1],           s.o[2],
+                       s.pdf_m, s.pdf_o, s.weight, s.pdf_again, s.weight_importance};
+    for (double v : values)
+        if (!std::isfinite(v))
+            return false;
+    return true;
+}
+
+// Within 1e-6 of the surface about a tilted normal (caps-iso's world space), float and double may
+// disagree on which side a direction is.
+bool near_surface(const StressCase& c, double height)
+{
+    return !(c.normal.x == 0.0f && c.normal.y == 0.0f) && std::fabs(height) < 1e-6;
+}
+
+// The view's side: 1 for i.n >= 0, -1 below, 0 (either) near the surface about a tilted normal.
+int view_side(const StressCase& c)
+{
+    const double i[3] = {c.view.x, c.view.y, c.view.z}, n[3] = {c.normal.x, c.normal.y, c.normal.z};
+    const double height = dot(i, n);
+    if (near_surface(c, height))
+        return 0;
+    return height >= 0.0 ? 1 : -1;
+}
+
+// m = o = sign n (to 1e-6: caps-iso mirrors a tilted normal in float), pdfs and weights 0.
+bool at_normal(const double* v, const double* n, int sign)
+{
+    for (int k = 0; k < 3; ++k)
+        if (!(std::fabs(v[k] - sign * n[k]) <= 1e-6))
+            return false;
+    return true;
+}
+
+bool is_fallback(const StressOutcome& s, const double* n, int side)
+{
+    if (!(s.pdf_m == 0.0 && s.pdf_o == 0.0 && s.weight == 0.0 && s.weight_importance == 0.0))
+        return false;
+    for (int sign : {1, -1})
+        if ((side == 0 || side == sign) && at_normal(s.m, n, sign) && at_normal(s.o, n, sign))
+            return true;
+    return false;
+}
+
+double distance(const double* a, const double* b)
+{
+    const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    return std::sqrt(dot(d, d));
+}
+
+// How a sample is read: the view's side (1 above, -1 below) and whether o crossed the surface.
+struct Reading {
+    int sign;
+    bool across;
+};
+
+// Every reading of the sample: one, or, near the surface about a tilted normal, both sides of the
+// view and of o.
+std::vector<Reading> readings_of(const StressOutcome& s, const StressCase& c, const double* n)
+{
+    const int side = view_side(c);
+    const double on = dot(s.o, n);
+    std::vector<Reading> readings;
+    for (int sign : {1, -1}) {
+        if (side != 0 && side != sign)
+            continue;
+        if (near_surface(c, on))
+            readings.insert(readings.end(), {{sign, false}, {sign, true}});
+        else
+            readings.push_back({sign, sign * on < 0.0});
+    }
+    return readings;
+}
+
+// The index seen from the view's side.
+double eta_seen(const StressCase& c, int sign) { return sign > 0 ? double(c.eta) : 1.0 / double(c.eta); }
+
+// A valid sample's o against its lobe: a reflection is 2 (i.m) m - i; a transmission a refraction
+// (o.m < 0, and Snell's law on the tangential parts: i_t + eta' o_t = 0); o in the surface is neither.
+bool outside_lobe(const StressOutcome& s, const StressCase& c, const double* n, Reading r)
+{
+    const double i[3] = {c.view.x, c.view.y, c.view.z};
+    const double im = dot(i, s.m), on = dot(s.o, n);
+    if (on == 0.0 && !near_surface(c, on))
+        return true;
+    if (!r.across) {
+        const double reflected[3] = {2.0 * im * s.m[0] - i[0], 2.0 * im * s.m[1] - i[1], 2.0 * im * s.m[2] - i[2]};
+        return distance(s.o, reflected) > 1e-4;
+    }
+    const double eta = eta_seen(c, r.sign), om = dot(s.o, s.m);
+    double t[3];
+    for (int k = 0; k < 3; ++k)
+        t[k] = (i[k] - im * s.m[k]) + eta * (s.o[k] - om * s.m[k]);
+    return !(om < 0.0) || std::sqrt(dot(t, t)) > 1e-4 * (1.0 + eta);
+}
+
+// Weights: never negative, 0 without density, and radiance = importance / eta'^2 for a transmission.
+bool weight_wrong(const StressOutcome& s, const StressCase& c, bool valid, Reading r)
+{
+    if (s.weight < 0.0 || s.weight_importance < 0.0)
+        return true;
+    if (!valid)
+        return s.weight != 0.0 || s.weight_importance != 0.0;
+    const double eta = eta_seen(c, r.sign);
+    const double expected = r.across ? s.weight_importance / (eta * eta) : s.weight_importance;
+    return std::fabs(s.weight - expected) > 1e-5 * expected;
+}
+
+} // namespace
+
+const char* kind_name(int kind)
+{
+    static const char* names[] = {"nan_inf",     "fallback",   "not_unit", "m_side",          "invalid",
+                                  "transmitted", "bad_weight", "off_lobe", "pdf_nonpositive", "pdf_mismatch"};
+    return names[kind];
+}
+
+bool is_failure(int kind) { return kind != invalid && kind != transmitted; }
+
+namespace {
+
+// The kinds after nan_inf and fallback, for one reading of the sample.
+std::array<bool, kinds> judge(const StressOutcome& s, const StressCase& c, const double* n, Reading r)
+{
+    std::array<bool, kinds> k{};
+    const bool valid = s.pdf_o > 0.0;
+    k[not_unit] = std::fabs(std::sqrt(dot(s.m, s.m)) - 1.0) > 1e-5 || std::fabs(std::sqrt(dot(s.o, s.o)) - 1.0) > 1e-5;
+    k[m_side] = !(r.sign * dot(s.m, n) > 0.0);
+    k[invalid] = !valid;
+    k[transmitted] = valid && r.across;
+    k[bad_weight] = weight_wrong(s, c, valid, r);
+    k[pdf_nonpositive] = s.pdf_o < 0.0 || s.pdf_m < 0.0 || (valid && !(s.pdf_m > 0.0));
+    if (valid) {
+        k[off_lobe] = outside_lobe(s, c, n, r);
+        k[pdf_mismatch] = !(std::fabs(s.pdf_again - s.pdf_o) <= 1e-3 * s.pdf_o);
+    }
+    return k;
+}
+
+int failures(const std::array<bool, kinds>& k)
+{
+    int count = 0;
+    for (int kind = 0; kind < kinds; ++kind)
+        count += is_failure(kind) && k[kind];
+    return count;
+}
+
+} // namespace
+
+std::array<bool, kinds> classify(const StressOutcome& s, const StressCase& c)
+{
+    std::array<bool, kinds> k{};
+    k[nan_inf] = !all_finite(s);
+    const double n[3] = {c.normal.x, c.normal.y, c.normal.z};
+    k[fallback] = !k[nan_inf] && is_fallback(s, n, view_side(c));
+    if (k[nan_inf] || k[fallback])
+        return k;
+    bool first = true;
+    for (const Reading& r : readings_of(s, c, n)) {  // the reading with the fewest failures
+        const std::array<bool, kinds> found = judge(s, c, n, r);
+        if (first || failures(found) < failures(k))
+            k = found;
+        first = false;
+    }
+    return k;
+}
+
+void count(Map& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome)
+{
+    const std::size_t layer = std::find(axes.etas.begin(), axes.etas.end(), c.eta) - axes.etas.begin();
+    Counts& cell = map.at((layer * axes.alphas.size() + c.row) * axes.cos_theta.size() + c.column);
+    ++cell.cases;
+    std::array<bool, kinds> found = classify(outcome, c);
+    for (int k = 0; k < kinds; ++k)
+        cell.failures[k] += found[k];
+}
+
+std::string defines(ggxcl::Method method, bool guards) { return stress_defines(method, guards) + " -DGGX_DIELECTRIC=1"; }
+
+namespace {
+
+Map empty_map(const StressAxes& axes) { return Map(axes.etas.size() * axes.alphas.size() * axes.cos_theta.size()); }
+
+std::vector<float> planar_inputs(const std::vector<StressCase>& cases)
+{
+    const std::size_t n = cases.size();
+    std::vector<float> in(input_planes * n);
+    for (std::size_t j = 0; j < n; ++j) {
+        const StressCase& c = cases[j];
+        float values[input_planes] = {c.ax,       c.ay,       c.view.x,   c.view.y, c.view.z, c.normal.x,
+                                      c.normal.y, c.normal.z, c.u1,       c.u2,     c.u3,     c.eta};
+        for (int k = 0; k < input_planes; ++k)
+            in[k * n + j] = values[k];
+    }
+    return in;
+}
+
+} // namespace
+
+std::vector<StressOutcome> device_outcomes(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+                                           const std::vector<StressCase>& cases, bool guards)
+{
+    const std::size_t n = cases.size();
+    const std::string options = stress_options(sampler.device(), defines(method, guards), precision);
+    std::vector<float> out = run_stress_kernel(sampler, options, planar_inputs(cases), n, output_planes);
+    std::vector<StressOutcome> outcomes(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        auto at = [&](int k) { return double(out[k * n + j]); };
+        outcomes[j] = {{at(0), at(1), at(2)}, {at(3), at(4), at(5)}, at(6), at(7), at(8), at(9), at(10)};
+    }
+    return outcomes;
+}
+
+Map device_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+               const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
+{
+    std::vector<StressOutcome> outcomes = device_outcomes(sampler, method, precision, cases, guards);
+    Map map = empty_map(axes);
+    for (std::size_t j = 0; j < cases.size(); ++j)
+        count(map, axes, cases[j], outcomes[j]);
+    return map;
+}
+
+Map host_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
+{
+    Map map = empty_map(axes);
+    ggxref::Method ref = ggxbridge::reference_method(method);
+    for (const StressCase& c : cases) {
+        ggxref::Params p{c.ax, c.ay, {c.view.x, c.view.y, c.view.z}, {c.normal.x, c.normal.y, c.normal.z}};
+        ggxref::Sample r = ggxref::dielectric_sample(ref, p, c.eta, true, c.u1, c.u2, c.u3);
+        ggxref::Sample imp = ggxref::dielectric_sample(ref, p, c.eta, false, c.u1, c.u2, c.u3);
+        StressOutcome s{{r.m.x, r.m.y, r.m.z}, {r.o.x, r.o.y, r.o.z}, r.pdf_m, r.pdf_o, r.weight,
+                        ggxref::dielectric_pdf_o(ref, p, c.eta, r.o), imp.weight};
+        count(map, axes, c, s);
+    }
+    return map;
+}
+
+} // namespace dielectric
 
 } // namespace ggxapp

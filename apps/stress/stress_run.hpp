@@ -1,7 +1,7 @@
 // stress_run.hpp - the stability map's measurements: every case of
 // stress_grid run on the device (kernels/ggx_stress.cl), on the host
 // reference and through the device headers compiled as C++, each outcome classified by failure kind, and the counts per
-// cell (alpha row x theta column) of the map.
+// cell (alpha row x theta column) of the map.  The rough dielectric's map: stress_dielectric.hpp.
 #pragma once
 
 #include <array>
@@ -34,13 +34,16 @@ std::string stress_defines(ggxcl::Method method, bool guards);
 
 struct StressOutcome {
     double m[3], o[3], pdf_m, pdf_o, weight, pdf_again;
+    double weight_importance = 0.0;  // a dielectric's: the same sample's weight in importance transport
 };
 std::array<bool, failure_kinds> classify(const StressOutcome& outcome, const ggxcl::Vec3& normal);
 
-struct CellCounts {
+template <std::size_t Kinds>
+struct Counts {
     std::uint64_t cases = 0;
-    std::array<std::uint64_t, failure_kinds> failures{};
+    std::array<std::uint64_t, Kinds> failures{};
 };
+using CellCounts = Counts<failure_kinds>;
 
 // Counts per cell, row-major: cell (row, column) at row * columns + column.
 using StressMap = std::vector<CellCounts>;
@@ -55,5 +58,12 @@ StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& ca
 
 // Adds one classified outcome of case c to its cell of the map.
 void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome);
+
+// Runs kernels/ggx_stress.cl built with `options` over `count` cases of planar inputs (in[k * count + j])
+// and returns its `output_planes` planes of outputs.
+std::vector<float> run_stress_kernel(ggxcl::Sampler& sampler, const std::string& options,
+                                     const std::vector<float>& in, std::size_t count, int output_planes);
+// The device's and the precision mode's options (the library's own) after `defines`.
+std::string stress_options(const cl::Device& device, const std::string& defines, ggxcl::Precision precision);
 
 } // namespace ggxapp

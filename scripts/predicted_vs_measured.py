@@ -10,11 +10,12 @@ import sys
 
 
 def measured(path):
-    """{(method, job): ns per sample} of the precise, philox rows."""
+    """{(method, job): ns per sample} of the precise, philox rows of conductors (eta 0)."""
     rows = {}
     with open(path) as f:
         for row in csv.DictReader(f):
-            if row["precision"] == "precise" and row.get("sequence", "philox") == "philox":
+            conductor = float(row.get("eta") or 0) == 0
+            if row["precision"] == "precise" and row.get("sequence", "philox") == "philox" and conductor:
                 rows[(row["method"], row["job"])] = float(row["ns_median"])
     return rows
 

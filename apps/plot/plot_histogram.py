@@ -30,7 +30,8 @@ def load(summary_path):
 def title_of(s):
     alpha = s["alpha"]
     a = f"{alpha[0]:g}" if alpha[0] == alpha[1] else f"({alpha[0]:g}, {alpha[1]:g})"
-    return (f"{s['method']}: alpha {a}, view theta {s['theta_degrees']:g}°, phi {s['phi_degrees']:g}° — "
+    glass = f", eta {s['eta']:g} ({s['transport']})" if "eta" in s else ""
+    return (f"{s['method']}{glass}: alpha {a}, view theta {s['theta_degrees']:g}°, phi {s['phi_degrees']:g}° — "
             f"{s['count']:.3g} samples of {s['direction']}; chi² {s['chi_square']:.1f} on {s['dof']} dof, "
             f"p = {s['p_value']:.3g}")
 

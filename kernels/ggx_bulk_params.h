@@ -166,7 +166,7 @@ GGX_INLINE ggx_sample ggx_bulk_sample_of(ggx_params p, float u1, float u2, float
 #if GGX_PER_SAMPLE_UNIFORMS
     ggx_vec3 n = ggx_bulk_normal(p);
 #if GGX_DIELECTRIC
-    n = ggx_dot(p.view, n) < 0.0f ? ggx_scale(n, -1.0f) : n;
+    n = ggx_scale(n, ggx_dot(p.view, n) < 0.0f ? -1.0f : 1.0f);
     const int u3_ok = ggx_unit_interval(u3);
 #else
     const int u3_ok = 1;

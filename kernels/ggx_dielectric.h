@@ -23,10 +23,18 @@
 
 #include "ggx_samplers.h"
 
-// v mirrored through the plane of the unit normal n: v - 2 (v.n) n.
-GGX_INLINE ggx_vec3 ggx_mirror_through(ggx_vec3 v, ggx_vec3 n)
+// v mirrored through the plane of the unit normal n, v - 2 (v.n) n, where
+// `mirror` is set; v itself otherwise.  A scale, not a select of structs:
+// struct selects stop PoCL's vectorizer (ggx_guards.h).
+GGX_INLINE ggx_vec3 ggx_mirror_if(ggx_vec3 v, ggx_vec3 n, int mirror)
 {
-    return ggx_add(v, ggx_scale(n, -2.0f * ggx_dot(v, n)));
+    return ggx_add(v, ggx_scale(n, mirror ? -2.0f * ggx_dot(v, n) : 0.0f));
+}
+
+// Per component: a where `pick_a`, else b.
+GGX_INLINE ggx_vec3 ggx_select3(int pick_a, ggx_vec3 a, ggx_vec3 b)
+{
+    return ggx_vec3_make(pick_a ? a.x : b.x, pick_a ? a.y : b.y, pick_a ? a.z : b.z);
 }
 
 // The unit w in the local coordinates the roughness functions take: w itself
@@ -94,32 +102,29 @@ GGX_INLINE float ggx_transmission_weight(int ndf, ggx_vec3 i_local, ggx_vec3 o_l
 
 // The dielectric sample from the reflection sample s of a view i above the
 // surface (i.n >= 0; the sampler's m, pdf_m, reflected o, its pdf and weight).
-// s with pdf_o = 0 (the fallback, or a direction without density) keeps its m and o.
+// Both lobes are computed and the choice is a select per value, with no
+// branch: the work-items of a work-group stay one vector on CPUs.  s with
+// pdf_o = 0 (the fallback, or a direction without density) keeps its m and o.
 GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, ggx_vec3 i, float ax, float ay,
                                                      float eta, int radiance, float u3, int ndf, int about_n)
 {
-    const float c = ggx_dot(i, s.m);
-    const float F = ggx_fresnel_dielectric(ggx_fmax(c, 0.0f), eta);
+    const float c = ggx_dot(i, s.m), c_up = ggx_fmax(c, 0.0f);
+    const float F = ggx_fresnel_dielectric(c_up, eta);
+    const int reflects = u3 < F;  // probability F; always under total internal reflection
+    // The transmission through m (Snell's law) and its weight.
+    const float cos_t = ggx_refracted_cosine(c_up, eta);
+    const ggx_vec3 t = ggx_refract(i, s.m, c_up, eta, cos_t);
+    const float t_weight = ggx_transmission_weight(ndf, ggx_local_of(i, n, about_n), ggx_local_of(t, n, about_n),
+                                                   ggx_local_of(s.m, n, about_n), c_up, ax, ay, eta, radiance);
+    const float t_pdf = (1.0f - F) * s.pdf_m * ggx_refraction_jacobian(c_up, eta, cos_t);
+    // Valid: i.m > 0 (a back-facing m, which only ndf draws, scatters nothing), a reflection on
+    // the view's side, a transmission across.
+    const float side = ggx_dot(reflects ? s.o : t, n);  // a select of scalars
+    const int valid = (c > 0.0f) & (s.pdf_o > 0.0f) & (reflects ? side > 0.0f : side < 0.0f);
     ggx_sample out = s;
-    if (!(c > 0.0f && s.pdf_o > 0.0f)) {  // a back-facing m (ndf) transmits and reflects nothing
-        out.pdf_o = 0.0f;
-        out.weight = 0.0f;
-        return out;
-    }
-    if (u3 < F) {  // reflection, with probability F (always under total internal reflection)
-        const int valid = ggx_dot(s.o, n) > 0.0f;  // a reflection stays on the view's side
-        out.pdf_o = valid ? F * s.pdf_o : 0.0f;
-        out.weight = valid ? s.weight : 0.0f;
-        return out;
-    }
-    const float cos_t = ggx_refracted_cosine(c, eta);
-    out.o = ggx_refract(i, s.m, c, eta, cos_t);
-    const int valid = ggx_dot(out.o, n) < 0.0f;  // a transmission crosses the surface
-    const ggx_vec3 i_local = ggx_local_of(i, n, about_n), m_local = ggx_local_of(s.m, n, about_n);
-    const float weight =
-        ggx_transmission_weight(ndf, i_local, ggx_local_of(out.o, n, about_n), m_local, c, ax, ay, eta, radiance);
-    out.pdf_o = valid ? (1.0f - F) * s.pdf_m * ggx_refraction_jacobian(c, eta, cos_t) : 0.0f;
-    out.weight = valid ? weight : 0.0f;
+    out.o = ggx_select3(reflects, s.o, t);
+    out.pdf_o = valid ? (reflects ? F * s.pdf_o : t_pdf) : 0.0f;
+    out.weight = valid ? (reflects ? s.weight : t_weight) : 0.0f;
     return out;
 }
 
@@ -131,18 +136,17 @@ GGX_INLINE float ggx_dielectric_pdf_above(int method, ggx_vec3 n, ggx_vec3 i, gg
                                           float eta, float reflection_pdf, int about_n)
 {
     const float on = ggx_dot(o, n);
-    if (on > 0.0f)
-        return ggx_fresnel_dielectric(ggx_fmax(ggx_dot(i, ggx_half_vector(i, o)), 0.0f), eta) * reflection_pdf;
+    const float reflected = ggx_fresnel_dielectric(ggx_fmax(ggx_dot(i, ggx_half_vector(i, o)), 0.0f), eta) * reflection_pdf;
     ggx_vec3 m = ggx_add(i, ggx_scale(o, eta));
     const float len2 = ggx_dot(m, m);
     m = ggx_scale(m, (ggx_dot(m, n) > 0.0f ? 1.0f : -1.0f) * (len2 > 0.0f ? ggx_rsqrt(len2) : 0.0f));
     const float c = ggx_dot(i, m), om = ggx_dot(o, m);
-    if (!(on < 0.0f && c > 0.0f && om < 0.0f))
-        return 0.0f;
+    const int valid = (on < 0.0f) & (c > 0.0f) & (om < 0.0f);
+    const float c_up = ggx_fmax(c, 0.0f), cos_t = ggx_fmax(-om, 0.0f), sum = c + eta * om;
     const float density = ggx_normal_density(method == GGX_METHOD_NDF, ggx_local_of(i, n, about_n),
-                                              ggx_local_of(m, n, about_n), c, ax, ay);
-    const float cos_t = -om, sum = c + eta * om;
-    return (1.0f - ggx_fresnel_dielectric(c, eta)) * density * eta * eta * cos_t / (sum * sum);
+                                              ggx_local_of(m, n, about_n), c_up, ax, ay);
+    const float transmitted = (1.0f - ggx_fresnel_dielectric(c_up, eta)) * density * eta * eta * cos_t / (sum * sum);
+    return on > 0.0f ? reflected : (valid ? transmitted : 0.0f);
 }
 
 // A dielectric sample of `method` in tangent space (caps-iso: about n).
@@ -154,15 +158,13 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_v
     const int below = ggx_dot(i, up) < 0.0f;
     if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
         return ggx_fallback_sample(up);
-    const ggx_vec3 i_above = below ? ggx_mirror_through(i, up) : i;
+    const ggx_vec3 i_above = ggx_mirror_if(i, up, below);
     const float eta_side = below ? 1.0f / eta : eta;
     ggx_sample s = ggx_sample_method(method, n, i_above, ax, ay, u1, u2);
     s = ggx_dielectric_from_reflection(s, up, i_above, ax, ay, eta_side, radiance, u3,
                                        GGX_IS_METHOD(method, GGX_METHOD_NDF), about_n);
-    if (below) {
-        s.m = ggx_mirror_through(s.m, up);
-        s.o = ggx_mirror_through(s.o, up);
-    }
+    s.m = ggx_mirror_if(s.m, up, below);
+    s.o = ggx_mirror_if(s.o, up, below);
     return s;
 }
 
@@ -175,8 +177,7 @@ GGX_INLINE float ggx_pdf_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, g
     const int below = ggx_dot(i, up) < 0.0f;
     if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
         return 0.0f;
-    const ggx_vec3 i_above = below ? ggx_mirror_through(i, up) : i;
-    const ggx_vec3 o_side = below ? ggx_mirror_through(o, up) : o;
+    const ggx_vec3 i_above = ggx_mirror_if(i, up, below), o_side = ggx_mirror_if(o, up, below);
     const float eta_side = below ? 1.0f / eta : eta;
     const float reflection_pdf = ggx_pdf_method(method, n, i_above, o_side, ax, ay);
     const float pdf =

@@ -25,21 +25,14 @@
 // below, (1 - eta)(1 + eta) + eta^2 c^2.
 GGX_INLINE float ggx_fresnel_dielectric(float c, float eta)
 {
+    // Selects, not branches: a dielectric's lobe choice stays vectorizable on CPUs.
     const float d = (eta - 1.0f) * (eta + 1.0f);
-    float ct2;
-    if (c >= 0.0f) {
-        c = ggx_fmin(c, 1.0f);
-        ct2 = (d + c * c) / (eta * eta);
-    } else {
-        c = ggx_fmin(-c, 1.0f);
-        ct2 = eta * eta * c * c - d;
-    }
-    if (ct2 <= 0.0f)
-        return 1.0f;
-    const float ct = ggx_sqrt(ct2);
-    const float a = (c - eta * ct) / (c + eta * ct);
-    const float b = (eta * c - ct) / (eta * c + ct);
-    return 0.5f * (a * a + b * b);
+    const float a_c = ggx_fmin(ggx_fabs(c), 1.0f);
+    const float ct2 = c >= 0.0f ? (d + a_c * a_c) / (eta * eta) : eta * eta * a_c * a_c - d;
+    const float ct = ggx_sqrt(ggx_fmax(ct2, 0.0f));
+    const float a = (a_c - eta * ct) / (a_c + eta * ct);
+    const float b = (eta * a_c - ct) / (eta * a_c + ct);
+    return ct2 > 0.0f ? 0.5f * (a * a + b * b) : 1.0f;
 }
 
 // Conductor of complex relative index eta + i k, at cosine c in [0, 1], for

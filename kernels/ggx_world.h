@@ -79,14 +79,12 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_ve
     const int below = ggx_dot(i, n) < 0.0f;
     if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
         return ggx_fallback_sample(n);
-    const ggx_vec3 i_above = below ? ggx_mirror_through(i, n) : i;
+    const ggx_vec3 i_above = ggx_mirror_if(i, n, below);
     ggx_sample s = ggx_sample_world(method, n, i_above, alpha, u1, u2);
     s = ggx_dielectric_from_reflection(s, n, i_above, alpha, alpha, below ? 1.0f / eta : eta, radiance, u3,
                                        GGX_IS_METHOD(method, GGX_METHOD_NDF), 1);
-    if (below) {
-        s.m = ggx_mirror_through(s.m, n);
-        s.o = ggx_mirror_through(s.o, n);
-    }
+    s.m = ggx_mirror_if(s.m, n, below);
+    s.o = ggx_mirror_if(s.o, n, below);
     return s;
 }
 
@@ -96,8 +94,7 @@ GGX_INLINE float ggx_pdf_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, gg
     const int below = ggx_dot(i, n) < 0.0f;
     if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
         return 0.0f;
-    const ggx_vec3 i_above = below ? ggx_mirror_through(i, n) : i;
-    const ggx_vec3 o_side = below ? ggx_mirror_through(o, n) : o;
+    const ggx_vec3 i_above = ggx_mirror_if(i, n, below), o_side = ggx_mirror_if(o, n, below);
     const float eta_side = below ? 1.0f / eta : eta;
     const float reflection_pdf = ggx_pdf_world(method, n, i_above, o_side, alpha);
     return ggx_guard_pdf(ggx_dielectric_pdf_above(method, n, i_above, o_side, alpha, alpha, eta_side,

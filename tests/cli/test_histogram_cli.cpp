@@ -92,9 +92,13 @@ TEST_CASE("histogram: the figure decodes as a 1280 x 400 PNG")
 
 TEST_CASE("histogram and sample of a rough dielectric (--eta): both lobes pass, bounded and eta 1 are refused")
 {
+    fs::create_directories(scratch());  // the figure's case removes the folder when it ends
     const fs::path prefix = scratch() / "glass";
-    CHECK(ggx("histogram --method heitz --eta 1.5 --theta 130 -n 4e5 --check 0.001 --no-png --out " +
-              prefix.string()) == 0);
+    const ggxtest::Run glass = ggxtest::run_ggx("histogram --method heitz --eta 1.5 --theta 130 -n 4e5 --check 0.001 "
+                                                "--no-png --out " + prefix.string(),
+                                                scratch() / "stderr.txt");
+    CAPTURE(glass.err);
+    CHECK(glass.status == 0);
     nlohmann::json s = summary(prefix);
     CHECK(s["eta"].get<double>() == doctest::Approx(1.5));
     CHECK(s["transport"] == "radiance");

@@ -40,13 +40,19 @@ StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& ca
     return map;
 }
 
+std::vector<StressOutcome> dielectric::cpp_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases)
+{
+    std::vector<StressOutcome> outcomes;
+    outcomes.reserve(cases.size());
+    for (const StressCase& c : cases)
+        outcomes.push_back(dielectric_outcome_of(static_cast<int>(method), c));
+    return outcomes;
+}
+
 dielectric::Map dielectric::cpp_map(ggxcl::Method method, const std::vector<StressCase>& cases,
                                     const StressAxes& axes)
 {
-    Map map(axes.etas.size() * axes.alphas.size() * axes.cos_theta.size());
-    for (const StressCase& c : cases)
-        count(map, axes, c, dielectric_outcome_of(static_cast<int>(method), c));
-    return map;
+    return map_of(cpp_outcomes(method, cases), cases, axes);
 }
 
 } // namespace ggxapp

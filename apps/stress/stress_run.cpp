@@ -338,8 +338,6 @@ std::string defines(ggxcl::Method method, bool guards) { return stress_defines(m
 
 namespace {
 
-Map empty_map(const StressAxes& axes) { return Map(axes.etas.size() * axes.alphas.size() * axes.cos_theta.size()); }
-
 std::vector<float> planar_inputs(const std::vector<StressCase>& cases)
 {
     const std::size_t n = cases.size();
@@ -373,8 +371,27 @@ std::vector<StressOutcome> device_outcomes(ggxcl::Sampler& sampler, ggxcl::Metho
 Map device_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
                const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
 {
-    std::vector<StressOutcome> outcomes = device_outcomes(sampler, method, precision, cases, guards);
-    Map map = empty_map(axes);
+    return map_of(device_outcomes(sampler, method, precision, cases, guards), cases, axes);
+}
+
+std::vector<StressOutcome> host_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases)
+{
+    std::vector<StressOutcome> outcomes;
+    outcomes.reserve(cases.size());
+    ggxref::Method ref = ggxbridge::reference_method(method);
+    for (const StressCase& c : cases) {
+        ggxref::Params p{c.ax, c.ay, {c.view.x, c.view.y, c.view.z}, {c.normal.x, c.normal.y, c.normal.z}};
+        ggxref::Sample r = ggxref::dielectric_sample(ref, p, c.eta, true, c.u1, c.u2, c.u3);
+        ggxref::Sample imp = ggxref::dielectric_sample(ref, p, c.eta, false, c.u1, c.u2, c.u3);
+        outcomes.push_back({{r.m.x, r.m.y, r.m.z}, {r.o.x, r.o.y, r.o.z}, r.pdf_m, r.pdf_o, r.weight,
+                            ggxref::dielectric_pdf_o(ref, p, c.eta, r.o), imp.weight});
+    }
+    return outcomes;
+}
+
+Map map_of(const std::vector<StressOutcome>& outcomes, const std::vector<StressCase>& cases, const StressAxes& axes)
+{
+    Map map(axes.etas.size() * axes.alphas.size() * axes.cos_theta.size());
     for (std::size_t j = 0; j < cases.size(); ++j)
         count(map, axes, cases[j], outcomes[j]);
     return map;
@@ -382,17 +399,7 @@ Map device_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision p
 
 Map host_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
 {
-    Map map = empty_map(axes);
-    ggxref::Method ref = ggxbridge::reference_method(method);
-    for (const StressCase& c : cases) {
-        ggxref::Params p{c.ax, c.ay, {c.view.x, c.view.y, c.view.z}, {c.normal.x, c.normal.y, c.normal.z}};
-        ggxref::Sample r = ggxref::dielectric_sample(ref, p, c.eta, true, c.u1, c.u2, c.u3);
-        ggxref::Sample imp = ggxref::dielectric_sample(ref, p, c.eta, false, c.u1, c.u2, c.u3);
-        StressOutcome s{{r.m.x, r.m.y, r.m.z}, {r.o.x, r.o.y, r.o.z}, r.pdf_m, r.pdf_o, r.weight,
-                        ggxref::dielectric_pdf_o(ref, p, c.eta, r.o), imp.weight};
-        count(map, axes, c, s);
-    }
-    return map;
+    return map_of(host_outcomes(method, cases), cases, axes);
 }
 
 } // namespace dielectric

@@ -629,6 +629,8 @@ TEST_CASE("total internal reflection: no transmission beyond the critical angle,
         CHECK(total(maps.host, dl::transmitted) == 0);
         CHECK(total(maps.cpp, dl::transmitted) == 0);
         CHECK(total(maps.device, dl::invalid) == 0);  // every one a valid reflection
+        CHECK(total(maps.host, dl::invalid) == 0);
+        CHECK(total(maps.cpp, dl::invalid) == 0);
         auto refracting = dielectric_cases_where(method, axes, [&](const ggxapp::StressCase& c) {
             return smooth(c) && within(c) && c.u3 == 1.0f - 5.9604644775390625e-8f;
         });

@@ -10,7 +10,8 @@
 // direction drawn, reflected or transmitted; pdf_o its density over the
 // whole sphere with the lobe's probability (F p_r(o) or (1 - F) p_t(o));
 // weight = f |o.n| / pdf_o; pdf_m the method's density of m.  An invalid
-// sample (i.m <= 0, or o on the wrong side) has pdf_o = weight = 0.
+// sample (i.m <= 0, or o on the wrong side) has pdf_o = weight = 0.  An eta
+// that is not finite, > 0 and != 1 gives the fallback and pdf 0.
 // A view below the surface (i.n < 0) sees the interface from the other side:
 // the frame is mirrored through the surface (i -> i - 2 (i.n) n), eta becomes
 // 1/eta, and m and o are mirrored back (m then faces the view's side, and
@@ -22,6 +23,13 @@
 #define GGX_DIELECTRIC_H
 
 #include "ggx_samplers.h"
+
+// A relative index the functions below take: finite, > 0 and != 1 (others
+// give the fallback sample, pdf 0).
+GGX_INLINE int ggx_eta_ok(float eta)
+{
+    return (eta > 0.0f) & (eta <= GGX_FLT_MAX) & (eta != 1.0f);
+}
 
 // v mirrored through the plane of the unit normal n, v - 2 (v.n) n, where
 // `mirror` is set; v itself otherwise.  A scale, not a select of structs:
@@ -52,10 +60,11 @@ GGX_INLINE ggx_vec3 ggx_local_of(ggx_vec3 w, ggx_vec3 n, int about_n)
 // d = (eta - 1)(eta + 1), cos_t = sqrt(d + c^2) / eta (the form of
 // ggx_fresnel_dielectric, without cancellation) and
 // o = -i / eta + (c / eta - cos_t) m, so o.m = -cos_t (Walter et al. eq. 40).
+// Normalized: for a small eta the rounding of i grows by 1/eta.
 GGX_INLINE ggx_vec3 ggx_refract(ggx_vec3 i, ggx_vec3 m, float c, float eta, float cos_t)
 {
     const float inv_eta = 1.0f / eta;
-    return ggx_add(ggx_scale(i, -inv_eta), ggx_scale(m, c * inv_eta - cos_t));
+    return ggx_normalize(ggx_add(ggx_scale(i, -inv_eta), ggx_scale(m, c * inv_eta - cos_t)));
 }
 
 GGX_INLINE float ggx_refracted_cosine(float c, float eta)
@@ -66,12 +75,14 @@ GGX_INLINE float ggx_refracted_cosine(float c, float eta)
 
 // The Jacobian |dm/do| of a refraction, eta^2 |o.m| / (i.m + eta o.m)^2 with
 // o.m = -cos_t, written without the cancellation of c - eta cos_t near
-// eta = 1: c - eta cos_t = -d / (c + eta cos_t).
+// eta = 1: c - eta cos_t = -d / (c + eta cos_t), so the Jacobian is
+// cos_t q^2 with q = eta (c + eta cos_t) / d, a form that stays in float
+// range for any index of a finite square.
 GGX_INLINE float ggx_refraction_jacobian(float c, float eta, float cos_t)
 {
     const float d = (eta - 1.0f) * (eta + 1.0f);
-    const float sum = c + eta * cos_t;
-    return eta * eta * cos_t * (sum * sum) / (d * d);
+    const float q = eta * ((c + eta * cos_t) / d);
+    return cos_t * q * q;
 }
 
 // The density of the normal m for the method's family: D(m) mz for ndf
@@ -122,7 +133,7 @@ GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, g
     const float side = ggx_dot(reflects ? s.o : t, n);  // a select of scalars
     const int valid = (c > 0.0f) & (s.pdf_o > 0.0f) & (reflects ? side > 0.0f : side < 0.0f);
     ggx_sample out = s;
-    out.o = ggx_select3(reflects, s.o, t);
+    out.o = ggx_select3(reflects | !((c > 0.0f) & (s.pdf_o > 0.0f)), s.o, t);  // the fallback keeps o = n
     out.pdf_o = valid ? (reflects ? F * s.pdf_o : t_pdf) : 0.0f;
     out.weight = valid ? (reflects ? s.weight : t_weight) : 0.0f;
     return out;
@@ -165,7 +176,7 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_v
                                        GGX_IS_METHOD(method, GGX_METHOD_NDF), about_n);
     s.m = ggx_mirror_if(s.m, up, below);
     s.o = ggx_mirror_if(s.o, up, below);
-    return s;
+    return ggx_keep_or_fallback(s, ggx_eta_ok(eta), ggx_mirror_if(up, up, below));
 }
 
 // The density of o for `method`'s dielectric sampler, recomputed from (i, o) alone.
@@ -182,7 +193,7 @@ GGX_INLINE float ggx_pdf_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, g
     const float reflection_pdf = ggx_pdf_method(method, n, i_above, o_side, ax, ay);
     const float pdf =
         ggx_dielectric_pdf_above(method, up, i_above, o_side, ax, ay, eta_side, reflection_pdf, about_n);
-    return ggx_guard_pdf(pdf, ax, ay);
+    return ggx_guard_pdf(ggx_eta_ok(eta) ? pdf : 0.0f, ax, ay);
 }
 
 #endif

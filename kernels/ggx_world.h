@@ -85,7 +85,7 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_ve
                                        GGX_IS_METHOD(method, GGX_METHOD_NDF), 1);
     s.m = ggx_mirror_if(s.m, n, below);
     s.o = ggx_mirror_if(s.o, n, below);
-    return s;
+    return ggx_keep_or_fallback(s, ggx_eta_ok(eta), ggx_mirror_if(n, n, below));
 }
 
 // The density of the world-space o for `method`'s dielectric sampler, from (i, o) alone.
@@ -97,9 +97,8 @@ GGX_INLINE float ggx_pdf_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, gg
     const ggx_vec3 i_above = ggx_mirror_if(i, n, below), o_side = ggx_mirror_if(o, n, below);
     const float eta_side = below ? 1.0f / eta : eta;
     const float reflection_pdf = ggx_pdf_world(method, n, i_above, o_side, alpha);
-    return ggx_guard_pdf(ggx_dielectric_pdf_above(method, n, i_above, o_side, alpha, alpha, eta_side,
-                                                  reflection_pdf, 1),
-                         alpha, alpha);
+    const float pdf = ggx_dielectric_pdf_above(method, n, i_above, o_side, alpha, alpha, eta_side, reflection_pdf, 1);
+    return ggx_guard_pdf(ggx_eta_ok(eta) ? pdf : 0.0f, alpha, alpha);
 }
 
 #endif

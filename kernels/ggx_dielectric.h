@@ -113,29 +113,34 @@ GGX_INLINE float ggx_transmission_weight(int ndf, ggx_vec3 i_local, ggx_vec3 o_l
 
 // The dielectric sample from the reflection sample s of a view i above the
 // surface (i.n >= 0; the sampler's m, pdf_m, reflected o, its pdf and weight).
-// Both lobes are computed and the choice is a select per value, with no
-// branch: the work-items of a work-group stay one vector on CPUs.  s with
-// pdf_o = 0 (the fallback, or a direction without density) keeps its m and o.
+// The lobe is a branch: computing both and selecting holds too much live at
+// once for an unrolled furnace on RDNA3, which then spills.  s with pdf_o = 0
+// (the fallback, or a direction without density) keeps its m and o.
 GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, ggx_vec3 i, float ax, float ay,
                                                      float eta, int radiance, float u3, int ndf, int about_n)
 {
-    const float c = ggx_dot(i, s.m), c_up = ggx_fmax(c, 0.0f);
-    const float F = ggx_fresnel_dielectric(c_up, eta);
-    const int reflects = u3 < F;  // probability F; always under total internal reflection
-    // The transmission through m (Snell's law) and its weight.
-    const float cos_t = ggx_refracted_cosine(c_up, eta);
-    const ggx_vec3 t = ggx_refract(i, s.m, c_up, eta, cos_t);
-    const float t_weight = ggx_transmission_weight(ndf, ggx_local_of(i, n, about_n), ggx_local_of(t, n, about_n),
-                                                   ggx_local_of(s.m, n, about_n), c_up, ax, ay, eta, radiance);
-    const float t_pdf = (1.0f - F) * s.pdf_m * ggx_refraction_jacobian(c_up, eta, cos_t);
-    // Valid: i.m > 0 (a back-facing m, which only ndf draws, scatters nothing), a reflection on
-    // the view's side, a transmission across.
-    const float side = ggx_dot(reflects ? s.o : t, n);  // a select of scalars
-    const int valid = (c > 0.0f) & (s.pdf_o > 0.0f) & (reflects ? side > 0.0f : side < 0.0f);
+    const float c = ggx_dot(i, s.m);
+    const float F = ggx_fresnel_dielectric(ggx_fmax(c, 0.0f), eta);
     ggx_sample out = s;
-    out.o = ggx_select3(reflects | !((c > 0.0f) & (s.pdf_o > 0.0f)), s.o, t);  // the fallback keeps o = n
-    out.pdf_o = valid ? (reflects ? F * s.pdf_o : t_pdf) : 0.0f;
-    out.weight = valid ? (reflects ? s.weight : t_weight) : 0.0f;
+    if (!(c > 0.0f && s.pdf_o > 0.0f)) {  // a back-facing m (ndf) scatters nothing; o stays the fallback's
+        out.pdf_o = 0.0f;
+        out.weight = 0.0f;
+        return out;
+    }
+    if (u3 < F) {  // reflection, with probability F (always under total internal reflection)
+        const int valid = ggx_dot(s.o, n) > 0.0f;  // a reflection stays on the view's side
+        out.pdf_o = valid ? F * s.pdf_o : 0.0f;
+        out.weight = valid ? s.weight : 0.0f;
+        return out;
+    }
+    // The transmission through m (Snell's law), its density and weight.
+    const float cos_t = ggx_refracted_cosine(c, eta);
+    out.o = ggx_refract(i, s.m, c, eta, cos_t);
+    const int valid = ggx_dot(out.o, n) < 0.0f;  // a transmission crosses the surface
+    const float weight = ggx_transmission_weight(ndf, ggx_local_of(i, n, about_n), ggx_local_of(out.o, n, about_n),
+                                                 ggx_local_of(s.m, n, about_n), c, ax, ay, eta, radiance);
+    out.pdf_o = valid ? (1.0f - F) * s.pdf_m * ggx_refraction_jacobian(c, eta, cos_t) : 0.0f;
+    out.weight = valid ? weight : 0.0f;
     return out;
 }
 

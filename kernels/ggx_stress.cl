@@ -25,27 +25,10 @@
 
 #if GGX_DIELECTRIC
 #include "ggx_dielectric.h"
-
-__kernel void ggx_stress(uint count, __global const float* GGX_RESTRICT in, __global float* GGX_RESTRICT out)
-{
-    uint j = (uint)get_global_id(0);
-    if (j >= count)
-        return;
-    float ax = in[j], ay = in[count + j];
-    ggx_vec3 i = ggx_vec3_make(in[2u * count + j], in[3u * count + j], in[4u * count + j]);
-    ggx_vec3 n = ggx_vec3_make(in[5u * count + j], in[6u * count + j], in[7u * count + j]);
-    float u1 = in[8u * count + j], u2 = in[9u * count + j], u3 = in[10u * count + j], eta = in[11u * count + j];
-    ggx_sample s = ggx_sample_dielectric_method(GGX_METHOD, n, i, ax, ay, eta, 1, u1, u2, u3);
-    ggx_sample imp = ggx_sample_dielectric_method(GGX_METHOD, n, i, ax, ay, eta, 0, u1, u2, u3);
-    float values[11] = {s.m.x,    s.m.y,    s.m.z,
-                        s.o.x,    s.o.y,    s.o.z,
-                        s.pdf_m,  s.pdf_o,  s.weight,
-                        ggx_pdf_dielectric_method(GGX_METHOD, n, i, s.o, ax, ay, eta), imp.weight};
-    for (uint k = 0; k < 11u; ++k)
-        out[k * count + j] = values[k];
-}
-
+#define GGX_STRESS_OUTPUTS 11u
 #else
+#define GGX_STRESS_OUTPUTS 10u
+#endif
 
 __kernel void ggx_stress(uint count, __global const float* GGX_RESTRICT in, __global float* GGX_RESTRICT out)
 {
@@ -56,11 +39,19 @@ __kernel void ggx_stress(uint count, __global const float* GGX_RESTRICT in, __gl
     ggx_vec3 i = ggx_vec3_make(in[2u * count + j], in[3u * count + j], in[4u * count + j]);
     ggx_vec3 n = ggx_vec3_make(in[5u * count + j], in[6u * count + j], in[7u * count + j]);
     float u1 = in[8u * count + j], u2 = in[9u * count + j];
+#if GGX_DIELECTRIC
+    float u3 = in[10u * count + j], eta = in[11u * count + j];
+    ggx_sample s = ggx_sample_dielectric_method(GGX_METHOD, n, i, ax, ay, eta, 1, u1, u2, u3);
+    ggx_sample imp = ggx_sample_dielectric_method(GGX_METHOD, n, i, ax, ay, eta, 0, u1, u2, u3);
+    float values[GGX_STRESS_OUTPUTS] = {s.m.x,    s.m.y,    s.m.z,
+                                        s.o.x,    s.o.y,    s.o.z,
+                                        s.pdf_m,  s.pdf_o,  s.weight,
+                                        ggx_pdf_dielectric_method(GGX_METHOD, n, i, s.o, ax, ay, eta), imp.weight};
+#else
     ggx_sample s = ggx_sample_method(GGX_METHOD, n, i, ax, ay, u1, u2);
-    float values[10] = {s.m.x, s.m.y, s.m.z, s.o.x, s.o.y, s.o.z, s.pdf_m, s.pdf_o, s.weight,
-                        ggx_pdf_method(GGX_METHOD, n, i, s.o, ax, ay)};
-    for (uint k = 0; k < 10u; ++k)
+    float values[GGX_STRESS_OUTPUTS] = {s.m.x, s.m.y, s.m.z, s.o.x, s.o.y, s.o.z, s.pdf_m, s.pdf_o, s.weight,
+                                        ggx_pdf_method(GGX_METHOD, n, i, s.o, ax, ay)};
+#endif
+    for (uint k = 0; k < GGX_STRESS_OUTPUTS; ++k)
         out[k * count + j] = values[k];
 }
-
-#endif

@@ -52,14 +52,9 @@ double integrate_lobes(const Local& L, double eta, const Density& density, const
         auto f = [&](double th) { return standard_integrand(L, over_ms, th, c, s); };
         std::vector<double> b = dielectric_cuts(L, eta, phi), e = extra(phi);
         b.insert(b.end(), e.begin(), e.end());
-        b.push_back(0.0);
-        b.push_back(0.5 * pi);
-        std::sort(b.begin(), b.end());
-        double sum = 0.0;
-        for (size_t k = 0; k + 1 < b.size(); ++k)
-            if (b[k + 1] > b[k])
-                sum += adaptive_gauss_smoothstep(f, b[k], b[k + 1], inner);
-        return sum;
+        return integrate_meridian(f, b, [&](const auto& g, double lo, double hi) {
+            return adaptive_gauss_smoothstep(g, lo, hi, inner);
+        });
     };
     const double phi0 = std::atan2(L.ih.y, L.ih.x) + 0.5 * pi;
     std::vector<double> a = {phi0, phi0 + pi, phi0 + 2.0 * pi};

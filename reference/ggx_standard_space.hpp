@@ -44,6 +44,22 @@ double standard_integrand(const Local& L, const Density& density, double th, dou
     return density(ms, (1.0 / len) * w) * L.ax * L.ay / (len * len * len) * st;
 }
 
+// The integral of f over th in (0, pi/2) on one meridian, as the sum of integrate(f, a, b) over the
+// pieces between the kinks `cuts` (any order, any number inside or at the ends).
+template <class F, class Integrate>
+double integrate_meridian(const F& f, std::vector<double> cuts, const Integrate& integrate)
+{
+    constexpr double pi = 3.14159265358979323846;
+    cuts.push_back(0.0);
+    cuts.push_back(0.5 * pi);
+    std::sort(cuts.begin(), cuts.end());
+    double sum = 0.0;
+    for (size_t k = 0; k + 1 < cuts.size(); ++k)
+        if (cuts[k + 1] > cuts[k])
+            sum += integrate(f, cuts[k], cuts[k + 1]);
+    return sum;
+}
+
 // int over the hemisphere of ms of density(ms, m) dw_m; cuts(phi) lists the kinks of a meridian.
 template <class Density, class Cuts> double integrate_standard(const Local& L, const Density& density, const Cuts& cuts)
 {
@@ -52,15 +68,9 @@ template <class Density, class Cuts> double integrate_standard(const Local& L, c
     auto meridian = [&](double phi) {
         const double c = std::cos(phi), s = std::sin(phi);
         auto f = [&](double th) { return standard_integrand(L, density, th, c, s); };
-        std::vector<double> b = cuts(phi);
-        b.push_back(0.0);
-        b.push_back(0.5 * pi);
-        std::sort(b.begin(), b.end());
-        double sum = 0.0;
-        for (size_t k = 0; k + 1 < b.size(); ++k)
-            if (b[k + 1] > b[k])
-                sum += adaptive_gauss(f, b[k], b[k + 1], inner);
-        return sum;
+        return integrate_meridian(f, cuts(phi), [&](const auto& g, double a, double b) {
+            return adaptive_gauss(g, a, b, inner);
+        });
     };
     // The visibility cut reaches the horizon where ih_xy is perpendicular to the meridian.
     const double phi0 = std::atan2(L.ih.y, L.ih.x) + 0.5 * pi;

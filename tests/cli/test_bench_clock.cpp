@@ -20,26 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The cell of `line` under the header's column `name` (no quoted commas).
-std::string csv_cell(const std::string& csv, const std::string& line, const std::string& name)
-{
-    auto split = [](const std::string& text) {
-        std::vector<std::string> cells(1);
-        for (char c : text.substr(0, text.find('\n'))) {
-            if (c == ',')
-                cells.emplace_back();
-            else
-                cells.back().push_back(c);
-        }
-        return cells;
-    };
-    const std::vector<std::string> header = split(csv), cells = split(line);
-    const auto at = std::find(header.begin(), header.end(), name);
-    CAPTURE(name);
-    REQUIRE(at != header.end());
-    REQUIRE(cells.size() == header.size());
-    return cells[std::size_t(at - header.begin())];
-}
+using ggxtest::csv_cell;
 
 std::string selected_device()
 {

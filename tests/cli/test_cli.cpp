@@ -23,6 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using ggxtest::csv_cell;
 using ggxtest::read_all;
 using ggxtest::Run;
 
@@ -270,28 +271,6 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
         CHECK(only_file_is(scratch(), 0));
     }
-}
-
-
-// The cell of `line` under the header's column `name` in a CSV without quoted commas.
-static std::string csv_cell(const std::string& csv, const std::string& line, const std::string& name)
-{
-    auto split = [](const std::string& text) {
-        std::vector<std::string> cells(1);
-        for (char c : text.substr(0, text.find('\n'))) {
-            if (c == ',')
-                cells.emplace_back();
-            else
-                cells.back().push_back(c);
-        }
-        return cells;
-    };
-    const std::vector<std::string> header = split(csv), cells = split(line);
-    const auto at = std::find(header.begin(), header.end(), name);
-    CAPTURE(name);
-    REQUIRE(at != header.end());
-    REQUIRE(cells.size() == header.size());
-    return cells[std::size_t(at - header.begin())];
 }
 
 TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown report")

@@ -10,6 +10,7 @@
 //    bad input, and the precision modes it offers (the library's, no more).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -49,24 +50,28 @@ ggxcl::Sampler& sampler()
     return instance;
 }
 
-// Totals of one kind over a map.
-std::uint64_t total(const ggxapp::StressMap& map, int kind)
+// Totals of one kind (-1: the cases) over a map, the conductor's or the dielectric's.
+template <class Map> std::uint64_t total(const Map& map, int kind)
 {
     std::uint64_t n = 0;
-    for (const ggxapp::CellCounts& cell : map)
+    for (const auto& cell : map)
         n += kind < 0 ? cell.cases : cell.failures[kind];
     return n;
+}
+
+// The cases of `all` that `keep` selects.
+template <class Keep> std::vector<ggxapp::StressCase> kept_cases(std::vector<ggxapp::StressCase> all, Keep keep)
+{
+    all.erase(std::remove_if(all.begin(), all.end(), [&](const ggxapp::StressCase& c) { return !keep(c); }),
+              all.end());
+    return all;
 }
 
 // The cases of the full grid that `keep` selects.
 template <class Keep>
 std::vector<ggxapp::StressCase> cases_where(ggxcl::Method method, const ggxapp::StressAxes& axes, Keep keep)
 {
-    std::vector<ggxapp::StressCase> kept;
-    for (const ggxapp::StressCase& c : ggxapp::stress_cases(method, axes))
-        if (keep(c))
-            kept.push_back(c);
-    return kept;
+    return kept_cases(ggxapp::stress_cases(method, axes), keep);
 }
 
 bool is_vndf(ggxcl::Method method)
@@ -307,22 +312,11 @@ std::vector<ggxcl::Method> dielectric_methods()
 
 ggxapp::StressAxes dielectric_grid() { return ggxapp::dielectric_axes(ggxapp::dielectric_etas()); }
 
-std::uint64_t total(const dl::Map& map, int kind)
-{
-    std::uint64_t n = 0;
-    for (const dl::Counts& cell : map)
-        n += kind < 0 ? cell.cases : cell.failures[kind];
-    return n;
-}
-
+// The cases of the dielectric grid that `keep` selects.
 template <class Keep>
 std::vector<ggxapp::StressCase> dielectric_cases_where(ggxcl::Method method, const ggxapp::StressAxes& axes, Keep keep)
 {
-    std::vector<ggxapp::StressCase> kept;
-    for (const ggxapp::StressCase& c : ggxapp::dielectric_cases(method, axes))
-        if (keep(c))
-            kept.push_back(c);
-    return kept;
+    return kept_cases(ggxapp::dielectric_cases(method, axes), keep);
 }
 
 struct DielectricSides {

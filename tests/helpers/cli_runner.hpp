@@ -1,13 +1,15 @@
 // cli_runner.hpp - what the tests of the `ggx` tool share: a scratch
 // folder per test process (removed at exit; scratch.hpp), running the tool (GGX_BINARY,
 // set by CMake) with its exit status and stderr, reading a file back whole,
-// and the rows of a `ggx bench` CSV.
+// the rows of a `ggx bench` CSV and a cell of a CSV by its column's name.
 #pragma once
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -57,6 +59,34 @@ inline std::vector<BenchCsvRow> bench_csv_rows(const std::string& csv_text)
         rows.push_back(row);
     }
     return rows;
+}
+
+// The cells of the first line of `text`, split at commas (no quoted commas).
+inline std::vector<std::string> csv_cells(const std::string& text)
+{
+    std::vector<std::string> cells(1);
+    for (char c : text.substr(0, text.find('\n'))) {
+        if (c == ',')
+            cells.emplace_back();
+        else
+            cells.back().push_back(c);
+    }
+    return cells;
+}
+
+// The cell of `line` under the column `name` of the header that starts `csv`;
+// throws, naming what is wrong, when there is no such column or the line's
+// cells do not match the header's.
+inline std::string csv_cell(const std::string& csv, const std::string& line, const std::string& name)
+{
+    const std::vector<std::string> header = csv_cells(csv), cells = csv_cells(line);
+    const auto at = std::find(header.begin(), header.end(), name);
+    if (at == header.end())
+        throw std::runtime_error("no column '" + name + "' in the CSV header: " + csv.substr(0, csv.find('\n')));
+    if (cells.size() != header.size())
+        throw std::runtime_error("a row of " + std::to_string(cells.size()) + " cells under a header of " +
+                                 std::to_string(header.size()) + ": " + line);
+    return cells[std::size_t(at - header.begin())];
 }
 
 } // namespace ggxtest

@@ -34,6 +34,20 @@ enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
 #define GGX_METHOD_COUNT_ONE(ID, identifier, name) +1
 #define GGX_METHOD_COUNT (0 GGX_METHOD_LIST(GGX_METHOD_COUNT_ONE))
 
+// The method id of a user sampler (one file that defines the functions of
+// kernels/ggx_user_sampler.h; the runtime builds it with -DGGX_USER_SAMPLER=1):
+// outside GGX_METHOD_LIST, so no list of built-in methods holds it.  A plain
+// integer, usable in #if.
+#define GGX_METHOD_USER 64
+
+// The distribution a user sampler claims its normals follow, which its file
+// states as `#define GGX_USER_DISTRIBUTION GGX_USER_<one of these>`: the
+// GGX visible normals (as heitz and caps), the GGX normals D(m) mz (as ndf),
+// or a density of its own (as bounded), given by its pdf alone.
+#define GGX_USER_VNDF 0
+#define GGX_USER_NDF 1
+#define GGX_USER_OWN 2
+
 // C++ enums of the methods: `enum class Method { GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR) };`
 // and their arrays in id order, `{GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR_OF)}` with
 // GGX_METHOD_ENUM defined as the enum's name.

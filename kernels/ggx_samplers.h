@@ -22,13 +22,17 @@
 #include "ggx_sample_caps_iso.h"
 #include "ggx_sample_heitz.h"
 #include "ggx_sample_ndf.h"
+#ifdef GGX_USER_SAMPLER
+#include "ggx_user_sampler.h"
+#endif
 
 // GGX_ONLY_METHOD=<id>: the program uses that one method (the runtime's bulk
 // kernels set it to GGX_METHOD).  The dispatchers then test constants and
 // the compiler emits the one sampler alone: a driver that translates every
 // branch before it folds the method id (Mesa rusticl) builds 3-4x faster.
 #ifdef GGX_ONLY_METHOD
-#if GGX_ONLY_METHOD < 0 || GGX_ONLY_METHOD >= GGX_METHOD_COUNT
+#if (GGX_ONLY_METHOD < 0 || GGX_ONLY_METHOD >= GGX_METHOD_COUNT) && \
+    !(defined(GGX_USER_SAMPLER) && GGX_ONLY_METHOD == GGX_METHOD_USER)
 #error "GGX_ONLY_METHOD: not a method id (GGX_METHOD_NDF .. GGX_METHOD_BOUNDED of ggx_contract.h)"
 #endif
 #define GGX_IS_METHOD(method, id) (GGX_ONLY_METHOD == (id))
@@ -46,16 +50,24 @@
 #define GGX_PDF_IF_METHOD(ID, identifier, name)     \
     if (GGX_IS_METHOD(method, GGX_METHOD_##ID))     \
         return ggx_dispatch_pdf_##identifier(n, i, o, ax, ay);
+// A program built with a user sampler (ggx_user_sampler.h) dispatches its id too.
+#ifdef GGX_USER_SAMPLER
+#define GGX_USER_METHOD_LINE(X) X(USER, user, "user")
+#else
+#define GGX_USER_METHOD_LINE(X)
+#endif
 
 GGX_INLINE ggx_sample ggx_sample_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
     GGX_METHOD_LIST(GGX_SAMPLE_IF_METHOD)
+    GGX_USER_METHOD_LINE(GGX_SAMPLE_IF_METHOD)
     return ggx_fallback_sample(n);  // not a method id
 }
 
 GGX_INLINE float ggx_pdf_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
     GGX_METHOD_LIST(GGX_PDF_IF_METHOD)
+    GGX_USER_METHOD_LINE(GGX_PDF_IF_METHOD)
     return 0.0f;  // not a method id
 }
 

@@ -33,8 +33,35 @@ void SampleOptions::add_view_options(CLI::App& cmd)
 
 void SampleOptions::add_method_options(CLI::App& cmd)
 {
-    cmd.add_option("--method", method, "sampler: " + ggxcl::method_list())->required();
+    CLI::Option* by_method = cmd.add_option("--method", method, "sampler: " + ggxcl::method_list());
+    CLI::Option* by_file =
+        cmd.add_option("--sampler", sampler, "a sampler of your own in FILE.h instead of --method "
+                                             "(docs/USER-SAMPLERS.md)");
+    by_method->excludes(by_file);
+    cmd.add_option("--sampler-name", sampler_name, "the --sampler's name in reports (default: the file's stem)")
+        ->needs(by_file);
     cmd.add_option("--normal", normal, "caps-iso only: world-space surface normal X,Y,Z (default 0,0,1)");
+    cmd.callback([by_method, by_file] {
+        if (by_method->count() == 0 && by_file->count() == 0)
+            throw CLI::RequiredError("--method or --sampler");
+    });
+}
+
+std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& file, const std::string& name)
+{
+    try {
+        return ggxcl::UserSampler::load(file, name);
+    } catch (const ggxcl::InvalidArgument& error) {
+        const bool bad_name = error.parameter() == "sampler name";
+        throw UsageError(bad_name ? "--sampler-name" : "--sampler", bad_name ? name : file, error.allowed());
+    }
+}
+
+ggxcl::SampleParams SampleOptions::parsed_params() const
+{
+    if (sampler.empty())
+        return params_for(parsed_method());
+    return params_for(ggxcl::Method::user, load_user_sampler(sampler, sampler_name));
 }
 
 std::vector<std::string> method_names()
@@ -96,10 +123,11 @@ SampleOptions SampleOptions::for_method(ggxcl::Method method) const
     return options;
 }
 
-ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m) const
+ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m, std::shared_ptr<const ggxcl::UserSampler> user) const
 {
     ggxcl::SampleParams p;
     p.method = m;
+    p.user_sampler = std::move(user);
     std::array<float, 2> a = parse_alpha("--alpha", alpha);
     if (m == ggxcl::Method::caps_iso && a[0] != a[1])
         throw UsageError("--alpha", alpha, "one value for caps-iso, which is isotropic");
@@ -114,6 +142,8 @@ ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m) const
     p.sequence = parsed_sequence();
     p.eta = parsed_eta();
     p.transport = parsed_transport();
+    if (p.eta != 0.0f && m == ggxcl::Method::user)
+        throw UsageError("--eta", eta, "0 with --sampler: a user sampler runs on conductors only");
     if (p.eta != 0.0f && m == ggxcl::Method::bounded)
         throw UsageError("--eta", eta,
                          "0 with --method bounded: its cap leaves out microfacet normals that refract, so it cannot "

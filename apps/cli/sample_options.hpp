@@ -14,6 +14,10 @@ namespace ggxapp {
 // The method names in ggxcl::all_methods order, for lists of methods.
 std::vector<std::string> method_names();
 
+// The user sampler in `file`, named `name` (empty: the file's stem); throws
+// UsageError naming --sampler or --sampler-name.
+std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& file, const std::string& name);
+
 struct SampleOptions {
     std::string method = "caps";
     std::string alpha = "0.3";
@@ -26,17 +30,21 @@ struct SampleOptions {
     std::string sequence = "philox";
     std::string eta = "0";  // a rough dielectric's relative index; 0: a conductor
     std::string transport = "radiance";
+    std::string sampler, sampler_name;  // a user sampler's file (instead of --method) and its name
 
     // --alpha, --theta, --phi, --seed, --sequence, --device, --precision, --eta, --transport
     void add_view_options(CLI::App& cmd);
-    void add_method_options(CLI::App& cmd); // --method, --normal
+    void add_method_options(CLI::App& cmd); // --method or --sampler (--sampler-name), --normal
 
     // These options for a command that runs every method: caps-iso, which is
     // isotropic, takes the first value of an AX,AY roughness.
     SampleOptions for_method(ggxcl::Method method) const;
 
     // The parameters for `method`; throws UsageError naming the bad flag.
-    ggxcl::SampleParams params_for(ggxcl::Method method) const;
+    ggxcl::SampleParams params_for(ggxcl::Method method,
+                                   std::shared_ptr<const ggxcl::UserSampler> user = nullptr) const;
+    // The parameters of --method, or of --sampler (Method::user).
+    ggxcl::SampleParams parsed_params() const;
     ggxcl::Method parsed_method() const;
     std::uint64_t parsed_seed() const;
     ggxcl::Sequence parsed_sequence() const;

@@ -1,6 +1,7 @@
 // cmd_histogram.cpp - `ggx histogram`: bin a method's reflected directions
 // on the device and test them against its pdf (chi-square); `--check ALPHA`
-// makes the exit status 1 when p < ALPHA.
+// makes the exit status 1 when p < ALPHA.  A user sampler (--sampler) gets
+// every check of user_checks.hpp, and --check fails on any that fails.
 #include <iostream>
 
 #include "cli_values.hpp"
@@ -21,8 +22,13 @@ struct HistogramCommand {
     HistogramJob job() const
     {
         HistogramJob job;
-        job.params = options.params_for(options.parsed_method());
+        job.params = options.parsed_params();
         job.against = job.params.method;
+        if (job.params.method == ggxcl::Method::user && !against.empty())
+            throw UsageError("--against", against, "no --against with --sampler: its own pdf and the distribution "
+                                                   "it claims are both tested");
+        if (job.params.method == ggxcl::Method::user && of != "o")
+            throw UsageError("--of", of, "o with --sampler (its pdf is a density of o)");
         if (!against.empty()) {
             try {
                 job.against = ggxcl::parse_method(against);
@@ -55,6 +61,13 @@ void run_histogram(const HistogramCommand& command, const HistogramJob& job, dou
     HistogramResult result = run_histogram_job(sampler, job, std::move(expectation));
     std::cout << job.prefix << ": chi-square " << result.chi_square << " on " << result.dof << " dof, p = "
               << result.p_value << (result.png.empty() ? "" : ", figure " + result.png) << "\n";
+    std::string failed;
+    for (const HistogramCheck& check : result.checks) {
+        std::cout << "  " << (check.passed ? "pass" : "FAIL") << "  " << check.summary << "\n";
+        failed += check.passed ? "" : (failed.empty() ? "" : "; ") + check.name;
+    }
+    if (level > 0.0 && !failed.empty())
+        throw CheckFailed(ggxcl::sampler_name(job.params) + " failed: " + failed);
     if (level > 0.0 && result.p_value < level)
         throw CheckFailed("p = " + std::to_string(result.p_value) + " is below --check " + command.check);
 }
@@ -82,6 +95,8 @@ Prepare add_histogram_command(CLI::App& app)
             return std::nullopt;
         double level = state->check.empty() ? 0.0 : parse_level("--check", state->check);
         HistogramJob job = state->job();
+        if (level > 0.0)
+            job.level = level;
         return Work{[state, job, level] { run_histogram(*state, job, level); }, {{job.params, job.range}}};
     };
 }

@@ -1,7 +1,9 @@
 // histogram_job.cpp - device histogram, expectation, chi-square and files.
 #include "histogram_job.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -46,12 +48,51 @@ nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, c
     return doc;
 }
 
+HistogramCheck chi_square_check(const std::string& name, const ggxref::ChiSquare& fit, double level)
+{
+    HistogramCheck check;
+    check.name = name;
+    check.p_value = fit.p_value;
+    check.passed = fit.p_value >= level;
+    std::ostringstream line;
+    line << name << ": chi-square " << fit.statistic << " on " << fit.dof << " dof, p = " << fit.p_value;
+    check.summary = line.str();
+    return check;
+}
+
+// A user sampler's checks: its histogram against its own pdf (`own`) and the claimed
+// distribution's bins (`claimed`, empty for a density of its own), its pdfs from (i, o).
+std::vector<HistogramCheck> user_sampler_checks(ggxcl::Sampler& sampler, const HistogramJob& job,
+                                                const ggxcl::Histogram& counts, const ggxref::ChiSquare& own,
+                                                const std::vector<double>& claimed)
+{
+    std::vector<HistogramCheck> checks = {chi_square_check("its own pdf", own, job.level)};
+    ggxcl::Method method = ggxcl::Method::heitz;
+    const bool claims = claimed_method(job.params.user_sampler->distribution(), method);
+    if (claims)
+        checks.push_back(chi_square_check(std::string("the claimed ") +
+                                              std::string(ggxcl::distribution_name(job.params.user_sampler->distribution())),
+                                          ggxbridge::histogram_fit(counts, claimed, false), job.level));
+    const ggxcl::SampleRange some{job.range.seed, job.range.first, std::min<std::uint64_t>(job.range.count, 1 << 16)};
+    for (HistogramCheck& check : pdf_checks(sampler, job.params, some, claims ? &method : nullptr))
+        checks.push_back(check);
+    return checks;
+}
+
 } // namespace
 
 std::future<std::vector<double>> start_expectation(const HistogramJob& job)
 {
-    return std::async(std::launch::async, [job] {
-        return ggxbridge::bin_probabilities(job.against, job.params, job.bins_z, job.bins_phi, job.direction);
+    ggxcl::Method against = job.against;
+    ggxcl::SampleParams params = job.params;
+    if (params.method == ggxcl::Method::user) {
+        if (!claimed_method(params.user_sampler->distribution(), against))
+            return std::async(std::launch::deferred, [] { return std::vector<double>(); });
+        params.method = against;
+        params.user_sampler = nullptr;
+    }
+    return std::async(std::launch::async, [job, against, params] {
+        return ggxbridge::bin_probabilities(against, params, job.bins_z, job.bins_phi, job.direction);
     });
 }
 
@@ -70,10 +111,14 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
                       job.bins_phi, job.direction);
     // The expectation, started before, is awaited first: the timing below
     // then measures the device alone, not the device beside the quadrature.
-    std::vector<double> probabilities = expectation.get();
+    const std::vector<double> reference = expectation.get();
     auto start = std::chrono::steady_clock::now();
     ggxcl::Histogram counts = sampler.histogram(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const bool user = job.params.method == ggxcl::Method::user;
+    double quadrature_error = 0.0;
+    const std::vector<double> probabilities =
+        user ? pdf_bin_probabilities(sampler, job.params, job.bins_z, job.bins_phi, quadrature_error) : reference;
     ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
 
     std::vector<double> observed(counts.counts.begin(), counts.counts.end()), expected(probabilities.size());
@@ -82,9 +127,18 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
     write_npy_f64(job.prefix + ".observed.npy", job.bins_z, job.bins_phi, observed);
     write_npy_f64(job.prefix + ".expected.npy", job.bins_z, job.bins_phi, expected);
     nlohmann::json doc = summary(sampler, job, counts, fit, seconds);
+    HistogramResult result{fit.statistic, fit.p_value, double(job.range.count) / seconds, fit.dof, "", {}};
+    if (user) {
+        result.checks = user_sampler_checks(sampler, job, counts, fit, reference);
+        result.checks.insert(result.checks.begin() + 1, pdf_integral_check(probabilities, quadrature_error));
+        doc["expected_from_pdf_of"] = ggxcl::sampler_name(job.params) + " (its own pdf, integrated over each bin)";
+        doc["quadrature_error"] = quadrature_error;
+        for (const HistogramCheck& check : result.checks)
+            doc["checks"].push_back(
+                {{"name", check.name}, {"summary", check.summary}, {"passed", check.passed}, {"p_value", check.p_value}});
+    }
     write_text_file(job.prefix + ".json", doc.dump(2) + "\n");
 
-    HistogramResult result{fit.statistic, fit.p_value, double(job.range.count) / seconds, fit.dof, ""};
     if (job.png) {
         run_plot_script("plot_histogram.py", {job.prefix + ".json", job.prefix + ".png"});
         result.png = job.prefix + ".png";

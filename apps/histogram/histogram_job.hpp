@@ -11,6 +11,8 @@
 
 #include <ggxcl/ggxcl.hpp>
 
+#include "user_checks.hpp"
+
 namespace ggxapp {
 
 struct HistogramJob {
@@ -22,17 +24,22 @@ struct HistogramJob {
     ggxcl::Field direction = ggxcl::Field::o;  // o or m
     std::string prefix;
     bool png = true;
+    double level = 1e-3;  // a user sampler's checks: a chi-square passes when p >= level
 };
 
 struct HistogramResult {
     double chi_square = 0, p_value = 0, samples_per_second = 0;
     int dof = 0;
     std::string png;  // path of the figure, empty when none was drawn
+    // A user sampler (Method::user): chi-square against its own pdf (the result above), against
+    // the distribution it claims, and its pdf_o against the pdfs recomputed from (i, o).
+    std::vector<HistogramCheck> checks;
 };
 
 // The expected probability of each bin (the reference's quadrature of the
-// pdf of job.against), computed on threads of its own while the caller
-// opens the device and the device bins.
+// pdf of job.against; for a user sampler, of the distribution it claims,
+// none for its own), computed on threads of its own while the caller opens
+// the device and the device bins.
 std::future<std::vector<double>> start_expectation(const HistogramJob& job);
 
 HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job,

@@ -83,7 +83,7 @@ struct SampleCommand {
     SampleJob job() const
     {
         SampleJob job;
-        job.params = options.params_for(options.parsed_method());
+        job.params = options.parsed_params();
         job.theta_degrees = options.parsed_theta();
         job.phi_degrees = options.parsed_phi();
         if (!uniforms.empty())
@@ -133,7 +133,7 @@ void run_sample(const SampleCommand& command, const PreparedSample& prepared)
     for (auto& s : owned)
         samplers.push_back(s.get());
     run_sample_job(samplers, job);
-    std::cout << job.out << ": " << job.range.count << " samples of " << command.options.method
+    std::cout << job.out << ": " << job.range.count << " samples of " << ggxcl::sampler_name(job.params)
               << (prepared.shard_note.empty() ? "" : ", " + prepared.shard_note) << "\n";
 }
 

@@ -80,7 +80,12 @@ nlohmann::json describe_sampling(const ggxcl::SampleParams& p, double theta_degr
                                  const ggxcl::SampleRange& range)
 {
     nlohmann::json doc;
-    doc["method"] = std::string(ggxcl::method_name(p.method));
+    doc["method"] = ggxcl::sampler_name(p);
+    if (p.user_sampler) {
+        doc["sampler_file"] = p.user_sampler->path();
+        doc["sampler_key"] = p.user_sampler->key();
+        doc["sampler_distribution"] = std::string(ggxcl::distribution_name(p.user_sampler->distribution()));
+    }
     doc["alpha"] = {p.alpha_x, p.alpha_y};
     doc["precision"] = std::string(ggxcl::precision_name(p.precision));
     doc["theta_degrees"] = theta_degrees;

@@ -5,7 +5,7 @@ namespace ggxcl {
 
 InvalidArgument::InvalidArgument(const std::string& parameter, const std::string& value,
                                  const std::string& allowed)
-    : Error("invalid " + parameter + " '" + value + "': allowed is " + allowed), parameter_(parameter)
+    : Error("invalid " + parameter + " '" + value + "': allowed is " + allowed), parameter_(parameter), allowed_(allowed)
 {
 }
 
@@ -26,9 +26,10 @@ DeviceLost::DeviceLost(const std::string& call, int code)
 }
 
 BuildError::BuildError(int code, const std::string& device, const std::string& options,
-                       const std::string& log)
-    : ClError(code, describe_failure("clBuildProgram on '" + device + "' with options '" + options + "'",
-                                     code) + "\nbuild log:\n" + log),
+                       const std::string& log, const std::string& summary)
+    : ClError(code, (summary.empty() ? "" : summary + "\n") +
+                        describe_failure("clBuildProgram on '" + device + "' with options '" + options + "'",
+                                         code) + "\nbuild log:\n" + log),
       log_(log)
 {
 }

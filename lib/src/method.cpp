@@ -12,6 +12,7 @@ std::string_view method_name(Method method)
     case Method::identifier: return name;
         GGX_METHOD_LIST(GGXCL_METHOD_NAME)
 #undef GGXCL_METHOD_NAME
+    case Method::user: return "user";
     }
     return "unknown";
 }

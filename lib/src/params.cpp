@@ -85,6 +85,24 @@ void check_eta(const SampleParams& params)
         throw InvalidArgument("transport", std::to_string(transport), "radiance or importance");
 }
 
+// Method::user and user_sampler come together; a user sampler is a tangent-space reflection sampler.
+void check_user_sampler(const SampleParams& params)
+{
+    const bool user = params.method == Method::user;
+    if (user && !params.user_sampler)
+        throw InvalidArgument("user_sampler", "none", "a UserSampler (UserSampler::load) for method user");
+    if (!user && params.user_sampler)
+        throw InvalidArgument("method", std::string(method_name(params.method)),
+                              "user when user_sampler is set (" + params.user_sampler->name() + ")");
+    if (user && params.eta != 0.0f)
+        throw InvalidArgument("eta", text(params.eta),
+                              "0 for a user sampler (" + params.user_sampler->name() +
+                                  "): its reflection sampler is run on conductors only");
+    if (user && params.world_space)
+        throw InvalidArgument("world_space", "true",
+                              "false for a user sampler (" + params.user_sampler->name() + "): tangent space only");
+}
+
 // u3 in [0, 1); NaN fails the compares.
 void check_lobe_uniform(std::size_t index, float u)
 {
@@ -178,6 +196,13 @@ Vec3 view_from_angles(double theta_degrees, double phi_degrees)
     return {float(std::sin(t) * std::cos(p)), float(std::sin(t) * std::sin(p)), float(std::cos(t))};
 }
 
+std::string sampler_name(const SampleParams& params)
+{
+    if (params.method == Method::user && params.user_sampler)
+        return params.user_sampler->name();
+    return std::string(method_name(params.method));
+}
+
 bool uses_normal(const SampleParams& params)
 {
     return params.method == Method::caps_iso || params.world_space;
@@ -222,6 +247,7 @@ void validate(const SampleParams& params)
     check_isotropic(params, params.alpha_x, params.alpha_y);
     check_direction("view", params.view);
     check_direction("normal", params.normal);
+    check_user_sampler(params);
     check_eta(params);
 }
 

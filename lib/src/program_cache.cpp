@@ -9,6 +9,8 @@
 #include "build_program.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/kernel_sources.hpp"
+#include "ggxcl/user_sampler.hpp"
+#include "user_sampler_source.hpp"
 
 namespace ggxcl {
 
@@ -91,8 +93,16 @@ cl::Program ProgramCache::get(const cl::Device& device, const std::string& file,
         return found->second;
     bool from_disk = false;
     // The kernels are OpenCL C 1.2 and use no extension: every device builds them.
-    cl::Program program =
-        detail::build_program(context_, device, kernel_source(file), options + " -cl-std=CL1.2", true, &from_disk);
+    cl::Program program;
+    try {
+        program = detail::build_program(context_, device, program_source(file, options),
+                                        options + " -cl-std=CL1.2", true, &from_disk);
+    } catch (const BuildError& error) {
+        if (options.find("-DGGX_USER_SAMPLER=1") == std::string::npos)
+            throw;
+        throw BuildError(error.code(), device.getInfo<CL_DEVICE_NAME>(), options + " -cl-std=CL1.2", error.log(),
+                         detail::user_build_summary(error.log()));
+    }
     loaded_from_disk_ += from_disk ? 1 : 0;
     return programs_.emplace(key, program).first->second;
 }

@@ -4,6 +4,7 @@
 #include <iterator>
 
 #include "device_contract.hpp"
+#include "user_sampler_source.hpp"
 
 namespace ggxcl::detail {
 
@@ -66,6 +67,7 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
                     params.normal.z == 1.0f;
     v.dielectric = params.eta != 0.0f;
     v.importance = v.dielectric && params.transport == Transport::importance;
+    v.user = params.user_sampler;
     return v;
 }
 
@@ -77,6 +79,8 @@ std::string variant_defines(const ProgramVariant& v)
 #define GGX_PROGRAM_FLAG_DEFINE(field, macro) options += define(macro, v.field ? 1 : 0);
     GGX_PROGRAM_FLAGS(GGX_PROGRAM_FLAG_DEFINE)
 #undef GGX_PROGRAM_FLAG_DEFINE
+    if (v.method == Method::user && v.user)
+        options += user_sampler_options(*v.user);
     if (v.kind == ProgramKind::histogram)
         options += define("GGX_BINS_Z", v.bins.bins_z) + define("GGX_BINS_PHI", v.bins.bins_phi) +
                    define("GGX_BIN_M", v.bins.of_m ? 1 : 0);
@@ -112,6 +116,8 @@ bool variant_is_reachable(const ProgramVariant& v)
     if (v.per_sample_normal && v.normal_is_z)
         return false;
     if ((v.importance && !v.dielectric) || (v.dielectric && v.method == Method::bounded))
+        return false;
+    if ((v.method == Method::user) != bool(v.user) || (v.user && (v.dielectric || v.world_space)))
         return false;
     if (v.kind == ProgramKind::histogram && (v.bins.bins_z < 1 || v.bins.bins_phi < 1))
         return false;

@@ -5,6 +5,7 @@
 // for the offline GPU compilers (tests/gpu_compilers).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "ggxcl/fields.hpp"
@@ -52,6 +53,7 @@ struct ProgramVariant {
     GGX_PROGRAM_FLAGS(GGX_PROGRAM_FLAG_MEMBER)
 #undef GGX_PROGRAM_FLAG_MEMBER
     HistogramBins bins;  // histogram programs only
+    std::shared_ptr<const UserSampler> user;  // method user: the sampler's file
 };
 
 // Whether a request's alphas are all isotropic, and its views all above the horizon.

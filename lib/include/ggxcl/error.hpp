@@ -20,9 +20,10 @@ class InvalidArgument : public Error {
 public:
     InvalidArgument(const std::string& parameter, const std::string& value, const std::string& allowed);
     const std::string& parameter() const { return parameter_; }
+    const std::string& allowed() const { return allowed_; }
 
 private:
-    std::string parameter_;
+    std::string parameter_, allowed_;
 };
 
 // No OpenCL platform, or no device at all.
@@ -59,10 +60,12 @@ public:
 };
 
 // clBuildProgram failed: the message carries the CL error name, the build
-// options and the device's build log.
+// options and the device's build log (after `summary`, when given: for a
+// user sampler, the first error with its file and line).
 class BuildError : public ClError {
 public:
-    BuildError(int code, const std::string& device, const std::string& options, const std::string& log);
+    BuildError(int code, const std::string& device, const std::string& options, const std::string& log,
+               const std::string& summary = "");
     const std::string& log() const { return log_; }
 
 private:

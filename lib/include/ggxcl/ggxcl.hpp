@@ -10,4 +10,5 @@
 #include "ggxcl/params.hpp"
 #include "ggxcl/sampler.hpp"
 #include "ggxcl/user_kernels.hpp"
+#include "ggxcl/user_sampler.hpp"
 #include "ggxcl/version.hpp"

@@ -5,11 +5,13 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "ggxcl/method.hpp"
+#include "ggxcl/user_sampler.hpp"
 
 namespace ggxcl {
 
@@ -90,11 +92,18 @@ struct SampleParams {
     // bounded (whose cap omits normals that refract: docs/MATH.md).
     float eta = 0.0f;
     Transport transport = Transport::radiance;
+    // The sampler of Method::user (set both, or neither): a file of the user's own
+    // (ggxcl/user_sampler.hpp), in tangent space, on a conductor (eta = 0).
+    std::shared_ptr<const UserSampler> user_sampler;
     // Outside its domain (a roughness of 0, the view exactly opposite the
     // normal, ...) every method returns the fallback m = o = n, pdfs and
     // weight 0 (docs/STABILITY.md).  What these guards cost is
     // measured through ggxcl/benchmark.hpp.
 };
+
+// The name of params' sampler in reports: the user sampler's name for Method::user, else
+// method_name(params.method).
+std::string sampler_name(const SampleParams& params);
 
 // Whether the view is measured against params.normal (caps-iso, world space)
 // rather than the tangent-space +z.

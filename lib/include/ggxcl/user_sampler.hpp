@@ -1,0 +1,69 @@
+// user_sampler.hpp - a GGX sampler of the user's own, in one file of OpenCL C
+// (the language of the device headers), run by every front end of the library
+// in place of a built-in method: SampleParams{Method::user, ...} with
+// SampleParams::user_sampler set.  The file defines the functions of
+// kernels/ggx_user_sampler.h (ggx_user_sample or ggx_user_sample_m, and
+// ggx_user_pdf) and states the distribution it claims with
+// `#define GGX_USER_DISTRIBUTION GGX_USER_VNDF` (or _NDF, _OWN).
+// docs/USER-SAMPLERS.md tells the whole contract.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace ggxcl {
+
+// The distribution of normals a user sampler claims (GGX_USER_* of ggx_contract.h):
+//   vndf - the GGX visible normals, D_i(m) = G1(i) max(0, i.m) D(m) / iz (as heitz, caps);
+//   ndf  - the GGX normals, D(m) mz (as ndf);
+//   own  - a density of its own, given by its pdf alone (as bounded).
+enum class Distribution { vndf = 0, ndf = 1, own = 2 };
+inline constexpr std::array<Distribution, 3> all_distributions = {Distribution::vndf, Distribution::ndf,
+                                                                  Distribution::own};
+std::string_view distribution_name(Distribution distribution);  // "vndf", "ndf", "own"
+
+class UserSampler {
+public:
+    // Reads the sampler in `path` and the files it includes with #include "..." (the device
+    // headers by their names, others relative to the including file), each once.  `name` names
+    // it in reports (default: the file's stem); it must be 1-40 letters, digits, '_', '-' or '.'
+    // and no built-in method's name.  Throws InvalidArgument (parameter "sampler") naming the
+    // file when it cannot be read, defines no sample function or no ggx_user_pdf, or states no
+    // GGX_USER_DISTRIBUTION; (parameter "sampler name") for a bad name.  A file that does not
+    // compile throws BuildError when a program is first built from it, its message starting
+    // with the file and line of the first error.
+    static std::shared_ptr<const UserSampler> load(const std::string& path, const std::string& name = "");
+
+    const std::string& name() const { return name_; }
+    const std::string& path() const { return path_; }
+    Distribution distribution() const { return distribution_; }
+    // Whether the file defines ggx_user_sample_m (the library completes the sample) rather
+    // than ggx_user_sample.
+    bool samples_m() const { return samples_m_; }
+    // The file with its includes expanded, framed by #line markers naming each file.
+    const std::string& source() const { return source_; }
+    // 16 hex digits of a hash of source(): programs built from it are cached under it, so an
+    // edited file (or an edited file it includes) builds anew.
+    const std::string& key() const { return key_; }
+
+private:
+    UserSampler() = default;
+    std::string name_, path_, source_, key_;
+    Distribution distribution_ = Distribution::vndf;
+    bool samples_m_ = false;
+};
+
+// The build options that select `sampler` in a library program (kernels/ggx_*.cl built with
+// -DGGX_METHOD=GGX_METHOD_USER), its key among them:
+// " -DGGX_USER_SAMPLER=1 -DGGX_USER_SAMPLES_M=0|1 -DGGX_USER_SOURCE=0x<key>ull".
+std::string user_sampler_options(const UserSampler& sampler);
+
+// The source a library program is built from: kernel_source(file) (kernel_sources.hpp), followed
+// by the user sampler whose key `options` carry (one loaded in this process; InvalidArgument
+// otherwise).  A program's source is a function of its file and options, so the program caches
+// (in memory, on disk) keep user programs like the others, and an edited file builds anew.
+std::string program_source(const std::string& file, const std::string& options);
+
+} // namespace ggxcl

@@ -1,0 +1,15 @@
+// pdf_doubled.h - a negative control: caps' samples with a pdf function off
+// by a factor of 2.  The pdf recomputed from (i, o) must disagree.
+#include "ggx_samplers.h"
+
+#define GGX_USER_DISTRIBUTION GGX_USER_VNDF
+
+GGX_INLINE ggx_sample ggx_user_sample(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    return ggx_sample_caps(i, ax, ay, u1, u2);
+}
+
+GGX_INLINE float ggx_user_pdf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return 2.0f * ggx_pdf_caps(i, o, ax, ay);
+}

@@ -1,0 +1,16 @@
+// swapped_axes.h - a negative control: caps drawn with its roughness axes
+// swapped, while its pdf and its claim (the GGX VNDF) keep them.  On an
+// anisotropic surface the chi-square tests must reject it.
+#include "ggx_samplers.h"
+
+#define GGX_USER_DISTRIBUTION GGX_USER_VNDF
+
+GGX_INLINE ggx_sample ggx_user_sample(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    return ggx_sample_caps(i, ay, ax, u1, u2);
+}
+
+GGX_INLINE float ggx_user_pdf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_pdf_caps(i, o, ax, ay);
+}

@@ -9,6 +9,8 @@
 //    above and the whole example (host code too) compile with it;
 //  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check.
 // The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h) are OpenCL C alone.
+// ggx_user_sampler.h declares what a user sampler's file defines after it: it compiles
+// with the test samplers of tests/user_samplers (one of whole samples, one of m alone) after it.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -136,9 +138,30 @@ TEST_CASE("every public device header compiles alone as C++17 (GCC, Clang), CUDA
     for (const std::string& header : headers) {
         CAPTURE(header);
         const std::string include = "#include \"" + header + "\"\n";
+        if (header == "ggx_user_sampler.h")
+            continue;  // below, with a sampler file after it
         const std::string cpp = write_file(dir / (header + ".cpp"), include).string();
         const std::string cu = write_file(dir / (header + ".cu"), include).string();
         const std::string cl = write_file(dir / (header + ".cl"), include).string();
+        check_compiles("g++", gcc_cxx(cpp));
+        check_compiles("clang++", clang_cxx(cpp));
+        check_compiles("clang++ -x cuda", clang_cuda(cu));
+        check_compiles("clang -x cl", clang_opencl(cl));
+    }
+}
+
+TEST_CASE("a user sampler's file after ggx_user_sampler.h compiles as C++17, CUDA and OpenCL C 1.2")
+{
+    const fs::path dir = ggxtest::scratch_dir("languages");
+    for (const std::string file : {"caps_copy.h", "heitz_normal_only.h"}) {
+        CAPTURE(file);
+        const std::string samples_m = file == "heitz_normal_only.h" ? "1" : "0";
+        const std::string include = "#define GGX_USER_SAMPLER 1\n#define GGX_USER_SAMPLES_M " + samples_m +
+                                    "\n#include \"ggx_samplers.h\"\n#include \"" + GGX_USER_SAMPLERS_DIR + "/" +
+                                    file + "\"\n";
+        const std::string cpp = write_file(dir / (file + ".cpp"), include).string();
+        const std::string cu = write_file(dir / (file + ".cu"), include).string();
+        const std::string cl = write_file(dir / (file + ".cl"), include).string();
         check_compiles("g++", gcc_cxx(cpp));
         check_compiles("clang++", clang_cxx(cpp));
         check_compiles("clang++ -x cuda", clang_cuda(cu));

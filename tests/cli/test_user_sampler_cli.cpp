@@ -1,0 +1,136 @@
+// test_user_sampler_cli.cpp - `ggx sample` and `ggx histogram` with
+// --sampler FILE.h: a copy of caps writes caps' samples and passes every
+// check; the negative controls fail the checks they must (swapped roughness
+// axes: both chi-square tests; a pdf off by 2: the pdf from (i, o) and its
+// integral), naming them, with exit 1 under --check; a file that does not
+// compile exits 1 naming its file and line; bad flags exit 2 naming the flag.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch()
+{
+    static fs::path dir = ggxtest::scratch_dir("user-cli");
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::string sampler_file(const std::string& name)
+{
+    return std::string(GGX_USER_SAMPLERS_DIR) + "/" + name;
+}
+
+ggxtest::Run ggx(const std::string& args)
+{
+    return ggxtest::run_ggx(args, scratch() / "stderr.txt");
+}
+
+// The verdicts of the histogram's checks by name.
+std::map<std::string, bool> verdicts(const fs::path& prefix)
+{
+    std::ifstream in(prefix.string() + ".json");
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    std::map<std::string, bool> out;
+    for (const nlohmann::json& check : doc["checks"])
+        out[check["name"].get<std::string>()] = check["passed"].get<bool>();
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("ggx sample --sampler: a copy of caps writes caps' samples, named for its file")
+{
+    const fs::path mine = scratch() / "mine.npy", caps = scratch() / "caps.npy";
+    const std::string common = " --alpha 0.2,0.5 --theta 75 --sequence sobol -n 3000 --fields m,o,pdf_o,weight,u ";
+    REQUIRE(ggx("sample --sampler " + sampler_file("caps_copy.h") + common + "--out " + mine.string()).status == 0);
+    REQUIRE(ggx("sample --method caps" + common + "--out " + caps.string()).status == 0);
+    CHECK(ggxtest::read_all(mine) == ggxtest::read_all(caps));
+    std::ifstream in(scratch() / "mine.json");
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    CHECK(doc["method"] == "caps_copy");
+    CHECK(doc["sampler_distribution"] == "vndf");
+}
+
+TEST_CASE("ggx histogram --sampler: every check passes for a copy of caps, a sampler of m alone too")
+{
+    for (const std::string file : {"caps_copy.h", "heitz_normal_only.h"}) {
+        CAPTURE(file);
+        const fs::path prefix = scratch() / "good";
+        const ggxtest::Run run = ggx("histogram --sampler " + sampler_file(file) +
+                                     " --alpha 0.2,0.6 -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
+        CAPTURE(run.err);
+        CHECK(run.status == 0);
+        const std::map<std::string, bool> got = verdicts(prefix);
+        CHECK(got.size() == 5);
+        for (const auto& [name, passed] : got) {
+            CAPTURE(name);
+            CHECK(passed);
+        }
+    }
+}
+
+TEST_CASE("ggx histogram --sampler: the negative controls fail the checks they must, by name")
+{
+    struct Control {
+        const char* file;
+        std::vector<std::string> failing, passing;
+    };
+    const Control controls[] = {
+        {"swapped_axes.h", {"its own pdf", "the claimed vndf"}, {"pdf integrates to 1"}},
+        {"pdf_doubled.h", {"pdf from (i, o)", "pdf integrates to 1"}, {"the claimed vndf", "pdf of the claimed vndf"}},
+    };
+    for (const Control& control : controls) {
+        CAPTURE(control.file);
+        const fs::path prefix = scratch() / "control";
+        const ggxtest::Run run = ggx("histogram --sampler " + sampler_file(control.file) +
+                                     " --alpha 0.2,0.6 -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
+        CAPTURE(run.err);
+        CHECK(run.status == 1);
+        const std::map<std::string, bool> got = verdicts(prefix);
+        for (const std::string& name : control.failing) {
+            CAPTURE(name);
+            CHECK(got.at(name) == false);
+            CHECK(run.err.find(name) != std::string::npos);
+        }
+        for (const std::string& name : control.passing) {
+            CAPTURE(name);
+            CHECK(got.at(name) == true);
+        }
+    }
+}
+
+TEST_CASE("ggx --sampler: a file that does not compile exits 1 naming its file and line; bad flags exit 2")
+{
+    const ggxtest::Run broken = ggx("sample --sampler " + sampler_file("syntax_error.h") + " -n 10 --out " +
+                                    (scratch() / "broken.npy").string());
+    CHECK(broken.status == 1);
+    CHECK(broken.err.find("syntax_error.h:9:") != std::string::npos);
+    CHECK_FALSE(fs::exists(scratch() / "broken.npy"));
+    const std::string file = sampler_file("caps_copy.h");
+    const std::pair<std::string, std::string> bad[] = {
+        {"sample --sampler " + file + " --sampler-name caps", "--sampler-name"},
+        {"sample --sampler " + (scratch() / "none.h").string(), "--sampler"},
+        {"sample --sampler " + sampler_file("../user_samplers/none.h"), "--sampler"},
+        {"sample --sampler " + file + " --method caps", "--method"},
+        {"sample --sampler " + file + " --eta 1.5", "--eta"},
+        {"sample", "--method or --sampler"},
+        {"histogram --sampler " + file + " --against ndf", "--against"},
+        {"histogram --sampler " + file + " --of m", "--of"},
+    };
+    for (const auto& [args, flag] : bad) {
+        CAPTURE(args);
+        const ggxtest::Run run = ggx(args + " -n 10 --out " + (scratch() / "bad").string());
+        CHECK(run.status == 2);
+        CHECK(run.err.find(flag) != std::string::npos);
+    }
+}

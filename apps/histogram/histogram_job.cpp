@@ -68,7 +68,7 @@ std::vector<HistogramCheck> user_sampler_checks(ggxcl::Sampler& sampler, const H
 {
     std::vector<HistogramCheck> checks = {chi_square_check("its own pdf", own, job.level)};
     ggxcl::Method method = ggxcl::Method::heitz;
-    const bool claims = claimed_method(job.params.user_sampler->distribution(), method);
+    const bool claims = ggxbridge::claimed_method(job.params.user_sampler->distribution(), method);
     if (claims)
         checks.push_back(chi_square_check(std::string("the claimed ") +
                                               std::string(ggxcl::distribution_name(job.params.user_sampler->distribution())),
@@ -86,7 +86,7 @@ std::future<std::vector<double>> start_expectation(const HistogramJob& job)
     ggxcl::Method against = job.against;
     ggxcl::SampleParams params = job.params;
     if (params.method == ggxcl::Method::user) {
-        if (!claimed_method(params.user_sampler->distribution(), against))
+        if (!ggxbridge::claimed_method(params.user_sampler->distribution(), against))
             return std::async(std::launch::deferred, [] { return std::vector<double>(); });
         params.method = against;
         params.user_sampler = nullptr;
@@ -118,7 +118,7 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
     const bool user = job.params.method == ggxcl::Method::user;
     double quadrature_error = 0.0;
     const std::vector<double> probabilities =
-        user ? pdf_bin_probabilities(sampler, job.params, job.bins_z, job.bins_phi, quadrature_error) : reference;
+        user ? ggxbridge::pdf_bin_probabilities(sampler, job.params, job.bins_z, job.bins_phi, quadrature_error) : reference;
     ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
 
     std::vector<double> observed(counts.counts.begin(), counts.counts.end()), expected(probabilities.size());

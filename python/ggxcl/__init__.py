@@ -5,7 +5,9 @@
     d = s.sample("caps", 1 << 20, alpha=0.3, theta=60, seed=1)
     d["o"].shape, d["pdf_o"].shape          # (1048576, 3) float32, (1048576,) float32
 
-Methods: ndf, heitz, heitz2017, caps, caps-iso, bounded.  Fields: m and o
+Methods: ndf, heitz, heitz2017, caps, caps-iso, bounded, or a sampler of your
+own in one file: ggxcl.UserSampler("my.h") in place of the name
+(docs/USER-SAMPLERS.md).  Fields: m and o
 (n, 3), pdf_m, pdf_o, weight (n,), u (n, 2): the uniforms a sample used.
 Sample k depends on (seed, k) alone: the same seed and range give the bits
 that `ggx sample` writes and the C++ Sampler::generate returns.  Per-sample
@@ -27,10 +29,11 @@ from ._ggxcl import (  # noqa: F401
     DeviceLost,
     InvalidArgument,
     Sampler,
+    UserSampler,
     __version__,
     devices,
     methods,
 )
 
-__all__ = ["Sampler", "devices", "methods", "InvalidArgument", "DeviceError", "BuildError", "DeviceLost",
+__all__ = ["Sampler", "UserSampler", "devices", "methods", "InvalidArgument", "DeviceError", "BuildError", "DeviceLost",
            "__version__"]

@@ -18,6 +18,27 @@ class BuildError(DeviceError):
 class DeviceLost(DeviceError): ...
 
 Alpha = Union[float, Tuple[float, float], npt.NDArray[np.floating[Any]]]
+
+class UserSampler:
+    """A sampler of your own in one file of OpenCL C (docs/USER-SAMPLERS.md): pass it as `method`."""
+
+    def __init__(self, path: str, name: Optional[str] = None) -> None:
+        """Reads `path` and what it includes; `name` (default: the file's stem) names it in reports. A file
+        without ggx_user_sample(_m), ggx_user_pdf or GGX_USER_DISTRIBUTION raises InvalidArgument naming the file;
+        one that does not compile raises BuildError at its first use, naming its file and line."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def distribution(self) -> str:
+        """The distribution it claims: 'vndf', 'ndf' or 'own'."""
+    @property
+    def samples_m(self) -> bool: ...
+    @property
+    def key(self) -> str: ...
+
+Method = Union[str, UserSampler]
 Vector = Union[Sequence[float], npt.NDArray[np.floating[Any]]]
 
 def devices() -> List[Dict[str, Any]]:
@@ -32,7 +53,7 @@ class Sampler:
     def enqueue(
         self,
         queue: Any,
-        method: str,
+        method: Method,
         n: int,
         *,
         outputs: Mapping[str, Any],
@@ -63,7 +84,7 @@ class Sampler:
     chunk_size: int
     def sample(
         self,
-        method: str,
+        method: Method,
         n: int,
         *,
         alpha: Alpha = 0.3,
@@ -92,7 +113,7 @@ class Sampler:
         `uniforms` then have 3 columns (u3 chooses the lobe). Every method but bounded."""
     def pdf(
         self,
-        method: str,
+        method: Method,
         directions: npt.NDArray[np.floating[Any]],
         *,
         alpha: Alpha = 0.3,
@@ -125,7 +146,7 @@ class Sampler:
         importance sampling needs; for a sampled o, eval / pdf_o is its weight."""
     def furnace(
         self,
-        method: str,
+        method: Method,
         n: int,
         *,
         alpha: Alpha = 0.3,
@@ -144,7 +165,7 @@ class Sampler:
         `eta` also 'reflectance' and 'transmittance' (their sum is the mean)."""
     def histogram(
         self,
-        method: str,
+        method: Method,
         n: int,
         *,
         alpha: Alpha = 0.3,
@@ -164,4 +185,7 @@ class Sampler:
         """Counts of o (or m) in bins of equal solid angle over (cos theta, phi), binned on the device:
         {'counts': (bins_z, bins_phi) uint64, 'expected': float64 from `against`'s pdf (default: the method's),
         'chi_square', 'dof', 'p_value', 'non_finite', 'invalid'}. With `eta` (o only) both lobes over the whole
-        sphere; 'invalid' counts the samples without density, tested as one more category."""
+        sphere; 'invalid' counts the samples without density, tested as one more category. For a UserSampler
+        (o only, no `against`): 'expected' from its own pdf integrated over each bin on the device, with
+        'pdf_integral' (1 for a density) and 'quadrature_error', and 'claimed': the chi-square against the
+        distribution it claims ({'distribution', 'chi_square', 'dof', 'p_value'}) unless it claims its own."""

@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "bind_pyopencl.hpp"
 #include "ggx_stats.hpp"
+#include "pdf_bins.hpp"
 #include "reference_bridge.hpp"
 #include "request.hpp"
 
@@ -124,14 +125,32 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     const ggxcl::Field direction = ggxcl::parse_field(of);
     if (direction != ggxcl::Field::o && direction != ggxcl::Field::m)
         throw ggxcl::InvalidArgument("of", of, "o or m");
+    const bool user = r.params.method == ggxcl::Method::user;
+    if (user && (!against.is_none() || direction != ggxcl::Field::o))
+        throw ggxcl::InvalidArgument(against.is_none() ? "of" : "against",
+                                     against.is_none() ? of : std::string(py::str(against)),
+                                     against.is_none() ? "o for a user sampler (its pdf is a density of o)"
+                                                       : "None for a user sampler: its own pdf gives the expectation");
     const ggxcl::Method expected_of = against.is_none() ? r.params.method : ggxcl::parse_method(against.cast<std::string>());
     ggxcl::Histogram counts;
-    std::vector<double> probabilities;
+    std::vector<double> probabilities, claimed;
+    double quadrature_error = 0.0;
+    ggxcl::Method claimed_method = ggxcl::Method::heitz;
+    const bool claims = user && ggxbridge::claimed_method(r.params.user_sampler->distribution(), claimed_method);
     {
         py::gil_scoped_release released;
         counts = s.histogram(r.params, {seed, first, args.count}, bins_z, bins_phi, direction);
-        probabilities =
-            ggxbridge::bin_probabilities(expected_of, ggxcl::normalized(r.params), bins_z, bins_phi, direction);
+        if (user)
+            probabilities = ggxbridge::pdf_bin_probabilities(s, r.params, bins_z, bins_phi, quadrature_error);
+        else
+            probabilities =
+                ggxbridge::bin_probabilities(expected_of, ggxcl::normalized(r.params), bins_z, bins_phi, direction);
+        if (claims) {
+            ggxcl::SampleParams theirs = ggxcl::normalized(r.params);
+            theirs.method = claimed_method;
+            theirs.user_sampler = nullptr;
+            claimed = ggxbridge::bin_probabilities(claimed_method, theirs, bins_z, bins_phi, direction);
+        }
     }
     const ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, r.params.eta != 0.0f);
     py::array_t<std::uint64_t> observed({bins_z, bins_phi});
@@ -147,6 +166,22 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     result["p_value"] = fit.p_value;
     result["non_finite"] = counts.non_finite;
     result["invalid"] = counts.invalid;
+    if (user) {
+        double total = 0.0;
+        for (double p : probabilities)
+            total += p;
+        result["pdf_integral"] = total;
+        result["quadrature_error"] = quadrature_error;
+    }
+    if (claims) {
+        const ggxref::ChiSquare theirs = ggxbridge::histogram_fit(counts, claimed, false);
+        py::dict against_claim;
+        against_claim["distribution"] = std::string(ggxcl::distribution_name(r.params.user_sampler->distribution()));
+        against_claim["chi_square"] = theirs.statistic;
+        against_claim["dof"] = theirs.dof;
+        against_claim["p_value"] = theirs.p_value;
+        result["claimed"] = against_claim;
+    }
     return result;
 }
 
@@ -188,7 +223,7 @@ void register_sampler(py::module_& m)
         .def_property("chunk_size", &ggxcl::Sampler::chunk_size, &ggxcl::Sampler::set_chunk_size)
         .def(
             "sample",
-            [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
+            [](ggxcl::Sampler& s, const py::object& method, std::uint64_t n, const py::object& alpha, double theta,
                double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
                const py::object& fields, const py::object& precision, const std::string& sequence,
                const py::object& uniforms, bool world_space, const py::object& out, const py::object& eta,
@@ -207,7 +242,7 @@ void register_sampler(py::module_& m)
             py::arg("transport") = "radiance")
         .def(
             "pdf",
-            [](ggxcl::Sampler& s, const std::string& method, const py::object& directions, const py::object& alpha,
+            [](ggxcl::Sampler& s, const py::object& method, const py::object& directions, const py::object& alpha,
                double theta, double phi, const py::object& view, const py::object& normal, const py::object& precision,
                bool world_space, const py::object& eta) {
                 return of_directions(s,
@@ -229,7 +264,7 @@ void register_sampler(py::module_& m)
                                                  "None in tangent space (the normal is z), or world_space=True");
                 // The value is the same for every method: caps's program computes it.
                 return of_directions(s,
-                                     with_dielectric(args_of("caps", 0, alpha, theta, phi, view, normal, precision,
+                                     with_dielectric(args_of(py::str("caps"), 0, alpha, theta, phi, view, normal, precision,
                                                              "philox", py::none(), world_space),
                                                      eta, transport),
                                      directions, true);
@@ -240,7 +275,7 @@ void register_sampler(py::module_& m)
             py::arg("transport") = "radiance")
         .def(
             "furnace",
-            [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
+            [](ggxcl::Sampler& s, const py::object& method, std::uint64_t n, const py::object& alpha, double theta,
                double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
                const py::object& precision, const std::string& sequence, const py::object& eta,
                const std::string& transport) {
@@ -256,7 +291,7 @@ void register_sampler(py::module_& m)
             py::arg("eta") = py::none(), py::arg("transport") = "radiance")
         .def(
             "histogram",
-            [](ggxcl::Sampler& s, const std::string& method, std::uint64_t n, const py::object& alpha, double theta,
+            [](ggxcl::Sampler& s, const py::object& method, std::uint64_t n, const py::object& alpha, double theta,
                double phi, const py::object& normal, std::uint64_t seed, std::uint64_t first, int bins_z, int bins_phi,
                const std::string& of, const py::object& against, const py::object& precision,
                const std::string& sequence, const py::object& eta) {

@@ -5,6 +5,7 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "bind_sampler.hpp"
+#include "bind_user_sampler.hpp"
 #include "errors.hpp"
 
 PYBIND11_MODULE(_ggxcl, m)
@@ -18,5 +19,6 @@ PYBIND11_MODULE(_ggxcl, m)
         return pybind11::tuple(names);
     }();
     ggxpy::register_errors(m);
+    ggxpy::register_user_sampler(m);
     ggxpy::register_sampler(m);
 }

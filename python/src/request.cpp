@@ -1,6 +1,8 @@
 // request.cpp - keyword arguments into SampleParams and PerSampleInputs.
 #include "request.hpp"
 
+#include "bind_user_sampler.hpp"
+
 #include <pybind11/numpy.h>
 
 #include "arrays.hpp"
@@ -89,7 +91,7 @@ void set_dielectric(const RequestArgs& args, Request& r)
 
 } // namespace
 
-RequestArgs args_of(const std::string& method, std::size_t n, const py::object& alpha, double theta, double phi,
+RequestArgs args_of(const py::object& method, std::size_t n, const py::object& alpha, double theta, double phi,
                     const py::object& view, const py::object& normal, const py::object& precision,
                     const std::string& sequence, const py::object& uniforms, bool world_space)
 {
@@ -119,7 +121,14 @@ Request make_request(const RequestArgs& args)
 {
     Request r;
     set_dielectric(args, r);
-    r.params.method = ggxcl::parse_method(args.method);
+    r.params.user_sampler = user_sampler_of(args.method);
+    if (r.params.user_sampler)
+        r.params.method = ggxcl::Method::user;
+    else if (py::isinstance<py::str>(args.method))
+        r.params.method = ggxcl::parse_method(args.method.cast<std::string>());
+    else
+        throw ggxcl::InvalidArgument("method", std::string(py::repr(args.method)),
+                                     "one of " + ggxcl::method_list() + ", or a ggxcl.UserSampler");
     r.params.world_space = args.world_space;
     set_alpha(args, r);
     if (args.view.is_none()) {

@@ -1,5 +1,6 @@
 // request.hpp - the keyword arguments of Sampler.sample, pdf, furnace and
-// histogram turned into the library's parameters: the method by name, alpha
+// histogram turned into the library's parameters: the method by name (or a
+// user sampler), alpha
 // as a number, a pair or a per-sample array, the view from (theta, phi)
 // degrees or as a vector or per-sample array, the normal likewise, the
 // precision mode, the sequence, the caller's uniforms, and a dielectric's
@@ -16,7 +17,7 @@
 namespace ggxpy {
 
 struct RequestArgs {
-    std::string method;
+    pybind11::object method;  // a method's name or a ggxcl.UserSampler
     std::size_t count = 0;  // samples (or directions): the rows of per-sample arrays
     pybind11::object alpha, view, normal, precision, uniforms;
     double theta = 60.0, phi = 0.0;
@@ -32,7 +33,7 @@ struct Request {
 };
 
 // The keyword arguments as the bindings receive them.
-RequestArgs args_of(const std::string& method, std::size_t n, const pybind11::object& alpha, double theta, double phi,
+RequestArgs args_of(const pybind11::object& method, std::size_t n, const pybind11::object& alpha, double theta, double phi,
                     const pybind11::object& view, const pybind11::object& normal, const pybind11::object& precision,
                     const std::string& sequence, const pybind11::object& uniforms, bool world_space);
 

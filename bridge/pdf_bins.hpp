@@ -1,0 +1,25 @@
+// pdf_bins.hpp - a histogram's expectation from a sampler's pdf on the
+// device (Sampler::pdf), for samplers the reference does not know (a user
+// sampler): each bin of equal solid angle (the device histogram's, over
+// cos theta in [-1, 1] and phi) integrated by Gauss-Legendre rules in
+// (cos theta, phi), where dw = d(cos theta) dphi.  Used by `ggx histogram`
+// and the Python Sampler.histogram.
+#pragma once
+
+#include <vector>
+
+#include <ggxcl/ggxcl.hpp>
+
+namespace ggxbridge {
+
+// Each bin's probability under params' pdf (Sampler::pdf, over the whole sphere) by the
+// 16x16-point rule, with the change from the 8x8-point rule's, |fine - coarse| summed over the
+// bins, in `quadrature_error`.
+std::vector<double> pdf_bin_probabilities(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params, int bins_z,
+                                          int bins_phi, double& quadrature_error);
+
+// The built-in method whose pdf is the claimed distribution's (heitz for vndf, ndf for ndf); false
+// for a density of its own.
+bool claimed_method(ggxcl::Distribution distribution, ggxcl::Method& method);
+
+} // namespace ggxbridge

@@ -57,6 +57,29 @@ std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& f
     }
 }
 
+void UserSamplerOptions::add_to(CLI::App& cmd)
+{
+    cmd.add_option("--sampler", files, "a sampler of your own in FILE.h, beside the methods (repeatable; "
+                                       "docs/USER-SAMPLERS.md)");
+    cmd.add_option("--sampler-name", names, "the name of the k-th --sampler in reports (repeatable; default: the "
+                                            "file's stem)");
+}
+
+std::vector<std::shared_ptr<const ggxcl::UserSampler>> UserSamplerOptions::load() const
+{
+    if (names.size() > files.size())
+        throw UsageError("--sampler-name", names.back(), "at most one name per --sampler");
+    std::vector<std::shared_ptr<const ggxcl::UserSampler>> loaded;
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        loaded.push_back(load_user_sampler(files[k], k < names.size() ? names[k] : ""));
+        for (std::size_t j = 0; j < k; ++j)
+            if (loaded[j]->name() == loaded[k]->name())
+                throw UsageError("--sampler-name", loaded[k]->name(),
+                                 "a name per sampler: two samplers are named " + loaded[k]->name());
+    }
+    return loaded;
+}
+
 ggxcl::SampleParams SampleOptions::parsed_params() const
 {
     if (sampler.empty())

@@ -18,6 +18,16 @@ std::vector<std::string> method_names();
 // UsageError naming --sampler or --sampler-name.
 std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& file, const std::string& name);
 
+// The repeatable --sampler FILE and --sampler-name NAME of the commands that compare samplers
+// (the k-th name names the k-th file), added to `cmd`.
+struct UserSamplerOptions {
+    std::vector<std::string> files, names;
+    void add_to(CLI::App& cmd);
+    // Each file loaded; UsageError for more names than files, a bad file or name, or two
+    // samplers of one name.
+    std::vector<std::shared_ptr<const ggxcl::UserSampler>> load() const;
+};
+
 struct SampleOptions {
     std::string method = "caps";
     std::string alpha = "0.3";

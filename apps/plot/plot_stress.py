@@ -62,9 +62,10 @@ def draw(rows, kinds, y_name, y_label, y_format, title, out_path):
     ys = sorted({r[y_name] for r in rows}, key=float)
     thetas = sorted({r["theta_degrees"] for r in rows}, key=float)
     totals = sums(rows, lambda r: (r["side"], r[y_name], r["theta_degrees"]))
-    fig, axes = plt.subplots(len(SIDES), len(kinds), figsize=(4 * len(kinds), 8.5), dpi=56, squeeze=False,
+    sides = [side for side in SIDES if any(r["side"] == side for r in rows)]  # a user sampler: the device alone
+    fig, axes = plt.subplots(len(sides), len(kinds), figsize=(4 * len(kinds), 4.25 * len(sides)), dpi=56, squeeze=False,
                              constrained_layout=True)
-    for i, side in enumerate(SIDES):
+    for i, side in enumerate(sides):
         for k, kind in enumerate(kinds):
             ax = axes[i][k]
             image = ax.imshow(grid(totals, side, kind, ys, thetas), origin="lower", aspect="auto", cmap="magma_r",
@@ -77,7 +78,7 @@ def draw(rows, kinds, y_name, y_label, y_format, title, out_path):
             ax.set_yticklabels([y_format(float(y)) for y in ys], fontsize=6)
             if k == 0:
                 ax.set_ylabel(y_label)
-            if i == len(SIDES) - 1:
+            if i == len(sides) - 1:
                 ax.set_xlabel("view theta (degrees)")
     fig.colorbar(image, ax=axes, shrink=0.6, label="fraction of the cell's cases")
     fig.suptitle(title, fontsize=12)

@@ -5,7 +5,9 @@
 // (device and host rows, a panel per failure kind), and prints the totals.
 // With --eta the rough dielectric's map instead (stress_dielectric.hpp):
 // a layer of cells per index, an eta column in the CSV, the totals per
-// method and per index, and bounded listed as refused.
+// method and per index, and bounded listed as refused.  --sampler FILE.h
+// adds a user sampler's device map (its own functions; the host reference
+// does not know it) beside the methods'.
 #include <algorithm>
 #include <iostream>
 #include <sstream>
@@ -24,6 +26,7 @@ namespace {
 
 struct StressCommand {
     std::string methods = "all", precision = "precise", device, out, eta;
+    UserSamplerOptions user;
     bool no_png = false;
 };
 
@@ -121,6 +124,7 @@ void print_totals(const std::string& method, const char* side, const StressMap& 
 
 struct StressPlan {
     std::vector<ggxcl::Method> methods;
+    std::vector<std::shared_ptr<const ggxcl::UserSampler>> users;  // their device maps after the methods
     ggxcl::Precision precision = ggxcl::Precision::precise;
     std::vector<float> etas;  // empty: the conductor's map
 };
@@ -136,6 +140,9 @@ StressPlan plan_stress(const StressCommand& cmd)
     }
     if (!cmd.eta.empty())
         plan.etas = parse_etas(cmd.eta);
+    plan.users = cmd.user.load();
+    if (!plan.users.empty() && !plan.etas.empty())
+        throw UsageError("--eta", cmd.eta, "no --eta with --sampler: a user sampler runs on conductors only");
     return plan;
 }
 
@@ -175,6 +182,13 @@ void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, ggxc
         append_rows(csv, name, "host", "double", axes, host);
         print_totals(name, "device", device);
         print_totals(name, "host", host);
+    }
+    for (const auto& user : plan.users) {  // the device alone: the reference does not know them
+        std::vector<StressCase> cases = stress_cases(ggxcl::Method::user, axes);
+        StressMap device =
+            device_stress_map(sampler, ggxcl::Method::user, plan.precision, cases, axes, true, user.get());
+        append_rows(csv, user->name(), "device", cmd.precision, axes, device);
+        print_totals(user->name(), "device", device);
     }
     write_text_file(cmd.out + ".csv", csv.str());
 }
@@ -256,6 +270,7 @@ Prepare add_stress_command(CLI::App& app)
     CLI::App* cmd = app.add_subcommand("stress", "Stability map: failures of every method over alpha x view x uniforms, "
                                                  "device and host reference");
     cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
+    s->user.add_to(*cmd);
     cmd->add_option("--precision", s->precision, "precision mode on the device: one of " + ggxcl::precision_list())
         ->capture_default_str();
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");

@@ -58,9 +58,10 @@ void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, 
         cell.failures[k] += kinds[k];
 }
 
-std::string stress_defines(ggxcl::Method method, bool guards)
+std::string stress_defines(ggxcl::Method method, bool guards, const ggxcl::UserSampler* user)
 {
-    return "-DGGX_METHOD=" + std::to_string(static_cast<int>(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0");
+    return "-DGGX_METHOD=" + std::to_string(static_cast<int>(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0") +
+           (user ? ggxcl::user_sampler_options(*user) : std::string());
 }
 
 std::string stress_options(const cl::Device& device, const std::string& defines, ggxcl::Precision precision)
@@ -72,8 +73,16 @@ std::vector<float> run_stress_kernel(ggxcl::Sampler& sampler, const std::string&
                                      const std::vector<float>& in, std::size_t count, int output_planes)
 {
     std::vector<float> out(output_planes * count);
-    cl::Program program(sampler.context(), ggxcl::kernel_source("ggx_stress.cl"));
-    program.build({sampler.device()}, options.c_str());
+    cl::Program program;
+    try {
+        program = ggxcl::build_user_program(sampler.context(), sampler.device(),
+                                            ggxcl::program_source("ggx_stress.cl", options), options);
+    } catch (const ggxcl::BuildError& error) {
+        if (options.find("-DGGX_USER_SAMPLER=1") == std::string::npos)
+            throw;
+        throw ggxcl::BuildError(error.code(), sampler.device_name(), options, error.log(),
+                                ggxcl::user_build_summary(error.log()));
+    }
     cl::Kernel kernel(program, "ggx_stress");
     cl::Buffer in_buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
                          const_cast<float*>(in.data()));
@@ -117,10 +126,11 @@ std::array<bool, failure_kinds> classify(const StressOutcome& s, const ggxcl::Ve
 }
 
 StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
-                            const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
+                            const std::vector<StressCase>& cases, const StressAxes& axes, bool guards,
+                            const ggxcl::UserSampler* user)
 {
     const std::size_t n = cases.size();
-    const std::string options = stress_options(sampler.device(), stress_defines(method, guards), precision);
+    const std::string options = stress_options(sampler.device(), stress_defines(method, guards, user), precision);
     std::vector<float> out = run_stress_kernel(sampler, options, planar_inputs(cases), n, output_planes);
     StressMap map(axes.alphas.size() * axes.cos_theta.size());
     for (std::size_t j = 0; j < n; ++j) {

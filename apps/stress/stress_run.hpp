@@ -29,8 +29,8 @@ enum FailureKind { nan_inf, fallback, not_unit, m_below, wasted, pdf_nonpositive
 const char* failure_name(int kind);
 
 // The -D options of kernels/ggx_stress.cl for a method, with or without the guards (the device's and
-// the precision mode's options come on top).
-std::string stress_defines(ggxcl::Method method, bool guards);
+// the precision mode's options come on top); Method::user with its sampler's options.
+std::string stress_defines(ggxcl::Method method, bool guards, const ggxcl::UserSampler* user = nullptr);
 
 struct StressOutcome {
     double m[3], o[3], pdf_m, pdf_o, weight, pdf_again;
@@ -49,8 +49,10 @@ using CellCounts = Counts<failure_kinds>;
 using StressMap = std::vector<CellCounts>;
 
 // guards = false builds the kernel with GGX_GUARDS=0 (what the map looks like without them).
+// Method::user runs `user`'s device functions.
 StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
-                            const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true);
+                            const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true,
+                            const ggxcl::UserSampler* user = nullptr);
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
 // The device headers compiled as C++ by this program's compiler (stress_cpp.cpp): the same
 // functions the kernel calls, on the host.

@@ -10,7 +10,6 @@
 #include "ggxcl/error.hpp"
 #include "ggxcl/kernel_sources.hpp"
 #include "ggxcl/user_sampler.hpp"
-#include "user_sampler_source.hpp"
 
 namespace ggxcl {
 
@@ -101,7 +100,7 @@ cl::Program ProgramCache::get(const cl::Device& device, const std::string& file,
         if (options.find("-DGGX_USER_SAMPLER=1") == std::string::npos)
             throw;
         throw BuildError(error.code(), device.getInfo<CL_DEVICE_NAME>(), options + " -cl-std=CL1.2", error.log(),
-                         detail::user_build_summary(error.log()));
+                         user_build_summary(error.log()));
     }
     loaded_from_disk_ += from_disk ? 1 : 0;
     return programs_.emplace(key, program).first->second;

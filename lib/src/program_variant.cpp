@@ -4,7 +4,6 @@
 #include <iterator>
 
 #include "device_contract.hpp"
-#include "user_sampler_source.hpp"
 
 namespace ggxcl::detail {
 

@@ -1,6 +1,6 @@
 // user_sampler.cpp - reading a user sampler's file (its includes expanded,
 // #line markers naming each file), what it defines and claims, and the
-// source of a program built with it (user_sampler_source.hpp).
+// source of a program built with it.
 #include "ggxcl/user_sampler.hpp"
 
 #include <filesystem>
@@ -16,7 +16,6 @@
 #include "ggxcl/error.hpp"
 #include "ggxcl/kernel_sources.hpp"
 #include "ggxcl/method.hpp"
-#include "user_sampler_source.hpp"
 
 namespace fs = std::filesystem;
 
@@ -182,8 +181,6 @@ std::string program_source(const std::string& file, const std::string& options)
     return kernel_source(file) + "\n" + found->second;
 }
 
-namespace detail {
-
 std::string user_build_summary(const std::string& log)
 {
     std::istringstream lines(log);
@@ -193,7 +190,5 @@ std::string user_build_summary(const std::string& log)
             return "the user sampler does not compile: " + line;
     return "the user sampler does not compile";
 }
-
-} // namespace detail
 
 } // namespace ggxcl

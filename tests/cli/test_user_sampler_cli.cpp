@@ -8,6 +8,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -133,4 +135,34 @@ TEST_CASE("ggx --sampler: a file that does not compile exits 1 naming its file a
         CHECK(run.status == 2);
         CHECK(run.err.find(flag) != std::string::npos);
     }
+}
+
+TEST_CASE("ggx stress --sampler: a user sampler's device map beside the methods'; NaN where it divides by zero only")
+{
+    const fs::path prefix = scratch() / "stress";
+    const ggxtest::Run run = ggx("stress --methods caps --sampler " + sampler_file("divides_by_zero.h") +
+                                 " --sampler " + sampler_file("caps_copy.h") + " --no-png --out " + prefix.string());
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    const std::string csv = ggxtest::read_all(prefix.string() + ".csv");
+    std::map<std::string, std::vector<std::string>> rows;  // by method and side: the rows after the precision
+    std::map<std::string, std::uint64_t> nan_inf;
+    std::istringstream lines(csv);
+    std::string line;
+    std::getline(lines, line);
+    while (std::getline(lines, line)) {
+        const std::string key = ggxtest::csv_cell(csv, line, "method") + " " + ggxtest::csv_cell(csv, line, "side");
+        rows[key].push_back(line.substr(line.find(',', line.find(',') + 1)));
+        nan_inf[key] += std::stoull(ggxtest::csv_cell(csv, line, "nan_inf"));
+    }
+    CHECK(rows.size() == 4);  // caps device and host, each user sampler's device
+    CHECK(rows.count("caps_copy host") == 0);
+    CHECK(rows["caps_copy device"] == rows["caps device"]);
+    CHECK(nan_inf["caps device"] == 0);
+    CHECK(nan_inf["caps_copy device"] == 0);
+    CHECK(nan_inf["divides_by_zero device"] > 0);
+    const ggxtest::Run glass = ggx("stress --sampler " + sampler_file("caps_copy.h") + " --eta 1.5 --out " +
+                                   prefix.string());
+    CHECK(glass.status == 2);
+    CHECK(glass.err.find("--eta") != std::string::npos);
 }

@@ -20,11 +20,13 @@ ggxref::Vec3 as_double(const ggxcl::Vec3& v)
     return {v.x, v.y, v.z};
 }
 
-ggxcl::SampleParams params_of(ggxcl::Method method, ggxcl::Precision precision, double alpha, double cos_theta,
-                              ggxcl::Sequence sequence = ggxcl::Sequence::philox)
+// The sampler of `who` (its method and user sampler) at one cell.
+ggxcl::SampleParams params_of(const ggxcl::SampleParams& who, ggxcl::Precision precision, double alpha,
+                              double cos_theta, ggxcl::Sequence sequence = ggxcl::Sequence::philox)
 {
     ggxcl::SampleParams p;
-    p.method = method;
+    p.method = who.method;
+    p.user_sampler = who.user_sampler;
     p.precision = precision;
     p.sequence = sequence;
     p.alpha_x = p.alpha_y = float(alpha);
@@ -87,19 +89,26 @@ double relative_error(double value, double reference)
 
 std::vector<ggxcl::SampleParams> accuracy_configs(ggxcl::Method method, ggxcl::Precision precision)
 {
+    ggxcl::SampleParams who;
+    who.method = method;
+    return accuracy_configs(who, precision);
+}
+
+std::vector<ggxcl::SampleParams> accuracy_configs(const ggxcl::SampleParams& who, ggxcl::Precision precision)
+{
     std::vector<ggxcl::SampleParams> configs;
     for (double alpha : {0.05, 0.3, 1.0})
         for (double theta : {0.0, 45.0, 80.0})
-            configs.push_back(params_of(method, precision, alpha, std::cos(theta * 3.14159265358979323846 / 180)));
+            configs.push_back(params_of(who, precision, alpha, std::cos(theta * 3.14159265358979323846 / 180)));
     return configs;
 }
 
-NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
-                               ggxcl::Sequence sequence)
+NumericalError numerical_error(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
+                               ggxcl::Precision precision, ggxcl::Sequence sequence)
 {
     std::vector<double> angles, pdfs;
     NumericalError error;
-    for (ggxcl::SampleParams p : accuracy_configs(method, precision)) {
+    for (ggxcl::SampleParams p : accuracy_configs(who, precision)) {
         p.sequence = sequence;
         ggxcl::SampleSet d = sampler.generate(p, {accuracy_seed, 0, accuracy_samples},
                                               {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_m,
@@ -111,14 +120,14 @@ NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, gg
     return error;
 }
 
-SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
-                                    int size, std::uint64_t samples_per_cell)
+SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who,
+                                    ggxcl::Precision precision, int size, std::uint64_t samples_per_cell)
 {
     SceneVariance scene;
     std::uint64_t seed = 1000;
     for (int a = 0; a < size; ++a)
         for (int v = 0; v < size; ++v) {
-            ggxcl::SampleParams p = params_of(method, precision, (a + 0.5) / size, (v + 0.5) / size);
+            ggxcl::SampleParams p = params_of(who, precision, (a + 0.5) / size, (v + 0.5) / size);
             ggxcl::FurnaceSums sums = sampler.furnace(p, {++seed, 0, samples_per_cell});
             scene.variance += sums.variance();
             scene.mean_albedo += sums.mean();
@@ -134,11 +143,11 @@ std::vector<double> albedo_table(int size)
     for (int a = 0; a < size; ++a)
         for (int v = 0; v < size; ++v)
             exact.push_back(ggxref::albedo(ggxbridge::reference_params(
-                params_of(ggxcl::Method::caps, ggxcl::Precision::precise, (a + 0.5) / size, (v + 0.5) / size))));
+                params_of(ggxcl::SampleParams(), ggxcl::Precision::precise, (a + 0.5) / size, (v + 0.5) / size))));
     return exact;
 }
 
-double albedo_table_rmse(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+double albedo_table_rmse(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
                          ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
                          const std::vector<double>& exact)
 {
@@ -146,7 +155,7 @@ double albedo_table_rmse(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::P
     std::uint64_t seed = 5000;
     for (int a = 0; a < size; ++a)
         for (int v = 0; v < size; ++v) {
-            ggxcl::SampleParams p = params_of(method, precision, (a + 0.5) / size, (v + 0.5) / size, sequence);
+            ggxcl::SampleParams p = params_of(who, precision, (a + 0.5) / size, (v + 0.5) / size, sequence);
             for (int s = 0; s < streams; ++s) {
                 const double e = sampler.furnace(p, {++seed, 0, samples_per_cell}).mean() - exact[a * size + v];
                 squared += e * e;

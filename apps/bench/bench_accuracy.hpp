@@ -30,13 +30,16 @@ struct NumericalError {
     std::uint64_t non_finite = 0;
 };
 
-NumericalError numerical_error(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
-                               ggxcl::Sequence sequence = ggxcl::Sequence::philox);
+// `who`'s sampler (its method and user sampler) against the reference of `method` on the same
+// uniforms: for a built-in method, who.method itself; for a user sampler, the map it reproduces.
+NumericalError numerical_error(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
+                               ggxcl::Precision precision, ggxcl::Sequence sequence = ggxcl::Sequence::philox);
 
 // What the device and the native baseline are both measured on: the 9
 // configurations (normalized parameters), samples 0 .. 2^13 - 1 of this seed.
 inline constexpr std::uint64_t accuracy_seed = 777, accuracy_samples = 1u << 13;
 std::vector<ggxcl::SampleParams> accuracy_configs(ggxcl::Method method, ggxcl::Precision precision);
+std::vector<ggxcl::SampleParams> accuracy_configs(const ggxcl::SampleParams& who, ggxcl::Precision precision);
 
 // Angle between two directions (atan2 form, accurate near 0) and relative error.
 double angle_between(const ggxref::Vec3& a, const ggxref::Vec3& b);
@@ -50,8 +53,9 @@ struct SceneVariance {
     double mean_albedo = 0;  // mean over cells of the albedo estimate
 };
 
-SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
-                                    int size, std::uint64_t samples_per_cell);
+// Of `who`'s sampler (its method and user sampler), as below.
+SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who,
+                                    ggxcl::Precision precision, int size, std::uint64_t samples_per_cell);
 
 // The exact albedo of every cell of the size x size table (reference
 // quadrature), cell a * size + v.
@@ -60,7 +64,7 @@ std::vector<double> albedo_table(int size);
 // The table's RMSE against `exact` from `samples_per_cell` samples per cell
 // of `sequence`, over `streams` independent streams (seeds; for Sobol points
 // independent scrambles) of each cell: measured, for any sequence.
-double albedo_table_rmse(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+double albedo_table_rmse(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
                          ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
                          const std::vector<double>& exact);
 

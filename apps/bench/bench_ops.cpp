@@ -15,6 +15,7 @@ namespace ggxapp {
 bool counts_ops(const BenchTask& task)
 {
     return (task.job == BenchJob::write || task.job == BenchJob::furnace) && task.guards &&
+           task.params.method != ggxcl::Method::user &&  // the limits table holds the built-in methods
            task.params.sequence == ggxcl::Sequence::philox && task.params.eta == 0.0f;
 }
 

@@ -36,6 +36,26 @@ BenchJob job_named(const std::string& name)
     throw UsageError("--jobs", name, "write, furnace, world or per-sample");
 }
 
+// --sampler, --sampler-name and --reproduces (the k-th for the k-th sampler; none: no map).
+void plan_user_samplers(const BenchCommand& cmd, BenchPlan& plan)
+{
+    if (cmd.reproduces.size() > cmd.user.files.size())
+        throw UsageError("--reproduces", cmd.reproduces.back(), "at most one per --sampler");
+    for (const auto& loaded : cmd.user.load()) {
+        BenchUserSampler user{loaded};
+        const std::size_t k = plan.users.size();
+        if (k < cmd.reproduces.size() && cmd.reproduces[k] != "none") {
+            try {
+                user.method = ggxcl::parse_method(cmd.reproduces[k]);
+            } catch (const ggxcl::InvalidArgument&) {
+                throw UsageError("--reproduces", cmd.reproduces[k], "none or one of " + ggxcl::method_list());
+            }
+            user.reproduces = true;
+        }
+        plan.users.push_back(user);
+    }
+}
+
 BenchPlan plan_bench(const BenchCommand& cmd)
 {
     BenchPlan plan{parse_name_list("--methods", cmd.methods, method_names()),
@@ -59,6 +79,7 @@ BenchPlan plan_bench(const BenchCommand& cmd)
         throw UsageError("--transport", cmd.transport, "one of radiance, importance");
     }
     plan.settings.transport = std::string(ggxcl::transport_name(plan.transport));
+    plan_user_samplers(cmd, plan);
     return plan;
 }
 

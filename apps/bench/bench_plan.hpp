@@ -11,6 +11,7 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "bench_report.hpp"
+#include "sample_options.hpp"
 
 namespace ggxapp {
 
@@ -23,6 +24,16 @@ struct BenchCommand {
     std::string eta = "0", transport = "radiance";  // a rough dielectric's rows beside the conductor's (0: none)
     bool no_native = false, no_accuracy = false, no_startup = false;
     std::string csv, charts, markdown;
+    UserSamplerOptions user;              // --sampler FILE.h (repeatable), --sampler-name
+    std::vector<std::string> reproduces;  // --reproduces METHOD|none: the k-th sampler's map, for its error
+};
+
+// A user sampler's rows: its file, and the built-in method whose map on the same uniforms it
+// reproduces (its numerical error is measured against that method's reference), if any.
+struct BenchUserSampler {
+    std::shared_ptr<const ggxcl::UserSampler> sampler;
+    bool reproduces = false;
+    ggxcl::Method method = ggxcl::Method::caps;
 };
 
 struct BenchPlan {
@@ -32,6 +43,7 @@ struct BenchPlan {
     BenchReport settings;      // count, native_count, repeats, threads, scene_size,
                                // samples_per_cell, budget_ms, alpha, theta, eta, transport
     ggxcl::Transport transport = ggxcl::Transport::radiance;  // the dielectric rows' (settings.eta)
+    std::vector<BenchUserSampler> users;  // conductor rows beside the methods' (no world job, no native row)
 };
 
 // Throws UsageError naming the first bad option.

@@ -15,16 +15,17 @@ namespace ggxapp {
 
 namespace {
 
-// The rows' method names in the library's order (ggxcl::all_methods).
-const std::vector<std::string>& method_order()
+// The rows' method names: the library's methods in their order (ggxcl::all_methods), then the
+// user samplers' in the order of their rows.
+std::vector<std::string> method_order(const BenchReport& r)
 {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> out;
-        for (ggxcl::Method m : ggxcl::all_methods)
-            out.emplace_back(ggxcl::method_name(m));
-        return out;
-    }();
-    return names;
+    std::vector<std::string> out;
+    for (ggxcl::Method m : ggxcl::all_methods)
+        out.emplace_back(ggxcl::method_name(m));
+    for (const BenchRow& row : r.rows)
+        if (row.method != "all" && std::find(out.begin(), out.end(), row.method) == out.end())
+            out.push_back(row.method);
+    return out;
 }
 const char* const device_modes[] = {"precise", "relaxed"};
 
@@ -93,7 +94,7 @@ void rate_targets(const BenchReport& r, std::vector<Target>& out)
     if (caps) {
         double worst = 0;
         std::string who;
-        for (const std::string& m : method_order()) {
+        for (const std::string& m : method_order(r)) {
             const BenchRow* row = default_row(r, m, "write");
             if (row && ratio(row, caps) > worst)
                 worst = ratio(row, caps), who = m;
@@ -106,7 +107,7 @@ void mode_targets(const BenchReport& r, std::vector<Target>& out)
 {
     double worst = 0;
     std::string who;
-    for (const std::string& m : method_order())
+    for (const std::string& m : method_order(r))
         for (const char* job : {"write", "furnace"}) {
             const BenchRow* precise = default_row(r, m, job);
             const BenchRow* relaxed = find_row(r, m, "relaxed", job);
@@ -118,7 +119,7 @@ void mode_targets(const BenchReport& r, std::vector<Target>& out)
                        "largest " + who + ": " + fixed(worst, 2) + "x", worst <= 1.15});
     double worst_guard = -1e300;
     std::string guard_who;
-    for (const std::string& m : method_order()) {
+    for (const std::string& m : method_order(r)) {
         const BenchRow* on = default_row(r, m, "write");
         const BenchRow* off = find_row(r, m, "precise-unguarded", "write");
         if (on && off && ratio(on, off) - 1.0 > worst_guard)
@@ -140,7 +141,7 @@ void job_targets(const BenchReport& r, std::vector<Target>& out)
                        ratio(caps, store) <= 2.5});
     double worst = 0;
     std::string who;
-    for (const std::string& m : method_order()) {
+    for (const std::string& m : method_order(r)) {
         const BenchRow* uniform = default_row(r, m, "write");
         const BenchRow* per_sample = default_row(r, m, "per-sample");
         if (uniform && per_sample && ratio(per_sample, uniform) > worst)
@@ -155,7 +156,7 @@ void baseline_targets(const BenchReport& r, std::vector<Target>& out)
 {
     double lowest = 1e300;
     std::string who;
-    for (const std::string& m : method_order()) {
+    for (const std::string& m : method_order(r)) {
         const BenchRow* device = default_row(r, m, "write");
         const BenchRow* native = find_row(r, m, "native", "write");
         if (device && native && ratio(native, device) < lowest)
@@ -227,7 +228,7 @@ void write_speed_table(std::ostream& md, const BenchReport& r)
 {
     md << "| method | precision | write m + pdf_m: ns | G samples/s | fused furnace: ns | world space o: ns | "
           "per-sample view, alpha: ns |\n|---|---|---|---|---|---|---|\n";
-    for (const std::string& m : method_order())
+    for (const std::string& m : method_order(r))
         for (const char* mode : {"precise", "precise-unguarded", "relaxed", "native"}) {
             const BenchRow* w = find_row(r, m, mode, "write");
             if (!w)
@@ -247,7 +248,7 @@ void write_speed_table(std::ostream& md, const BenchReport& r)
 void write_accuracy_tables(std::ostream& md, const BenchReport& r)
 {
     md << "| method | precision | angle p99 (rad) | angle max | pdf rel. p99 | pdf rel. max |\n|---|---|---|---|---|---|\n";
-    for (const std::string& m : method_order())
+    for (const std::string& m : method_order(r))
         for (const char* mode : {"precise", "relaxed", "native"}) {
             const BenchRow* w = find_row(r, m, mode, "write");
             if (w && w->has_error)
@@ -260,7 +261,7 @@ void write_variance_table(std::ostream& md, const BenchReport& r)
 {
     md << "| method | precision | variance per sample | mean albedo | fused ns | efficiency 1/(var s) | RMSE in "
        << fixed(r.budget_ms, 1) << " ms |\n|---|---|---|---|---|---|---|\n";
-    for (const std::string& m : method_order())
+    for (const std::string& m : method_order(r))
         for (const char* mode : device_modes) {
             const BenchRow* f = find_row(r, m, mode, "furnace");
             if (f && f->variance > 0)
@@ -277,7 +278,7 @@ void write_sequence_table(std::ostream& md, const BenchReport& r)
 {
     md << "| method | sequence | write ns | fused ns | angle p99 (rad) | samples per cell | RMSE in "
        << fixed(r.budget_ms, 1) << " ms, measured |\n|---|---|---|---|---|---|---|\n";
-    for (const std::string& m : method_order())
+    for (const std::string& m : method_order(r))
         for (const char* sequence : {"philox", "sobol"}) {
             const BenchRow* w = find_row(r, m, "precise", "write", sequence);
             const BenchRow* f = find_row(r, m, "precise", "furnace", sequence);
@@ -317,7 +318,7 @@ void write_dielectric_speed(std::ostream& md, const BenchReport& r)
 {
     md << "| method | precision | job | conductor: ns | dielectric: ns | dielectric: M samples/s | dielectric / "
           "conductor |\n|---|---|---|---|---|---|---|\n";
-    for (const std::string& m : method_order())
+    for (const std::string& m : method_order(r))
         for (const char* mode : device_modes)
             for (const char* job : {"write-o", "furnace"}) {
                 const BenchRow* conductor = find_row(r, m, mode, job);
@@ -347,7 +348,7 @@ void write_dielectric_accuracy(std::ostream& md, const BenchReport& r)
        << first->samples << " samples in " << dielectric_streams
        << " independent streams; the error in standard errors of the mean, from the streams' spread.\n\n"
        << "| method | precision | R | error (SE) | T | error (SE) |\n|---|---|---|---|---|---|\n";
-    for (const std::string& m : method_order())
+    for (const std::string& m : method_order(r))
         for (const char* mode : device_modes)
             if (const BenchRow* f = find_row(r, m, mode, "furnace", "philox", true); f && f->dielectric.measured)
                 md << "| " << m << " | " << mode << " | " << fixed(f->dielectric.reflectance, 5) << " | "
@@ -410,7 +411,7 @@ std::string bench_csv(const BenchReport& r)
     std::ostringstream csv;
     csv << std::setprecision(6)
         << "method,precision,job,ns_median,ns_min,ns_max,gsamples_per_s,angle_p99,angle_max,pdf_rel_p99,pdf_rel_max,"
-           "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured"
+           "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured,pdf_disagreement"
         << limit_header << dielectric_csv_header << "\n";
     for (const BenchRow& row : r.rows) {
         csv << row.method << "," << row.precision << "," << row.job << "," << row.timing.median << ","
@@ -427,13 +428,33 @@ std::string bench_csv(const BenchReport& r)
         csv << "," << row.sequence << ",";
         if (row.rmse_measured > 0)
             csv << row.rmse_measured;
+        csv << ",";
+        if (row.pdf_disagreement >= 0)
+            csv << row.pdf_disagreement;
         csv << limit_csv_cells(row, r) << dielectric_csv_cells(row) << "\n";
     }
     if (r.has_vectorized)
         csv << "caps,native-vectorized,furnace," << r.vectorized.median << "," << r.vectorized.low << ","
-            << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,"
+            << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,,"
             << std::string(limit_columns, ',') << dielectric_csv_cells(BenchRow{}) << "\n";
     return csv.str();
+}
+
+// The user samplers' pdf self-consistency (precise philox write rows), when there are any.
+void write_user_pdf_section(std::ostringstream& md, const BenchReport& r)
+{
+    std::vector<const BenchRow*> rows;
+    for (const BenchRow& row : r.rows)
+        if (row.pdf_disagreement >= 0)
+            rows.push_back(&row);
+    if (rows.empty())
+        return;
+    md << "\n## Your samplers: pdf self-consistency\n\nOver the numerical error's configurations, the fraction "
+          "of samples with a density whose pdf_o differs by more than 1e-3 (relative) from the sampler's own pdf "
+          "recomputed from (i, o): 0 for a sampler whose pdf function matches what it samples.\n\n"
+          "| sampler | precision | pdf_o off its pdf(i, o) |\n|---|---|---|\n";
+    for (const BenchRow* row : rows)
+        md << "| " << row->method << " | " << row->precision << " | " << sci(row->pdf_disagreement) << " |\n";
 }
 
 std::string bench_markdown(const BenchReport& r, const std::string& speed_error_png, const std::string& speed_rmse_png)
@@ -483,6 +504,7 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
           "holds for independent uniforms only. The RMSE chart plots Sobol rows with hollow markers at their "
           "measured RMSE.\n\n";
     write_sequence_table(md, r);
+    write_user_pdf_section(md, r);
     if (r.startup.measured)
         md << "\n## Start-up\n\nProcess start to first result (`ggx sample -n 1`): " << fixed(r.startup.cold_ms, 0)
            << " ms with an empty kernel cache, " << fixed(r.startup.warm_ms.median, 0) << " ms warm (median; "

@@ -26,6 +26,8 @@ struct BenchRow {
     double variance = 0;          // albedo estimator variance per sample (0: not measured)
     double mean_albedo = 0;       // mean over the table's cells of the albedo estimate
     double rmse_measured = 0;     // precise furnace rows: the table's RMSE at the budget, measured (0: not)
+    double pdf_disagreement = -1; // a user sampler's write rows: the fraction of pdf_o whose pdf from (i, o)
+                                  // differs by more than 1e-3 (-1: not measured)
     bool has_ops = false;         // write and furnace rows: operations per sample of the kernel's IR
     OpCounts ops;
     float eta = 0;                // a rough dielectric's relative index (SampleParams::eta); 0: a conductor

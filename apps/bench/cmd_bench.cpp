@@ -15,6 +15,8 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "bench_accuracy.hpp"
+#include "user_checks.hpp"
 #include "bench_native.hpp"
 #include "bench_ops.hpp"
 #include "bench_peak.hpp"
@@ -88,6 +90,28 @@ void add_conductor_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
             }
 }
 
+// A user sampler's tasks, after the methods': every precision x job but world (a user sampler
+// works in tangent space), the other sequences side by side.
+void add_user_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
+{
+    for (const BenchUserSampler& user : plan.users)
+        for (const std::string& mode : plan.precisions)
+            for (const std::string& job_text : plan.jobs) {
+                if (job_text == "world")
+                    continue;
+                ggxcl::SampleParams p = plan.base;
+                p.method = ggxcl::Method::user;
+                p.user_sampler = user.sampler;
+                p.precision = ggxcl::parse_precision(mode);
+                tasks.push_back({job_named(job_text), p});
+                if (mode == "precise" && (job_text == "write" || job_text == "furnace"))
+                    for (const std::string& sequence : plan.sequences) {
+                        p.sequence = ggxcl::parse_sequence(sequence);
+                        tasks.push_back({job_named(job_text), p});
+                    }
+            }
+}
+
 bool plans_job(const BenchPlan& plan, const char* job)
 {
     return std::find(plan.jobs.begin(), plan.jobs.end(), job) != plan.jobs.end();
@@ -122,10 +146,35 @@ std::vector<BenchTask> bench_tasks(const BenchPlan& plan)
 {
     std::vector<BenchTask> tasks;
     add_conductor_tasks(plan, tasks);
+    add_user_tasks(plan, tasks);
     add_dielectric_tasks(plan, tasks);
     if (plans_job(plan, "write"))  // the write job's ceiling, once: the same bytes stored, nothing computed
         tasks.push_back({BenchJob::store, plan.base});
     return tasks;
+}
+
+// Whether p's user sampler reproduces a built-in method's map (--reproduces), and which.
+bool reproduced_method(const std::vector<BenchUserSampler>& users, const ggxcl::SampleParams& p, ggxcl::Method& method)
+{
+    for (const BenchUserSampler& user : users)
+        if (user.sampler == p.user_sampler && user.reproduces) {
+            method = user.method;
+            return true;
+        }
+    return false;
+}
+
+// The fraction of samples with a density whose pdf recomputed from (i, o) differs from pdf_o by more
+// than 1e-3 (relative), over the accuracy configurations.
+double pdf_disagreement(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who)
+{
+    double disagree = 0.0, with_density = 0.0;
+    for (const ggxcl::SampleParams& p : accuracy_configs(who, who.precision))
+        for (const PdfAgreement& a : pdf_agreements(sampler, p, {accuracy_seed, 0, accuracy_samples}, nullptr)) {
+            disagree += double(a.disagree);
+            with_density += double(a.with_density);
+        }
+    return with_density > 0.0 ? disagree / with_density : 1.0;
 }
 
 // The reference's values the accuracy columns compare with, each computed once, when first needed.
@@ -136,8 +185,8 @@ struct ExactValues {
 
 // The accuracy columns of a guarded device row: a conductor's numerical error (write), albedo
 // variance and table RMSE (furnace); a dielectric furnace's reflectance and transmittance.
-void add_accuracy(ggxcl::Sampler& sampler, const BenchTask& task, const BenchReport& report, ExactValues& exact,
-                  BenchRow& row)
+void add_accuracy(ggxcl::Sampler& sampler, const BenchTask& task, const BenchReport& report,
+                  const std::vector<BenchUserSampler>& plan_users, ExactValues& exact, BenchRow& row)
 {
     const ggxcl::SampleParams& p = task.params;
     if (p.eta != 0.0f) {
@@ -148,12 +197,16 @@ void add_accuracy(ggxcl::Sampler& sampler, const BenchTask& task, const BenchRep
         }
         return;
     }
-    if (task.job == BenchJob::write) {
+    const bool user = p.method == ggxcl::Method::user;
+    ggxcl::Method reference = p.method;
+    if (task.job == BenchJob::write && user && p.sequence == ggxcl::Sequence::philox)
+        row.pdf_disagreement = pdf_disagreement(sampler, p);
+    if (task.job == BenchJob::write && (!user || reproduced_method(plan_users, p, reference))) {
         row.has_error = true;
-        row.error = numerical_error(sampler, p.method, p.precision, p.sequence);
+        row.error = numerical_error(sampler, p, reference, p.precision, p.sequence);
     }
     if (task.job == BenchJob::furnace && p.sequence == ggxcl::Sequence::philox) {
-        SceneVariance scene = albedo_scene_variance(sampler, p.method, p.precision, report.scene_size,
+        SceneVariance scene = albedo_scene_variance(sampler, p, p.precision, report.scene_size,
                                                     report.samples_per_cell);
         row.variance = scene.variance;
         row.mean_albedo = scene.mean_albedo;
@@ -161,7 +214,7 @@ void add_accuracy(ggxcl::Sampler& sampler, const BenchTask& task, const BenchRep
     if (task.job == BenchJob::furnace && p.precision == ggxcl::Precision::precise) {
         if (exact.albedo_table.empty())
             exact.albedo_table = albedo_table(report.scene_size);
-        row.rmse_measured = albedo_table_rmse(sampler, p.method, p.precision, p.sequence, report.scene_size,
+        row.rmse_measured = albedo_table_rmse(sampler, p, p.precision, p.sequence, report.scene_size,
                                               samples_at_budget(row, report), report.rmse_streams, exact.albedo_table);
     }
 }
@@ -172,7 +225,7 @@ BenchRow device_row(const BenchTask& task, Timing timing)
     if (task.job == BenchJob::store)
         return row_of("all", "store-only", "write", timing);
     const std::string precision(ggxcl::precision_name(p.precision));
-    BenchRow row = row_of(std::string(ggxcl::method_name(p.method)), task.guards ? precision : precision + "-unguarded",
+    BenchRow row = row_of(ggxcl::sampler_name(p), task.guards ? precision : precision + "-unguarded",
                           job_name(task.job), timing);
     row.sequence = std::string(ggxcl::sequence_name(p.sequence));
     row.eta = p.eta;
@@ -197,7 +250,7 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
         if (ops[t])
             row.has_ops = true, row.ops = *ops[t];
         if (!cmd.no_accuracy && tasks[t].guards && tasks[t].job != BenchJob::store)  // unguarded: speed only
-            add_accuracy(sampler, tasks[t], report, exact, row);
+            add_accuracy(sampler, tasks[t], report, plan.users, exact, row);
         report.rows.push_back(row);
     }
 }
@@ -306,6 +359,12 @@ std::vector<Batch> timed_batches(const BenchPlan& plan)
             p.transport = plan.transport;
             batches.push_back({p, {0, 0, plan.settings.count}});
         }
+    for (const BenchUserSampler& user : plan.users) {
+        ggxcl::SampleParams p = plan.base;
+        p.method = ggxcl::Method::user;
+        p.user_sampler = user.sampler;
+        batches.push_back({p, {0, 0, plan.settings.count}});
+    }
     return batches;
 }
 
@@ -337,6 +396,10 @@ Prepare add_bench_command(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--transport", s->transport, "the dielectric rows' transport: radiance or importance")
         ->capture_default_str();
+    s->user.add_to(*cmd);
+    cmd->add_option("--reproduces", s->reproduces, "the k-th --sampler reproduces this method's map on the same "
+                                                    "uniforms (or none): its numerical error against that "
+                                                    "method's reference (repeatable)");
     cmd->add_flag("--no-native", s->no_native, "skip the native C++ baseline");
     cmd->add_flag("--no-accuracy", s->no_accuracy, "skip the numerical and statistical accuracy columns");
     cmd->add_flag("--no-startup", s->no_startup, "skip the start-up timing");

@@ -57,6 +57,28 @@ std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& f
     }
 }
 
+std::string SamplerChoice::name() const
+{
+    return user ? user->name() : std::string(ggxcl::method_name(method));
+}
+
+void SamplerChoice::apply(ggxcl::SampleParams& params) const
+{
+    params.method = method;
+    params.user_sampler = user;
+}
+
+std::vector<SamplerChoice> sampler_choices(const std::vector<ggxcl::Method>& methods,
+                                           const std::vector<std::shared_ptr<const ggxcl::UserSampler>>& users)
+{
+    std::vector<SamplerChoice> choices;
+    for (ggxcl::Method method : methods)
+        choices.push_back({method, nullptr});
+    for (const auto& user : users)
+        choices.push_back({ggxcl::Method::user, user});
+    return choices;
+}
+
 void UserSamplerOptions::add_to(CLI::App& cmd)
 {
     cmd.add_option("--sampler", files, "a sampler of your own in FILE.h, beside the methods (repeatable; "

@@ -18,6 +18,19 @@ std::vector<std::string> method_names();
 // UsageError naming --sampler or --sampler-name.
 std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& file, const std::string& name);
 
+// A sampler the comparing commands run: a built-in method, or Method::user with its file.
+struct SamplerChoice {
+    ggxcl::Method method = ggxcl::Method::caps;
+    std::shared_ptr<const ggxcl::UserSampler> user;
+    std::string name() const;                       // the method's name, or the user sampler's
+    void apply(ggxcl::SampleParams& params) const;  // sets params.method and params.user_sampler
+    bool operator==(const SamplerChoice& other) const { return method == other.method && user == other.user; }
+};
+
+// The built-in methods of --methods, then the user samplers.
+std::vector<SamplerChoice> sampler_choices(const std::vector<ggxcl::Method>& methods,
+                                           const std::vector<std::shared_ptr<const ggxcl::UserSampler>>& users);
+
 // The repeatable --sampler FILE and --sampler-name NAME of the commands that compare samplers
 // (the k-th name names the k-th file), added to `cmd`.
 struct UserSamplerOptions {

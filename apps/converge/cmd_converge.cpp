@@ -64,7 +64,7 @@ void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan)
 std::vector<Batch> converge_batches(const ConvergePlan& plan)
 {
     std::vector<Batch> batches;
-    for (ggxcl::Method method : plan.methods)
+    for (const SamplerChoice& method : plan.methods)
         for (ggxcl::Sequence sequence : plan.sequences)
             for (const ConvergeConfig& config : plan.configs)
                 batches.push_back({converge_params(method, sequence, config, plan.precision),
@@ -80,6 +80,7 @@ Prepare add_converge_command(CLI::App& app)
     CLI::App* cmd = app.add_subcommand("converge", "Error against sample count of every method's estimates with "
                                                    "independent (philox) and Sobol uniforms");
     cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
+    s->user.add_to(*cmd);
     cmd->add_option("--sequences", s->sequences, "comma-separated sequences: philox, sobol")->capture_default_str();
     cmd->add_option("--integrands", s->integrands, "comma-separated: albedo (L = 1), lobe (max(0, o.l)^16 about the "
                                                    "mirror direction), disk (a 10-degree disk light)")->capture_default_str();

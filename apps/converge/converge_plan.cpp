@@ -79,11 +79,11 @@ ggxref::Light light_of(Integrand integrand, double theta_degrees)
     return light;
 }
 
-ggxcl::SampleParams converge_params(ggxcl::Method method, ggxcl::Sequence sequence, const ConvergeConfig& config,
+ggxcl::SampleParams converge_params(const SamplerChoice& method, ggxcl::Sequence sequence, const ConvergeConfig& config,
                                     ggxcl::Precision precision)
 {
     ggxcl::SampleParams p;
-    p.method = method;
+    method.apply(p);
     p.alpha_x = p.alpha_y = float(config.alpha);
     p.view = ggxcl::view_from_angles(config.theta, 0.0);
     p.precision = precision;
@@ -94,8 +94,10 @@ ggxcl::SampleParams converge_params(ggxcl::Method method, ggxcl::Sequence sequen
 ConvergePlan plan_convergence(const ConvergeCommand& cmd)
 {
     ConvergePlan plan;
+    std::vector<ggxcl::Method> methods;
     for (const std::string& name : parse_name_list("--methods", cmd.methods, names_of_methods()))
-        plan.methods.push_back(ggxcl::parse_method(name));
+        methods.push_back(ggxcl::parse_method(name));
+    plan.methods = sampler_choices(methods, cmd.user.load());
     for (const std::string& name : parse_name_list("--sequences", cmd.sequences, {"philox", "sobol"}))
         plan.sequences.push_back(ggxcl::parse_sequence(name));
     for (const std::string& name : parse_name_list("--integrands", cmd.integrands, {"albedo", "lobe", "disk"}))

@@ -13,6 +13,7 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "ggx_integrals.hpp"
+#include "sample_options.hpp"
 
 namespace ggxapp {
 
@@ -41,10 +42,11 @@ struct ConvergeCommand {
     std::string precision = "precise", device, speed_n = "2^22";
     bool no_speed = false;
     std::string csv, charts, markdown;
+    UserSamplerOptions user;  // --sampler FILE.h (repeatable), --sampler-name
 };
 
 struct ConvergePlan {
-    std::vector<ggxcl::Method> methods;
+    std::vector<SamplerChoice> methods;  // the built-in methods, then the user samplers
     std::vector<ggxcl::Sequence> sequences;
     std::vector<Integrand> integrands;
     std::vector<ConvergeConfig> configs;
@@ -59,7 +61,7 @@ struct ConvergePlan {
 ConvergePlan plan_convergence(const ConvergeCommand& cmd);
 
 // The library's parameters of one configuration (isotropic, view at phi = 0).
-ggxcl::SampleParams converge_params(ggxcl::Method method, ggxcl::Sequence sequence, const ConvergeConfig& config,
+ggxcl::SampleParams converge_params(const SamplerChoice& method, ggxcl::Sequence sequence, const ConvergeConfig& config,
                                     ggxcl::Precision precision);
 
 } // namespace ggxapp

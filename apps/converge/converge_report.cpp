@@ -18,7 +18,7 @@ std::string number(double value, const char* format = "%.6g")
 
 std::string curve_name(const ConvergeCurve& c)
 {
-    return std::string(ggxcl::method_name(c.method)) + " | " + std::string(ggxcl::sequence_name(c.sequence));
+    return std::string(c.method.name()) + " | " + std::string(ggxcl::sequence_name(c.sequence));
 }
 
 double median(std::vector<double> v)
@@ -28,7 +28,7 @@ double median(std::vector<double> v)
 }
 
 // The curves of one method and sequence for one integrand, in configuration order.
-std::vector<const ConvergeCurve*> curves_of(const std::vector<ConvergeCurve>& curves, ggxcl::Method method,
+std::vector<const ConvergeCurve*> curves_of(const std::vector<ConvergeCurve>& curves, const SamplerChoice& method,
                                             ggxcl::Sequence sequence, Integrand integrand)
 {
     std::vector<const ConvergeCurve*> found;
@@ -51,7 +51,7 @@ void table(std::ostringstream& md, const ConvergePlan& plan, const std::vector<C
     for (std::size_t k = 0; k < plan.configs.size(); ++k)
         md << "---|";
     md << "\n";
-    for (ggxcl::Method method : plan.methods)
+    for (const SamplerChoice& method : plan.methods)
         for (ggxcl::Sequence sequence : plan.sequences) {
             std::vector<const ConvergeCurve*> row = curves_of(curves, method, sequence, integrand);
             std::vector<double> slopes;
@@ -73,7 +73,7 @@ std::string converge_csv(const std::vector<ConvergeCurve>& curves, int randomiza
     csv << "method,sequence,integrand,alpha,theta_degrees,n,rmse,mean,reference,randomizations,slope\n";
     for (const ConvergeCurve& c : curves)
         for (std::size_t k = 0; k < c.counts.size(); ++k)
-            csv << ggxcl::method_name(c.method) << "," << ggxcl::sequence_name(c.sequence) << ","
+            csv << c.method.name() << "," << ggxcl::sequence_name(c.sequence) << ","
                 << integrand_name(c.integrand) << "," << number(c.config.alpha) << "," << number(c.config.theta) << ","
                 << c.counts[k] << "," << number(c.rmse[k], "%.9g") << "," << number(c.mean[k], "%.12g") << ","
                 << number(c.reference, "%.12g") << "," << randomizations << "," << number(c.slope, "%.4f") << "\n";
@@ -85,7 +85,7 @@ std::string speeds_csv(const std::vector<ConvergeSpeed>& speeds)
     std::ostringstream csv;
     csv << "method,sequence,ns_per_sample\n";
     for (const ConvergeSpeed& s : speeds)
-        csv << ggxcl::method_name(s.method) << "," << ggxcl::sequence_name(s.sequence) << ","
+        csv << s.method.name() << "," << ggxcl::sequence_name(s.sequence) << ","
             << number(s.ns_per_sample, "%.4f") << "\n";
     return csv.str();
 }
@@ -112,7 +112,7 @@ std::string converge_markdown(const ConvergeReportInfo& info, const ConvergePlan
     if (!speeds.empty()) {
         md << "## Speed (the fused estimator, ns per sample, median)\n\n| method | sequence | ns |\n|---|---|---|\n";
         for (const ConvergeSpeed& s : speeds)
-            md << "| " << ggxcl::method_name(s.method) << " | " << ggxcl::sequence_name(s.sequence) << " | "
+            md << "| " << s.method.name() << " | " << ggxcl::sequence_name(s.sequence) << " | "
                << number(s.ns_per_sample, "%.3f") << " |\n";
         md << "\n";
         if (!info.charts_prefix.empty())

@@ -52,7 +52,7 @@ void add_chunk(const ggxcl::SampleView& s, std::uint64_t offset, const ConvergeP
 }
 
 // The curves of one method, sequence and configuration: R streams of 2^max samples.
-std::vector<ConvergeCurve> measure_cell(ggxcl::Sampler& sampler, const ConvergePlan& plan, ggxcl::Method method,
+std::vector<ConvergeCurve> measure_cell(ggxcl::Sampler& sampler, const ConvergePlan& plan, const SamplerChoice& method,
                                         ggxcl::Sequence sequence, const ConvergeConfig& config)
 {
     const ggxcl::SampleParams p = converge_params(method, sequence, config, plan.precision);
@@ -108,7 +108,7 @@ std::vector<ConvergeCurve> measure_convergence(ggxcl::Sampler& sampler, const Co
 {
     sampler.set_chunk_size(std::uint64_t(1) << plan.max_exponent);  // a stream in one chunk
     std::vector<ConvergeCurve> curves;
-    for (ggxcl::Method method : plan.methods)
+    for (const SamplerChoice& method : plan.methods)
         for (ggxcl::Sequence sequence : plan.sequences)
             for (const ConvergeConfig& config : plan.configs)
                 for (ConvergeCurve& c : measure_cell(sampler, plan, method, sequence, config))
@@ -122,7 +122,7 @@ std::vector<ConvergeSpeed> measure_speeds(ggxcl::Sampler& sampler, const Converg
         return {};
     std::vector<BenchTask> tasks;
     std::vector<ConvergeSpeed> speeds;
-    for (ggxcl::Method method : plan.methods)
+    for (const SamplerChoice& method : plan.methods)
         for (ggxcl::Sequence sequence : plan.sequences) {
             tasks.push_back({BenchJob::furnace, converge_params(method, sequence, plan.configs.front(), plan.precision)});
             speeds.push_back({method, sequence, 0.0});

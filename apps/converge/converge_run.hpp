@@ -16,7 +16,7 @@
 namespace ggxapp {
 
 struct ConvergeCurve {
-    ggxcl::Method method;
+    SamplerChoice method;
     ggxcl::Sequence sequence;
     Integrand integrand;
     ConvergeConfig config;
@@ -34,7 +34,7 @@ std::vector<ConvergeCurve> measure_convergence(ggxcl::Sampler& sampler, const Co
 double log_log_slope(const std::vector<std::uint64_t>& x, const std::vector<double>& y);
 
 struct ConvergeSpeed {
-    ggxcl::Method method;
+    SamplerChoice method;
     ggxcl::Sequence sequence;
     double ns_per_sample = 0;  // median of interleaved timed runs of the fused estimator
 };

@@ -24,28 +24,6 @@ double relative_difference(double a, double b)
     return scale > 0.0 ? std::fabs(a - b) / scale : 0.0;
 }
 
-HistogramCheck pdf_agreement(const std::string& name, const std::vector<float>& sampled,
-                             const std::vector<float>& recomputed)
-{
-    std::size_t with_density = 0, disagree = 0;
-    double worst = 0.0;
-    for (std::size_t j = 0; j < sampled.size(); ++j) {
-        if (!(sampled[j] > 0.0f))
-            continue;
-        ++with_density;
-        const double d = relative_difference(sampled[j], recomputed[j]);
-        worst = std::max(worst, std::isfinite(d) ? d : 1.0);
-        disagree += !(d <= 1e-3);
-    }
-    HistogramCheck check;
-    check.name = name;
-    check.passed = with_density > 0 && double(disagree) <= 1e-3 * double(with_density);
-    check.summary = name + ": " + std::to_string(disagree) + " of " + std::to_string(with_density) +
-                    " samples with a density differ by more than 1e-3 (relative), the largest by " +
-                    short_number(worst);
-    return check;
-}
-
 } // namespace
 
 HistogramCheck pdf_integral_check(const std::vector<double>& probabilities, double quadrature_error)
@@ -62,22 +40,52 @@ HistogramCheck pdf_integral_check(const std::vector<double>& probabilities, doub
     return check;
 }
 
-std::vector<HistogramCheck> pdf_checks(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
-                                       const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
+PdfAgreement pdf_agreement(const std::vector<float>& sampled, const std::vector<float>& recomputed)
+{
+    PdfAgreement a;
+    for (std::size_t j = 0; j < sampled.size(); ++j) {
+        if (!(sampled[j] > 0.0f))
+            continue;
+        ++a.with_density;
+        const double d = relative_difference(sampled[j], recomputed[j]);
+        a.worst = std::max(a.worst, std::isfinite(d) ? d : 1.0);
+        a.disagree += !(d <= 1e-3);
+    }
+    return a;
+}
+
+std::vector<PdfAgreement> pdf_agreements(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+                                         const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
 {
     const ggxcl::SampleSet samples = sampler.generate(params, range, {ggxcl::Field::o, ggxcl::Field::pdf_o});
     std::vector<ggxcl::Vec3> directions(range.count);
     for (std::size_t j = 0; j < directions.size(); ++j)
         directions[j] = samples.o_at(j);
-    std::vector<HistogramCheck> checks = {
-        pdf_agreement("pdf from (i, o)", samples.pdf_o, sampler.pdf(params, directions))};
+    std::vector<PdfAgreement> out = {pdf_agreement(samples.pdf_o, sampler.pdf(params, directions))};
     if (claimed) {
         ggxcl::SampleParams theirs = params;
         theirs.method = *claimed;
         theirs.user_sampler = nullptr;
-        const char* family = *claimed == ggxcl::Method::ndf ? "ndf" : "vndf";
-        checks.push_back(pdf_agreement(std::string("pdf of the claimed ") + family, samples.pdf_o,
-                                       sampler.pdf(theirs, directions)));
+        out.push_back(pdf_agreement(samples.pdf_o, sampler.pdf(theirs, directions)));
+    }
+    return out;
+}
+
+std::vector<HistogramCheck> pdf_checks(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+                                       const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
+{
+    const std::vector<PdfAgreement> agreements = pdf_agreements(sampler, params, range, claimed);
+    std::vector<HistogramCheck> checks;
+    for (std::size_t k = 0; k < agreements.size(); ++k) {
+        const PdfAgreement& a = agreements[k];
+        HistogramCheck check;
+        check.name = k == 0 ? "pdf from (i, o)"
+                            : std::string("pdf of the claimed ") + (*claimed == ggxcl::Method::ndf ? "ndf" : "vndf");
+        check.passed = a.with_density > 0 && double(a.disagree) <= 1e-3 * double(a.with_density);
+        check.summary = check.name + ": " + std::to_string(a.disagree) + " of " + std::to_string(a.with_density) +
+                        " samples with a density differ by more than 1e-3 (relative), the largest by " +
+                        short_number(a.worst);
+        checks.push_back(check);
     }
     return checks;
 }

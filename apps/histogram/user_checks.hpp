@@ -28,6 +28,18 @@ struct HistogramCheck {
 // tell a pdf off by a constant factor).
 HistogramCheck pdf_integral_check(const std::vector<double>& probabilities, double quadrature_error);
 
+// How a sampler's pdf_o agrees with a pdf recomputed from (i, o): of the samples with a density
+// (pdf_o > 0), how many differ by more than 1e-3 (relative), and the largest difference.
+struct PdfAgreement {
+    std::size_t with_density = 0, disagree = 0;
+    double worst = 0.0;
+};
+
+// The samples of `range` against the pdf recomputed by params' sampler and, with `claimed`, by
+// that method's (in that order).
+std::vector<PdfAgreement> pdf_agreements(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+                                         const ggxcl::SampleRange& range, const ggxcl::Method* claimed);
+
 // pdf_o of `count` samples against the pdf recomputed from (i, o) by the sampler and, with
 // `claimed`, by that method: a sample disagrees where the relative difference exceeds 1e-3;
 // the check fails when more than 0.1 % of the samples with a density disagree.

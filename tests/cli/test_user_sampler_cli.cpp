@@ -166,3 +166,54 @@ TEST_CASE("ggx stress --sampler: a user sampler's device map beside the methods'
     CHECK(glass.status == 2);
     CHECK(glass.err.find("--eta") != std::string::npos);
 }
+
+TEST_CASE("ggx bench --sampler: a copy of caps gets caps' accuracy; the pdf self-consistency catches a pdf off by 2")
+{
+    const fs::path csv_path = scratch() / "bench.csv";
+    const ggxtest::Run run =
+        ggx("bench --methods caps --precisions precise --jobs write,furnace --sequences philox -n 2^14 --repeats 5 "
+            "--scene 3 --cell-samples 2^10 --no-native --no-startup --sampler " + sampler_file("caps_copy.h") +
+            " --reproduces caps --sampler " + sampler_file("pdf_doubled.h") + " --csv " + csv_path.string());
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    const std::string csv = ggxtest::read_all(csv_path);
+    std::map<std::string, std::string> cells;  // "method job column" -> cell, precise philox rows
+    for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(csv))
+        if (row.precision == "precise")
+            for (const char* column : {"angle_p99", "pdf_rel_max", "albedo_variance", "mean_albedo", "pdf_disagreement"})
+                cells[row.method + " " + row.job + " " + column] = ggxtest::csv_cell(csv, row.line, column);
+    for (const std::string column : {"angle_p99", "pdf_rel_max"}) {
+        CAPTURE(column);
+        CHECK_FALSE(cells["caps write " + column].empty());
+        CHECK(cells["caps_copy write " + column] == cells["caps write " + column]);
+        CHECK(cells["pdf_doubled write " + column].empty());  // reproduces no map: not measured
+    }
+    for (const std::string column : {"albedo_variance", "mean_albedo"}) {  // the RMSE's sample count is its speed's
+        CAPTURE(column);
+        CHECK(cells["caps_copy furnace " + column] == cells["caps furnace " + column]);
+    }
+    CHECK(cells["caps write pdf_disagreement"].empty());
+    CHECK(std::stod(cells["caps_copy write pdf_disagreement"]) == 0.0);
+    CHECK(std::stod(cells["pdf_doubled write pdf_disagreement"]) == 1.0);
+    const ggxtest::Run bad = ggx("bench --sampler " + sampler_file("caps_copy.h") + " --reproduces walter");
+    CHECK(bad.status == 2);
+    CHECK(bad.err.find("--reproduces") != std::string::npos);
+}
+
+TEST_CASE("ggx converge --sampler: a copy of caps converges as caps, with philox and sobol")
+{
+    const fs::path csv_path = scratch() / "converge.csv";
+    const ggxtest::Run run = ggx("converge --methods caps --sampler " + sampler_file("caps_copy.h") +
+                                 " --integrands albedo,disk --alphas 0.3 --thetas 45 --max-n 2^10 --randomizations 8 "
+                                 "--no-speed --csv " + csv_path.string());
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    std::map<std::string, std::vector<std::string>> curves;  // by method: the rows after the method
+    std::istringstream lines(ggxtest::read_all(csv_path));
+    std::string line;
+    std::getline(lines, line);
+    while (std::getline(lines, line) && !line.empty() && line.find("ns_per_sample") == std::string::npos)
+        curves[line.substr(0, line.find(','))].push_back(line.substr(line.find(',')));
+    REQUIRE(curves["caps"].size() > 10);
+    CHECK(curves["caps_copy"] == curves["caps"]);
+}

@@ -22,7 +22,9 @@
 // tilted caps-iso normal, an exact multiple of 256, Sobol points across the
 // 2^32 block boundary and the caller's uniforms from a .npy), `ggx histogram
 // --no-png` (o and m, 20000 samples: two work-groups of 256 x 64 samples),
-// `ggx stress` (every method, precise, the whole grid), and through
+// a user sampler (a copy of caps: `ggx sample --sampler`, caps' bits, and
+// `ggx histogram --sampler`), `ggx stress` (every method, precise, the
+// whole grid), and through
 // oclgrind_driver the kernels the command line does not reach: per-sample
 // views, alphas and normals, the pdf kernel, the fused furnace (guarded and
 // unguarded), world space, a user kernel built with build_user_program, and
@@ -384,6 +386,35 @@ TEST_CASE("ggx histogram --no-png under Oclgrind: o and m, two work-groups")
         CHECK(doc.value("device", "") == "Oclgrind Simulator");
         CHECK(doc.value("count", 0) == 20000);
     }
+}
+}
+
+TEST_SUITE("user sampler")
+{
+TEST_CASE("ggx sample and histogram --sampler under Oclgrind: a copy of caps, clean, with caps' bits")
+{
+    const std::string file = std::string(GGX_USER_SAMPLERS_DIR) + "/caps_copy.h";
+    std::string npy[2];
+    int k = 0;
+    for (const std::vector<std::string> chosen : {std::vector<std::string>{"--sampler", file},
+                                                 std::vector<std::string>{"--method", "caps"}}) {
+        const fs::path out = scratch() / ("user-" + std::to_string(k) + ".npy");
+        std::vector<std::string> args = {"sample", "-n", "1000", "--seed", "5", "--alpha", "0.2,0.4",
+                                         "--fields", "m,o,pdf_m,pdf_o,weight", "--out", out.string()};
+        args.insert(args.end(), chosen.begin(), chosen.end());
+        Run run = run_under_oclgrind(GGX_BINARY, args);
+        check_clean(run);
+        if (run.status == 0)
+            npy[k] = read_all(out);
+        ++k;
+    }
+    CHECK_FALSE(npy[0].empty());
+    CHECK(npy[0] == npy[1]);
+    const fs::path prefix = scratch() / "user-histogram";
+    Run run = run_under_oclgrind(GGX_BINARY, {"histogram", "--sampler", file, "-n", "20000", "--bins-z", "16",
+                                              "--bins-phi", "32", "--no-png", "--out", prefix.string()});
+    check_clean(run);
+    CHECK(sum_f64_npy(prefix.string() + ".observed.npy") == 20000.0);
 }
 }
 

@@ -4,6 +4,7 @@
 // and one summary page, index.md, with each method's chi-square p-value and
 // throughput and the figures embedded; one line per method says where.
 // With --eta, a rough dielectric: every method but bounded, over the whole sphere.
+// --sampler FILE.h adds a user sampler (tested against its own pdf).
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -21,19 +22,21 @@ namespace {
 
 struct DemoCommand {
     SampleOptions options;
+    UserSamplerOptions user;  // --sampler FILE.h: added to the methods
     std::string count = "1e5", histogram_count = "1e6", out = "ggx-demo";
     bool no_png = false;
 };
 
 struct MethodResult {
-    ggxcl::Method method;
+    SamplerChoice method;
     HistogramResult histogram;
 };
 
-SampleJob cloud_job(const SampleOptions& options, ggxcl::Method method, std::uint64_t count, const std::string& out)
+SampleJob cloud_job(const SampleOptions& options, const SamplerChoice& method, std::uint64_t count,
+                    const std::string& out)
 {
     SampleJob job;
-    job.params = options.params_for(method);
+    job.params = options.params_for(method.method, method.user);
     job.theta_degrees = options.parsed_theta();
     job.phi_degrees = options.parsed_phi();
     job.range = {options.parsed_seed(), 0, count};
@@ -45,15 +48,18 @@ SampleJob cloud_job(const SampleOptions& options, ggxcl::Method method, std::uin
     return job;
 }
 
-// The methods the demo runs: all, or for a dielectric all but bounded (no exact dielectric sampler).
-std::vector<ggxcl::Method> demo_methods(const DemoCommand& demo)
+// The methods the demo runs: all, or for a dielectric all but bounded (no exact dielectric sampler),
+// then the user samplers (conductors only).
+std::vector<SamplerChoice> demo_methods(const DemoCommand& demo)
 {
     std::vector<ggxcl::Method> methods;
     const bool dielectric = demo.options.parsed_eta() != 0.0f;
     for (ggxcl::Method method : ggxcl::all_methods)
         if (!dielectric || method != ggxcl::Method::bounded)
             methods.push_back(method);
-    return methods;
+    if (dielectric && !demo.user.files.empty())
+        throw UsageError("--eta", demo.options.eta, "0 with --sampler: a user sampler runs on conductors only");
+    return sampler_choices(methods, demo.user.load());
 }
 
 // What the histograms bin: a conductor's reflections, or a dielectric's reflections and
@@ -102,7 +108,7 @@ std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult
     write_intro(md, demo, device);
     md << "| method | chi-square | dof | p-value | samples/s | files |\n|---|---|---|---|---|---|\n";
     for (const MethodResult& r : results) {
-        std::string name(ggxcl::method_name(r.method));
+        const std::string name = r.method.name();
         md << "| " << name << " | " << r.histogram.chi_square << " | " << r.histogram.dof << " | "
            << r.histogram.p_value << " | " << r.histogram.samples_per_second << " | " << name << ".npy, " << name
            << ".ply, " << name << ".hist.* |\n";
@@ -112,7 +118,7 @@ std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult
               "that refract, so some transmitted directions are never drawn).\n";
     for (const MethodResult& r : results)
         if (!r.histogram.png.empty())
-            md << "\n## " << ggxcl::method_name(r.method) << "\n\n![" << ggxcl::method_name(r.method)
+            md << "\n## " << r.method.name() << "\n\n![" << r.method.name()
                << " histogram](" << std::filesystem::path(r.histogram.png).filename().string() << ")\n";
     return md.str();
 }
@@ -126,8 +132,8 @@ DemoCounts check_demo(const DemoCommand& demo, std::vector<Batch>& batches)
 {
     DemoCounts counts{parse_count("-n", demo.count), parse_count("--histogram-n", demo.histogram_count)};
     std::vector<ggxcl::SampleParams> params;
-    for (ggxcl::Method method : demo_methods(demo))
-        params.push_back(demo.options.for_method(method).params_for(method));
+    for (const SamplerChoice& method : demo_methods(demo))
+        params.push_back(demo.options.for_method(method.method).params_for(method.method, method.user));
     std::uint64_t seed = demo.options.parsed_seed();
     for (const ggxcl::SampleParams& p : params) {
         batches.push_back({p, {seed, 0, counts.cloud}});
@@ -144,21 +150,21 @@ void run_demo(const DemoCommand& demo, DemoCounts counts)
     ggxcl::Sampler sampler(demo.options.device);
     std::cout << "device: " << sampler.device_name() << "\n";
     std::vector<MethodResult> results;
-    for (ggxcl::Method method : demo_methods(demo)) {
-        SampleOptions options = demo.options.for_method(method);
-        std::string base = demo.out + "/" + std::string(ggxcl::method_name(method));
+    for (const SamplerChoice& method : demo_methods(demo)) {
+        SampleOptions options = demo.options.for_method(method.method);
+        std::string base = demo.out + "/" + method.name();
         run_sample_job(sampler, cloud_job(options, method, count, base + ".npy"));
         run_sample_job(sampler, cloud_job(options, method, count, base + ".ply"));
         HistogramJob h;
-        h.params = options.params_for(method);
-        h.against = method;
+        h.params = options.params_for(method.method, method.user);
+        h.against = method.method;
         h.theta_degrees = options.parsed_theta();
         h.phi_degrees = options.parsed_phi();
         h.range = {options.parsed_seed(), 0, histogram_count};
         h.prefix = base + ".hist";
         h.png = !demo.no_png;
         results.push_back({method, run_histogram_job(sampler, h)});
-        std::cout << ggxcl::method_name(method) << ": samples in " << base << ".npy and " << base << ".ply, histogram "
+        std::cout << method.name() << ": samples in " << base << ".npy and " << base << ".ply, histogram "
                   << h.prefix << (h.png ? ".png" : ".json") << " (p = " << results.back().histogram.p_value << ")\n";
     }
     write_text_file(demo.out + "/index.md", summary_page(demo, results, sampler.device_name()));
@@ -177,6 +183,7 @@ Prepare add_demo_command(CLI::App& app)
         ->capture_default_str();
     cmd->add_flag("--no-png", state->no_png, "skip the figures (no Python needed)");
     cmd->add_option("--out", state->out, "output folder")->capture_default_str();
+    state->user.add_to(*cmd);
     return [cmd, state]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;

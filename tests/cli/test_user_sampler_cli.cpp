@@ -217,3 +217,18 @@ TEST_CASE("ggx converge --sampler: a copy of caps converges as caps, with philox
     REQUIRE(curves["caps"].size() > 10);
     CHECK(curves["caps_copy"] == curves["caps"]);
 }
+
+TEST_CASE("ggx demo --sampler: the user sampler's cloud, histogram and row beside the methods'")
+{
+    const fs::path out = scratch() / "demo";
+    const ggxtest::Run run = ggx("demo -n 300 --histogram-n 2e4 --no-png --sampler " + sampler_file("caps_copy.h") +
+                                 " --sampler-name mine --out " + out.string());
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    const std::string page = ggxtest::read_all(out / "index.md");
+    CHECK(page.find("| mine |") != std::string::npos);
+    CHECK(page.find("| caps |") != std::string::npos);
+    for (const char* file : {"mine.npy", "mine.ply", "mine.hist.json", "mine.hist.observed.npy"})
+        CHECK(fs::exists(out / file));
+    CHECK(ggx("demo --eta 1.5 --sampler " + sampler_file("caps_copy.h") + " --out " + out.string()).status == 2);
+}

@@ -10,7 +10,8 @@
 //  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check.
 // The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h) are OpenCL C alone.
 // ggx_user_sampler.h declares what a user sampler's file defines after it: it compiles
-// with the test samplers of tests/user_samplers (one of whole samples, one of m alone) after it.
+// with the test samplers of tests/user_samplers (one of whole samples, one of m alone) and the
+// worked example of examples/user_sampler after it.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -153,12 +154,14 @@ TEST_CASE("every public device header compiles alone as C++17 (GCC, Clang), CUDA
 TEST_CASE("a user sampler's file after ggx_user_sampler.h compiles as C++17, CUDA and OpenCL C 1.2")
 {
     const fs::path dir = ggxtest::scratch_dir("languages");
-    for (const std::string file : {"caps_copy.h", "heitz_normal_only.h"}) {
-        CAPTURE(file);
+    const std::string tests = std::string(GGX_USER_SAMPLERS_DIR) + "/";
+    for (const std::string path : {tests + "caps_copy.h", tests + "heitz_normal_only.h",
+                                   std::string(GGX_EXAMPLES_DIR) + "/user_sampler/caps_native_sincos.h"}) {
+        CAPTURE(path);
+        const std::string file = fs::path(path).filename().string();
         const std::string samples_m = file == "heitz_normal_only.h" ? "1" : "0";
         const std::string include = "#define GGX_USER_SAMPLER 1\n#define GGX_USER_SAMPLES_M " + samples_m +
-                                    "\n#include \"ggx_samplers.h\"\n#include \"" + GGX_USER_SAMPLERS_DIR + "/" +
-                                    file + "\"\n";
+                                    "\n#include \"ggx_samplers.h\"\n#include \"" + path + "\"\n";
         const std::string cpp = write_file(dir / (file + ".cpp"), include).string();
         const std::string cu = write_file(dir / (file + ".cu"), include).string();
         const std::string cl = write_file(dir / (file + ".cl"), include).string();

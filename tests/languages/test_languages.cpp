@@ -102,6 +102,18 @@ void check_compiles(const std::string& what, const std::string& command)
     CHECK(r.output.empty());  // no warning either
 }
 
+// `source` (the text of a file) compiles in each language: written as stem.cpp, .cu and .cl.
+void check_compiles_everywhere(const fs::path& stem, const std::string& source)
+{
+    const std::string cpp = write_file(stem.string() + ".cpp", source).string();
+    const std::string cu = write_file(stem.string() + ".cu", source).string();
+    const std::string cl = write_file(stem.string() + ".cl", source).string();
+    check_compiles("g++", gcc_cxx(cpp));
+    check_compiles("clang++", clang_cxx(cpp));
+    check_compiles("clang++ -x cuda", clang_cuda(cu));
+    check_compiles("clang -x cl", clang_opencl(cl));
+}
+
 std::vector<std::string> entries_of(const std::string& ptx)
 {
     std::vector<std::string> names;
@@ -141,13 +153,7 @@ TEST_CASE("every public device header compiles alone as C++17 (GCC, Clang), CUDA
         const std::string include = "#include \"" + header + "\"\n";
         if (header == "ggx_user_sampler.h")
             continue;  // below, with a sampler file after it
-        const std::string cpp = write_file(dir / (header + ".cpp"), include).string();
-        const std::string cu = write_file(dir / (header + ".cu"), include).string();
-        const std::string cl = write_file(dir / (header + ".cl"), include).string();
-        check_compiles("g++", gcc_cxx(cpp));
-        check_compiles("clang++", clang_cxx(cpp));
-        check_compiles("clang++ -x cuda", clang_cuda(cu));
-        check_compiles("clang -x cl", clang_opencl(cl));
+        check_compiles_everywhere(dir / header, include);
     }
 }
 
@@ -162,13 +168,7 @@ TEST_CASE("a user sampler's file after ggx_user_sampler.h compiles as C++17, CUD
         const std::string samples_m = file == "heitz_normal_only.h" ? "1" : "0";
         const std::string include = "#define GGX_USER_SAMPLER 1\n#define GGX_USER_SAMPLES_M " + samples_m +
                                     "\n#include \"ggx_samplers.h\"\n#include \"" + path + "\"\n";
-        const std::string cpp = write_file(dir / (file + ".cpp"), include).string();
-        const std::string cu = write_file(dir / (file + ".cu"), include).string();
-        const std::string cl = write_file(dir / (file + ".cl"), include).string();
-        check_compiles("g++", gcc_cxx(cpp));
-        check_compiles("clang++", clang_cxx(cpp));
-        check_compiles("clang++ -x cuda", clang_cuda(cu));
-        check_compiles("clang -x cl", clang_opencl(cl));
+        check_compiles_everywhere(dir / file, include);
     }
 }
 

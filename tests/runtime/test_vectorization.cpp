@@ -34,12 +34,15 @@ std::string remarks_of_run(const std::string& ggx_arguments, const fs::path& cac
     std::string command = environment + "GGXCL_PROGRAM_CACHE=off POCL_VECTORIZER_REMARKS=1 POCL_CACHE_DIR=" +
                           cache.string() + " " + program + " >" + log.string() + " 2>&1";
     int status = std::system(command.c_str());
-    REQUIRE(WIFEXITED(status));
-    REQUIRE(WEXITSTATUS(status) == 0);
     std::ifstream in(log);
     std::stringstream text;
     text << in.rdbuf();
-    return text.str();
+    const std::string output = text.str();
+    // A failed run says why: its last lines (the remarks come before).
+    INFO(command, "\n", output.substr(output.size() > 2000 ? output.size() - 2000 : 0));
+    REQUIRE(WIFEXITED(status));
+    REQUIRE(WEXITSTATUS(status) == 0);
+    return output;
 }
 
 // The sample kernel with every field written, its uniforms from `sequence`.

@@ -5,6 +5,8 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "reference_bridge.hpp"
+
 namespace ggxbridge {
 
 namespace {
@@ -71,6 +73,15 @@ bool claimed_method(ggxcl::Distribution distribution, ggxcl::Method& method)
         return false;
     method = distribution == ggxcl::Distribution::vndf ? ggxcl::Method::heitz : ggxcl::Method::ndf;
     return true;
+}
+
+std::vector<double> claimed_bin_probabilities(const ggxcl::SampleParams& params, int bins_z, int bins_phi)
+{
+    ggxcl::SampleParams theirs = ggxcl::normalized(params);
+    if (!claimed_method(params.user_sampler->distribution(), theirs.method))
+        return {};
+    theirs.user_sampler = nullptr;
+    return bin_probabilities(theirs.method, theirs, bins_z, bins_phi, ggxcl::Field::o);
 }
 
 } // namespace ggxbridge

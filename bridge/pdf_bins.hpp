@@ -22,4 +22,8 @@ std::vector<double> pdf_bin_probabilities(ggxcl::Sampler& sampler, const ggxcl::
 // for a density of its own.
 bool claimed_method(ggxcl::Distribution distribution, ggxcl::Method& method);
 
+// The bins' probabilities under the distribution params' user sampler claims (the reference's
+// quadrature, bin_probabilities of reference_bridge.hpp); empty for a density of its own.
+std::vector<double> claimed_bin_probabilities(const ggxcl::SampleParams& params, int bins_z, int bins_phi);
+
 } // namespace ggxbridge

@@ -83,16 +83,10 @@ std::vector<HistogramCheck> user_sampler_checks(ggxcl::Sampler& sampler, const H
 
 std::future<std::vector<double>> start_expectation(const HistogramJob& job)
 {
-    ggxcl::Method against = job.against;
-    ggxcl::SampleParams params = job.params;
-    if (params.method == ggxcl::Method::user) {
-        if (!ggxbridge::claimed_method(params.user_sampler->distribution(), against))
-            return std::async(std::launch::deferred, [] { return std::vector<double>(); });
-        params.method = against;
-        params.user_sampler = nullptr;
-    }
-    return std::async(std::launch::async, [job, against, params] {
-        return ggxbridge::bin_probabilities(against, params, job.bins_z, job.bins_phi, job.direction);
+    return std::async(std::launch::async, [job] {
+        if (job.params.method == ggxcl::Method::user)
+            return ggxbridge::claimed_bin_probabilities(job.params, job.bins_z, job.bins_phi);
+        return ggxbridge::bin_probabilities(job.against, job.params, job.bins_z, job.bins_phi, job.direction);
     });
 }
 

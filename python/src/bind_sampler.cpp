@@ -145,12 +145,8 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
         else
             probabilities =
                 ggxbridge::bin_probabilities(expected_of, ggxcl::normalized(r.params), bins_z, bins_phi, direction);
-        if (claims) {
-            ggxcl::SampleParams theirs = ggxcl::normalized(r.params);
-            theirs.method = claimed_method;
-            theirs.user_sampler = nullptr;
-            claimed = ggxbridge::bin_probabilities(claimed_method, theirs, bins_z, bins_phi, direction);
-        }
+        if (claims)
+            claimed = ggxbridge::claimed_bin_probabilities(r.params, bins_z, bins_phi);
     }
     const ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, r.params.eta != 0.0f);
     py::array_t<std::uint64_t> observed({bins_z, bins_phi});

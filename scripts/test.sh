@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGGXCL_BUILD_TESTS=ON -DGGXCL_BUILD_PYTHON=ON
 cmake --build build -j"$(nproc)"
 jobs="$(nproc)"
 

@@ -3,6 +3,8 @@
 // file with its `#include "..."` lines expanded (each header once), framed
 // by `#line` markers so that build logs name the original file and line (in
 // a script they are comments).  Programs then need no source tree.
+// Files of the report pages (.js, .css) go in verbatim: there `#` is no
+// comment.
 // Usage: embed_kernels OUT.cpp NAMESPACE DIR FILE...
 // Writes OUT.cpp, defining NAMESPACE::embedded_sources and
 // embedded_source_count, and OUT.hpp, declaring them with the struct
@@ -27,12 +29,26 @@ std::string read_file(const std::string& path)
     return text.str();
 }
 
+bool ends_with(const std::string& text, const std::string& tail)
+{
+    return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+bool is_verbatim(const std::string& name)
+{
+    return ends_with(name, ".js") || ends_with(name, ".css");
+}
+
 // Appends `name` to `out`, expanding quoted includes recursively, once each.
 void expand(const std::string& dir, const std::string& name, std::set<std::string>& seen,
             std::string& out)
 {
     if (!seen.insert(name).second)
         return;
+    if (is_verbatim(name)) {
+        out += read_file(dir + "/" + name);
+        return;
+    }
     static const std::regex include_line(R"re(^\s*#\s*include\s*"([^"]+)"\s*$)re");
     std::istringstream lines(read_file(dir + "/" + name));
     std::string line;

@@ -162,18 +162,4 @@ void write_limit_section(std::ostream& md, const BenchReport& r)
     write_ops_table(md, rows);
 }
 
-void limit_targets(const BenchReport& r, std::vector<ReportTarget>& out)
-{
-    double worst = 1e300;
-    std::string who;
-    for (const BenchRow* row : table_rows(r)) {
-        std::optional<RowLimit> limit = row_limit(*row, r);
-        if (limit && limit->compute && limit->percent < worst)
-            worst = limit->percent, who = row->method + " " + row->job;
-    }
-    if (worst < 1e300)
-        out.push_back({"every method within 2x of its limit (precise write and fused)",
-                       "slowest " + who + ": " + fixed(worst, 0) + "% of its limit", worst >= 50.0});
-}
-
 } // namespace ggxapp

@@ -1,8 +1,8 @@
 // bench_limits.hpp - the report's "How close to this device's limits": each
 // write and fused (furnace) row against its compute limit (its op counts
 // over the peaks measured in the same run) and its bandwidth limit (the
-// store-only row), as CSV columns, Markdown tables and the target "every
-// method within 2x of its limit".  Arithmetic in roofline.hpp.
+// store-only row), as CSV columns and Markdown tables (bench/check_targets.py
+// holds the project's target on them).  Arithmetic in roofline.hpp.
 #pragma once
 
 #include <optional>
@@ -34,8 +34,5 @@ std::string limit_csv_cells(const BenchRow& row, const BenchReport& report);
 // The section's Markdown: the peaks, the limits table of precise write and furnace rows, and the
 // op counts per sample.
 void write_limit_section(std::ostream& md, const BenchReport& report);
-
-// "every method within 2x of its limit (precise write and fused)", when compute limits are known.
-void limit_targets(const BenchReport& report, std::vector<ReportTarget>& out);
 
 } // namespace ggxapp

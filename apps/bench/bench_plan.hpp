@@ -23,7 +23,7 @@ struct BenchCommand {
     std::string scene = "16", cell_samples = "2^14", budget_ms = "1";
     std::string eta = "0", transport = "radiance";  // a rough dielectric's rows beside the conductor's (0: none)
     bool no_native = false, no_accuracy = false, no_startup = false;
-    std::string csv, charts, markdown;
+    std::string csv, charts, markdown, html;
     UserSamplerOptions user;              // --sampler FILE.h (repeatable), --sampler-name
     std::vector<std::string> reproduces;  // --reproduces METHOD|none: the k-th sampler's map, for its error
 };

@@ -1,8 +1,10 @@
-// bench_report.cpp - CSV and Markdown of `ggx bench`, with the target checks
-// and, with --eta, the rough dielectric's section.
+// bench_report.cpp - CSV and Markdown of `ggx bench`: the answer (which
+// sampler is fastest, most accurate, best at equal time) first, then every
+// table and, with --eta, the rough dielectric's section.
 #include "bench_report.hpp"
 
 #include "bench_limits.hpp"
+#include "report_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,9 +51,7 @@ std::string fixed(double value, int digits)
 
 std::string sci(double value)
 {
-    std::ostringstream out;
-    out << std::setprecision(2) << std::scientific << value;
-    return out.str();
+    return readable_number(value);
 }
 
 std::string ns_cell(const BenchRow* row)
@@ -66,7 +66,7 @@ double gsps(const BenchRow* row)
     return row ? 1.0 / row->timing.median : 0.0;
 }
 
-// The default mode's row of (method, job): the mode the speed targets are met in.
+// The default mode's row of (method, job): what a user runs.
 const BenchRow* default_row(const BenchReport& r, const std::string& method, const std::string& job)
 {
     return find_row(r, method, "precise", job);
@@ -77,152 +77,102 @@ double ratio(const BenchRow* slow, const BenchRow* fast)
     return slow->timing.median / fast->timing.median;
 }
 
-using Target = ReportTarget;
-
-// Speed against the device's own limits (bench_limits.hpp), and between methods.
-void rate_targets(const BenchReport& r, std::vector<Target>& out)
-{
-    limit_targets(r, out);
-    const BenchRow* caps = default_row(r, "caps", "write");
-    for (const char* job : {"write", "furnace"}) {
-        const BenchRow* c = default_row(r, "caps", job);
-        const BenchRow* h = default_row(r, "heitz", job);
-        if (c && h)
-            out.push_back({std::string("caps / heitz speed >= 1.35, ") + job + " (paper: 1.38 on a CPU)",
-                           fixed(ratio(h, c), 2), ratio(h, c) >= 1.35});
-    }
-    if (caps) {
-        double worst = 0;
-        std::string who;
-        for (const std::string& m : method_order(r)) {
-            const BenchRow* row = default_row(r, m, "write");
-            if (row && ratio(row, caps) > worst)
-                worst = ratio(row, caps), who = m;
-        }
-        out.push_back({"every method within 2x of caps", "slowest " + who + ": " + fixed(worst, 2) + "x", worst <= 2.0});
-    }
-}
-
-void mode_targets(const BenchReport& r, std::vector<Target>& out)
-{
-    double worst = 0;
+// The best of one column: the sampler with the lowest value.
+struct Best {
     std::string who;
-    for (const std::string& m : method_order(r))
-        for (const char* job : {"write", "furnace"}) {
-            const BenchRow* precise = default_row(r, m, job);
-            const BenchRow* relaxed = find_row(r, m, "relaxed", job);
-            if (precise && relaxed && ratio(precise, relaxed) > worst)
-                worst = ratio(precise, relaxed), who = m + " " + job;
-        }
-    if (worst > 0)
-        out.push_back({"the default (precise) within 1.15x of the fastest mode (relaxed)",
-                       "largest " + who + ": " + fixed(worst, 2) + "x", worst <= 1.15});
-    double worst_guard = -1e300;
-    std::string guard_who;
-    for (const std::string& m : method_order(r)) {
-        const BenchRow* on = default_row(r, m, "write");
-        const BenchRow* off = find_row(r, m, "precise-unguarded", "write");
-        if (on && off && ratio(on, off) - 1.0 > worst_guard)
-            worst_guard = ratio(on, off) - 1.0, guard_who = m;
+    double value = 0;
+    bool found = false;
+    void offer(const std::string& name, double v)
+    {
+        if (!found || v < value)
+            who = name, value = v, found = true;
     }
-    if (worst_guard > -1e300)
-        out.push_back({"guards cost < 5% (precise, write)",
-                       "largest " + guard_who + ": " + fixed(100.0 * worst_guard, 1) + "%", worst_guard < 0.05});
+};
+
+struct Answer {
+    Best fastest, fastest_fused, accurate, equal_time, equal_time_sobol;
+};
+
+Answer best_samplers(const BenchReport& r)
+{
+    Answer a;
+    for (const std::string& m : method_order(r)) {
+        const BenchRow* w = default_row(r, m, "write");
+        const BenchRow* f = default_row(r, m, "furnace");
+        const BenchRow* sobol = find_row(r, m, "precise", "furnace", "sobol");
+        if (w)
+            a.fastest.offer(m, w->timing.median);
+        if (f)
+            a.fastest_fused.offer(m, f->timing.median);
+        if (w && w->has_error)
+            a.accurate.offer(m, w->error.angle_p99);
+        if (f && f->variance > 0)
+            a.equal_time.offer(m, rmse_at_budget(*f, r));
+        if (sobol && sobol->rmse_measured > 0)
+            a.equal_time_sobol.offer(m, sobol->rmse_measured);
+    }
+    return a;
 }
 
-void job_targets(const BenchReport& r, std::vector<Target>& out)
+std::string bold_if(const std::string& text, bool best)
 {
-    const BenchRow* caps = default_row(r, "caps", "write");
-    const BenchRow* store = find_row(r, "all", "store-only", "write");
-    if (caps && store)
-        out.push_back({"the write job within 2.5x of a kernel that stores the same bytes",
-                       "caps " + fixed(caps->timing.median, 2) + " ns, store " + fixed(store->timing.median, 2) + " ns: " +
-                           fixed(ratio(caps, store), 2) + "x",
-                       ratio(caps, store) <= 2.5});
-    double worst = 0;
-    std::string who;
-    for (const std::string& m : method_order(r)) {
-        const BenchRow* uniform = default_row(r, m, "write");
-        const BenchRow* per_sample = default_row(r, m, "per-sample");
-        if (uniform && per_sample && ratio(per_sample, uniform) > worst)
-            worst = ratio(per_sample, uniform), who = m;
-    }
-    if (worst > 0)
-        out.push_back({"per-sample view and alpha within 2x of the uniform write job",
-                       "largest " + who + ": " + fixed(worst, 2) + "x", worst <= 2.0});
+    return best ? "**" + text + "**" : text;
 }
 
-void baseline_targets(const BenchReport& r, std::vector<Target>& out)
+// Per sampler, the answer's three numbers; the best of each in bold.
+void write_answer_table(std::ostream& md, const BenchReport& r, const Answer& a)
 {
-    double lowest = 1e300;
-    std::string who;
+    md << "| sampler | writing m + pdf_m | fused estimator | angle error, 99th percentile | RMSE at equal time |\n"
+          "|---|---|---|---|---|\n";
     for (const std::string& m : method_order(r)) {
-        const BenchRow* device = default_row(r, m, "write");
-        const BenchRow* native = find_row(r, m, "native", "write");
-        if (device && native && ratio(native, device) < lowest)
-            lowest = ratio(native, device), who = m;
+        const BenchRow* w = default_row(r, m, "write");
+        const BenchRow* f = default_row(r, m, "furnace");
+        if (!w && !f)
+            continue;
+        md << "| " << m << " | "
+           << (w ? bold_if(rate_text(1e9 / w->timing.median, "samples/s"), a.fastest.who == m) : "–") << " | "
+           << (f ? bold_if(rate_text(1e9 / f->timing.median, "samples/s"), a.fastest_fused.who == m) : "–") << " | "
+           << (w && w->has_error ? bold_if(readable_number(w->error.angle_p99) + " rad", a.accurate.who == m) : "–")
+           << " | "
+           << (f && f->variance > 0 ? bold_if(readable_number(rmse_at_budget(*f, r)), a.equal_time.who == m) : "–")
+           << " |\n";
     }
-    // What the compiler's vectorizer buys the same C++: the omp simd loop against the plain one.
-    const BenchRow* scalar_furnace = find_row(r, "caps", "native", "furnace");
-    const std::string by_hand = r.has_vectorized && scalar_furnace
-                                    ? "; caps furnace vectorized (omp simd): " +
-                                          fixed(scalar_furnace->timing.median / r.vectorized.median, 1) + "x its plain loop"
-                                    : "";
-    if (lowest < 1e300)
-        out.push_back({"every method >= 12x the native C++ baseline (write)",
-                       "lowest " + who + ": " + fixed(lowest, 1) + "x" + by_hand, lowest >= 12.0});
-    const BenchRow* caps_world = default_row(r, "caps", "world");
-    const BenchRow* iso_world = default_row(r, "caps-iso", "world");
-    if (caps_world && iso_world)
-        out.push_back({"caps-iso >= 1.1x caps with a basis, world space (blog: 1.15)",
-                       fixed(ratio(caps_world, iso_world), 2) + "x", ratio(caps_world, iso_world) >= 1.1});
-    const BenchRow* fused = default_row(r, "caps", "furnace");
-    if (r.has_vectorized && fused)
-        out.push_back({"fused caps estimator >= 90% of the vectorized native C++ (omp simd)",
-                       fixed(100.0 * r.vectorized.median / fused->timing.median, 0) + "% (vectorized C++ " +
-                           fixed(r.vectorized.median, 2) + " ns, fused " + fixed(fused->timing.median, 2) + " ns)",
-                       r.vectorized.median / fused->timing.median >= 0.9});
 }
 
-std::vector<Target> speed_targets(const BenchReport& r)
+// What a user asks first: which sampler is fastest here, which most accurate, which gives the lowest
+// error at equal time; in the default mode (precise) with independent uniforms.
+void write_answer(std::ostream& md, const BenchReport& r)
 {
-    std::vector<Target> out;
-    rate_targets(r, out);
-    mode_targets(r, out);
-    job_targets(r, out);
-    baseline_targets(r, out);
-    if (r.startup.measured) {
-        out.push_back({"process start to first result <= 100 ms, warm kernel cache",
-                       fixed(r.startup.warm_ms.median, 0) + " ms", r.startup.warm_ms.median <= 100});
-        out.push_back({"cold build <= 1.5 s per variant", fixed(r.startup.cold_ms, 0) + " ms", r.startup.cold_ms <= 1500});
+    const Answer a = best_samplers(r);
+    md << "## Which sampler on this device\n\n";
+    if (a.fastest.found)
+        md << "- **Fastest**: " << a.fastest.who << ", " << rate_text(1e9 / a.fastest.value, "samples/s")
+           << " writing m and pdf_m (" << duration_text(a.fastest.value) << " a sample)"
+           << (a.fastest_fused.found ? "; in a fused estimator (the white furnace, nothing written): " +
+                                           a.fastest_fused.who + ", " +
+                                           rate_text(1e9 / a.fastest_fused.value, "samples/s")
+                                     : "")
+           << ".\n";
+    if (a.accurate.found)
+        md << "- **Most accurate**: " << a.accurate.who << ": 99 % of its directions within "
+           << readable_number(a.accurate.value) << " rad of the double-precision reference's on the same uniforms.\n";
+    else
+        md << "- **Most accurate**: not measured in this run (--no-accuracy).\n";
+    if (a.equal_time.found) {
+        md << "- **Lowest error at equal time**: " << a.equal_time.who << ", RMSE " << readable_number(a.equal_time.value)
+           << " per cell when the " << r.scene_size << " x " << r.scene_size << " albedo table gets "
+           << readable_number(r.budget_ms) << " ms (its variance per sample and its fused speed together)";
+        if (a.equal_time_sobol.found)
+            md << "; with Sobol points instead of independent uniforms: " << a.equal_time_sobol.who << ", RMSE "
+               << readable_number(a.equal_time_sobol.value) << " (measured)";
+        md << ".\n";
     }
-    const BenchRow* write = default_row(r, "caps", "write");
-    if (r.apps.measured && write) {
-        const double file = r.apps.sample_npy.median / write->timing.median;
-        const double bins = r.apps.histogram.median / write->timing.median;
-        // What no writer of this file can go below: the start-up and the file's bytes written from memory.
-        const double start_ns = r.startup.measured ? r.startup.warm_ms.median * 1e6 / r.apps.count : 0.0;
-        const double floor = start_ns + r.apps.npy_file_floor.median;
-        out.push_back({"`ggx sample` into .npy within 3x of the write job per sample, whole process",
-                       fixed(r.apps.sample_npy.median, 2) + " ns: " + fixed(file, 1) + "x; its floor (" +
-                           (r.startup.measured ? "start-up + " : "") + "the file's bytes written from memory) " +
-                           fixed(floor, 2) + " ns: " + fixed(floor / write->timing.median, 1) + "x",
-                       file <= 3.0});
-        out.push_back({"`ggx histogram` within 3x of the write job per sample, whole process",
-                       fixed(r.apps.histogram.median, 2) + " ns: " + fixed(bins, 1) + "x; its binning alone " +
-                           fixed(r.apps.histogram_device, 2) + " ns: " +
-                           fixed(r.apps.histogram_device / write->timing.median, 1) + "x",
-                       bins <= 3.0});
-    }
-    if (r.enqueue.measured)
-        out.push_back({"host time of one enqueue of " + std::to_string(r.enqueue.count) +
-                           " samples < 20 us (warm, median of " + std::to_string(r.enqueue.calls) + ")",
-                       fixed(r.enqueue.host_us.median, 1) + " us (" + fixed(r.enqueue.host_us.low, 1) + "–" +
-                           fixed(r.enqueue.host_us.high, 1) + "); a second Sampler's first: " +
-                           fixed(r.enqueue.second_sampler_first_us, 0) + " us",
-                       r.enqueue.host_us.median < 20.0});
-    return out;
+    md << "\nPrecise mode (the default), independent uniforms (Philox); the sections below give every mode, job "
+          "and sequence.\n\n";
+    write_answer_table(md, r, a);
+    md << "\n";
 }
+
 
 void write_speed_table(std::ostream& md, const BenchReport& r)
 {
@@ -404,7 +354,81 @@ std::string machine_description()
     return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " logical cores";
 }
 
-std::string bench_csv(const BenchReport& r)
+namespace {
+
+BenchRow timing_row(const std::string& method, const std::string& precision, const std::string& job, Timing t)
+{
+    BenchRow row;
+    row.method = method;
+    row.precision = precision;
+    row.job = job;
+    row.timing = t;
+    return row;
+}
+
+struct CsvRow {
+    BenchRow row;
+    std::uint64_t samples_per_run;
+};
+
+// Start-up, the commands and small enqueues as rows: ns per process (precision "process", jobs
+// startup-cold and startup-warm), ns per sample of a whole command (sample-npy, histogram) and of its
+// parts (npy-file-floor, histogram-binning), ns per call of an enqueue (precision "host").
+std::vector<CsvRow> process_rows(const BenchReport& r)
+{
+    std::vector<CsvRow> rows;
+    if (r.startup.measured) {
+        rows.push_back({timing_row("ggx", "process", "startup-cold", Timing{r.startup.cold_ms * 1e6,
+                                                                              r.startup.cold_ms * 1e6,
+                                                                              r.startup.cold_ms * 1e6}), 1});
+        const Timing& warm = r.startup.warm_ms;
+        rows.push_back({timing_row("ggx", "process", "startup-warm", Timing{warm.median * 1e6, warm.low * 1e6,
+                                                                              warm.high * 1e6}), 1});
+    }
+    if (r.apps.measured) {
+        const double binning = r.apps.histogram_device;
+        rows.push_back({timing_row("caps", "process", "sample-npy", r.apps.sample_npy), r.apps.count});
+        rows.push_back({timing_row("caps", "process", "histogram", r.apps.histogram), r.apps.count});
+        rows.push_back({timing_row("caps", "process", "npy-file-floor", r.apps.npy_file_floor), r.apps.count});
+        rows.push_back({timing_row("caps", "process", "histogram-binning", Timing{binning, binning, binning}),
+                        r.apps.count});
+    }
+    if (r.enqueue.measured) {
+        const Timing& us = r.enqueue.host_us;
+        const double first = r.enqueue.second_sampler_first_us * 1e3;
+        rows.push_back({timing_row("caps", "host", "enqueue", Timing{us.median * 1e3, us.low * 1e3, us.high * 1e3}),
+                        r.enqueue.count});
+        rows.push_back({timing_row("caps", "host", "enqueue-second-sampler-first", Timing{first, first, first}),
+                        r.enqueue.count});
+    }
+    return rows;
+}
+
+void write_csv_row(std::ostream& csv, const BenchRow& row, const BenchReport& r, std::uint64_t samples_per_run)
+{
+    csv << row.method << "," << row.precision << "," << row.job << "," << row.timing.median << "," << row.timing.low
+        << "," << row.timing.high << "," << 1.0 / row.timing.median << ",";
+    if (row.has_error)
+        csv << row.error.angle_p99 << "," << row.error.angle_max << "," << row.error.pdf_p99 << ","
+            << row.error.pdf_max << ",";
+    else
+        csv << ",,,,";
+    if (row.variance > 0)
+        csv << row.variance << "," << row.mean_albedo << "," << efficiency(row) << "," << rmse_at_budget(row, r);
+    else
+        csv << ",,,";
+    csv << "," << row.sequence << ",";
+    if (row.rmse_measured > 0)
+        csv << row.rmse_measured;
+    csv << ",";
+    if (row.pdf_disagreement >= 0)
+        csv << row.pdf_disagreement;
+    csv << limit_csv_cells(row, r) << dielectric_csv_cells(row) << "," << samples_per_run << "\n";
+}
+
+} // namespace
+
+std::string bench_csv(const BenchReport& r, bool with_process_rows)
 {
     const std::string limit_header = limit_csv_header();
     const std::size_t limit_columns = std::count(limit_header.begin(), limit_header.end(), ',');
@@ -412,31 +436,16 @@ std::string bench_csv(const BenchReport& r)
     csv << std::setprecision(6)
         << "method,precision,job,ns_median,ns_min,ns_max,gsamples_per_s,angle_p99,angle_max,pdf_rel_p99,pdf_rel_max,"
            "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured,pdf_disagreement"
-        << limit_header << dielectric_csv_header << "\n";
-    for (const BenchRow& row : r.rows) {
-        csv << row.method << "," << row.precision << "," << row.job << "," << row.timing.median << ","
-            << row.timing.low << "," << row.timing.high << "," << 1.0 / row.timing.median << ",";
-        if (row.has_error)
-            csv << row.error.angle_p99 << "," << row.error.angle_max << "," << row.error.pdf_p99 << ","
-                << row.error.pdf_max << ",";
-        else
-            csv << ",,,,";
-        if (row.variance > 0)
-            csv << row.variance << "," << row.mean_albedo << "," << efficiency(row) << "," << rmse_at_budget(row, r);
-        else
-            csv << ",,,";
-        csv << "," << row.sequence << ",";
-        if (row.rmse_measured > 0)
-            csv << row.rmse_measured;
-        csv << ",";
-        if (row.pdf_disagreement >= 0)
-            csv << row.pdf_disagreement;
-        csv << limit_csv_cells(row, r) << dielectric_csv_cells(row) << "\n";
-    }
+        << limit_header << dielectric_csv_header << ",samples_per_run\n";
+    for (const BenchRow& row : r.rows)
+        write_csv_row(csv, row, r, row.precision == "native" ? r.native_count : r.count);
     if (r.has_vectorized)
         csv << "caps,native-vectorized,furnace," << r.vectorized.median << "," << r.vectorized.low << ","
             << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,,"
-            << std::string(limit_columns, ',') << dielectric_csv_cells(BenchRow{}) << "\n";
+            << std::string(limit_columns, ',') << dielectric_csv_cells(BenchRow{}) << "," << r.native_count << "\n";
+    if (with_process_rows)
+        for (const CsvRow& row : process_rows(r))
+            write_csv_row(csv, row.row, r, row.samples_per_run);
     return csv.str();
 }
 
@@ -472,9 +481,7 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
            << " (the child process ggx-native).\n\n";
     else
         md << "not available (" << r.native_unavailable << "); no native rows.\n\n";
-    md << "## Targets\n\n| target | measured | met |\n|---|---|---|\n";
-    for (const Target& t : speed_targets(r))
-        md << "| " << t.what << " | " << t.measured << " | " << (t.met ? "yes" : "**no**") << " |\n";
+    write_answer(md, r);
     md << "\n## Speed (ns per sample)\n\n";
     write_speed_table(md, r);
     if (r.eta != 0.0f)

@@ -2,7 +2,7 @@
 // rows (one per method x precision mode x job, the native baseline with
 // precision "native"; with --eta a rough dielectric's rows, eta set, beside
 // conductor rows of the same jobs), derived columns (efficiency, RMSE at equal time),
-// the CSV, the Markdown report with its target checks, and the charts; the
+// the CSV, the Markdown report (which sampler to pick first), and the charts; the
 // rows' op counts and the device's peaks give how close each runs to its
 // limits (bench_limits.hpp).
 #pragma once
@@ -33,11 +33,6 @@ struct BenchRow {
     float eta = 0;                // a rough dielectric's relative index (SampleParams::eta); 0: a conductor
     std::string transport;        // dielectric rows: radiance or importance
     DielectricAccuracy dielectric;  // dielectric furnace rows: reflectance and transmittance against the reference
-};
-
-struct ReportTarget {
-    std::string what, measured;
-    bool met;
 };
 
 struct StartupTiming {
@@ -96,7 +91,9 @@ std::uint64_t samples_at_budget(const BenchRow& row, const BenchReport& report);
 double efficiency(const BenchRow& row);
 double rmse_at_budget(const BenchRow& row, const BenchReport& report);
 
-std::string bench_csv(const BenchReport& report);
+// The rows as CSV; with_process_rows adds start-up, the commands and enqueues (see bench_csv's
+// process_rows), what bench/check_targets.py reads beside the device rows.
+std::string bench_csv(const BenchReport& report, bool with_process_rows = true);
 std::string bench_markdown(const BenchReport& report, const std::string& speed_error_png,
                            const std::string& speed_rmse_png);
 

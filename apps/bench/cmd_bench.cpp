@@ -5,8 +5,9 @@
 // dielectric's beside the conductor's), numerical error against
 // the reference, the variance of the albedo estimator over a small table,
 // efficiency and RMSE at equal time, start-up time.  Prints the Markdown
-// report; --csv, --charts and --markdown write the CSV, the two PNG charts
-// and the report (docs/BENCHMARKS.md is made by it).
+// report; --csv, --charts, --markdown and --html write the CSV, the two PNG
+// charts, the report and its page (docs/BENCHMARKS.md is made by it, with
+// the project's targets from bench/check_targets.py).
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -27,6 +28,7 @@
 #include "bench_enqueue.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
+#include "html_page.hpp"
 #include "plot.hpp"
 #include "report_text.hpp"
 
@@ -298,32 +300,46 @@ void measure_native_if_available(const BenchPlan& plan, BenchReport& report)
     }
 }
 
+// The charts' prefix: --charts, else beside the page (--html's path without its extension), else none.
+std::string charts_prefix(const BenchCommand& cmd)
+{
+    if (!cmd.charts.empty() || cmd.html.empty())
+        return cmd.charts;
+    return std::filesystem::path(cmd.html).replace_extension().string();
+}
+
 void write_outputs(const BenchCommand& cmd, const BenchReport& report)
 {
-    std::string csv = bench_csv(report);
     if (!cmd.csv.empty())
-        write_text_file(cmd.csv, csv);
+        write_text_file(cmd.csv, bench_csv(report));
     std::string speed_error, speed_rmse;
-    if (!cmd.charts.empty()) {
-        speed_error = cmd.charts + "-speed-error.png";
-        speed_rmse = cmd.charts + "-speed-rmse.png";
-        std::string csv_path = cmd.charts + ".plot.csv";
-        write_text_file(csv_path, csv);
+    if (const std::string charts = charts_prefix(cmd); !charts.empty()) {
+        speed_error = charts + "-speed-error.png";
+        speed_rmse = charts + "-speed-rmse.png";
+        std::string csv_path = charts + ".plot.csv";
+        write_text_file(csv_path, bench_csv(report, false));
         run_plot_script("plot_bench.py", {csv_path, speed_error, speed_rmse, report.device});
         std::filesystem::remove(csv_path);
     }
-    std::string md = bench_markdown(report, speed_error.empty() ? "" : relative_to(speed_error, cmd.markdown),
-                                    speed_rmse.empty() ? "" : relative_to(speed_rmse, cmd.markdown));
+    // The report with its chart links relative to where it goes.
+    const auto report_for = [&](const std::string& page) {
+        return bench_markdown(report, speed_error.empty() ? "" : relative_to(speed_error, page),
+                              speed_rmse.empty() ? "" : relative_to(speed_rmse, page));
+    };
+    std::string md = report_for(cmd.markdown);
     if (!cmd.markdown.empty())
         write_text_file(cmd.markdown, md);
+    if (!cmd.html.empty())
+        write_markdown_page(cmd.html, report_for(cmd.html));
     std::cout << md;
 }
 
 void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
 {
-    for (const std::string& path : {cmd.csv, cmd.markdown, cmd.charts})
+    for (const auto& [path, flag] : {std::pair{cmd.csv, "--csv"}, {cmd.markdown, "--markdown"}, {cmd.charts, "--charts"},
+                                     {cmd.html, "--html"}})
         if (!path.empty())
-            check_writable_folder(path == cmd.csv ? "--csv" : path == cmd.markdown ? "--markdown" : "--charts", path);
+            check_writable_folder(flag, path);
     BenchReport report = plan.settings;
     report.command = command_line();
     report.date = utc_now();
@@ -406,6 +422,7 @@ Prepare add_bench_command(CLI::App& app)
     cmd->add_option("--csv", s->csv, "write the rows to this CSV file");
     cmd->add_option("--charts", s->charts, "write PREFIX-speed-error.png and PREFIX-speed-rmse.png");
     cmd->add_option("--markdown", s->markdown, "write the report to this Markdown file");
+    cmd->add_option("--html", s->html, "write the report as a web page (with its charts; beside it unless --charts)");
     return [cmd, s]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;

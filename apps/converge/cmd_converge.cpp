@@ -2,8 +2,8 @@
 // converge with each sequence of uniforms (philox, sobol): RMSE against the
 // sample count for integrals the reference knows exactly, the fitted slope,
 // and RMSE at equal time with the methods' speeds.  Prints the Markdown
-// report; --csv, --charts and --markdown write the data, the PNG charts and
-// the report.
+// report; --csv, --charts, --markdown and --html write the data, the PNG
+// charts, the report and its page.
 #include <filesystem>
 #include <iostream>
 
@@ -11,6 +11,7 @@
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "converge_report.hpp"
+#include "html_page.hpp"
 #include "plot.hpp"
 #include "report_text.hpp"
 
@@ -18,14 +19,22 @@ namespace ggxapp {
 
 namespace {
 
-void draw_charts(const ConvergeCommand& cmd, const std::string& csv, const std::string& speeds,
+// The charts' prefix: --charts, else beside the page (--html's path without its extension), else none.
+std::string charts_prefix(const ConvergeCommand& cmd)
+{
+    if (!cmd.charts.empty() || cmd.html.empty())
+        return cmd.charts;
+    return std::filesystem::path(cmd.html).replace_extension().string();
+}
+
+void draw_charts(const std::string& charts, const std::string& csv, const std::string& speeds,
                  const std::string& device)
 {
-    const std::string csv_path = cmd.charts + ".plot.csv", speeds_path = cmd.charts + ".speeds.csv";
+    const std::string csv_path = charts + ".plot.csv", speeds_path = charts + ".speeds.csv";
     write_text_file(csv_path, csv);
     write_text_file(speeds_path, speeds);
     try {
-        run_plot_script("plot_converge.py", {csv_path, speeds_path, cmd.charts, device});
+        run_plot_script("plot_converge.py", {csv_path, speeds_path, charts, device});
     } catch (...) {
         std::filesystem::remove(csv_path);
         std::filesystem::remove(speeds_path);
@@ -37,7 +46,8 @@ void draw_charts(const ConvergeCommand& cmd, const std::string& csv, const std::
 
 void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan)
 {
-    for (const auto& [path, flag] : {std::pair{cmd.csv, "--csv"}, {cmd.markdown, "--markdown"}, {cmd.charts, "--charts"}})
+    for (const auto& [path, flag] : {std::pair{cmd.csv, "--csv"}, {cmd.markdown, "--markdown"}, {cmd.charts, "--charts"},
+                                     {cmd.html, "--html"}})
         if (!path.empty())
             check_writable_folder(flag, path);
     ggxcl::Sampler sampler(cmd.device);
@@ -50,13 +60,19 @@ void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan)
     if (!cmd.csv.empty())
         write_text_file(cmd.csv, csv);
     ConvergeReportInfo info{command_line(), utc_now(), sampler.device_name(), "", plan.randomizations};
-    if (!cmd.charts.empty()) {
-        draw_charts(cmd, csv, speeds_csv(speeds), info.device);
-        info.charts_prefix = relative_to(cmd.charts, cmd.markdown);
-    }
-    const std::string md = converge_markdown(info, plan, curves, speeds);
+    const std::string charts = charts_prefix(cmd);
+    if (!charts.empty())
+        draw_charts(charts, csv, speeds_csv(speeds), info.device);
+    // The report with its chart links relative to where it goes.
+    const auto report_for = [&](const std::string& page) {
+        info.charts_prefix = charts.empty() ? "" : relative_to(charts, page);
+        return converge_markdown(info, plan, curves, speeds);
+    };
+    const std::string md = report_for(cmd.markdown);
     if (!cmd.markdown.empty())
         write_text_file(cmd.markdown, md);
+    if (!cmd.html.empty())
+        write_markdown_page(cmd.html, report_for(cmd.html));
     std::cout << md;
 }
 
@@ -98,6 +114,7 @@ Prepare add_converge_command(CLI::App& app)
     cmd->add_option("--csv", s->csv, "write every point of every curve to this CSV file");
     cmd->add_option("--charts", s->charts, "write PREFIX-<integrand>.png and PREFIX-time.png");
     cmd->add_option("--markdown", s->markdown, "write the report to this Markdown file");
+    cmd->add_option("--html", s->html, "write the report as a web page (with its charts; beside it unless --charts)");
     return [cmd, s]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;

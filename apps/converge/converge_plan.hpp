@@ -41,7 +41,7 @@ struct ConvergeCommand {
     std::string min_n = "2^4", max_n = "2^16", randomizations = "32", seed = "1";
     std::string precision = "precise", device, speed_n = "2^22";
     bool no_speed = false;
-    std::string csv, charts, markdown;
+    std::string csv, charts, markdown, html;
     UserSamplerOptions user;  // --sampler FILE.h (repeatable), --sampler-name
 };
 

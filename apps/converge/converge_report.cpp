@@ -1,6 +1,8 @@
 // converge_report.cpp - the CSVs and the Markdown report of `ggx converge`.
 #include "converge_report.hpp"
 
+#include "report_text.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -59,7 +61,7 @@ void table(std::ostringstream& md, const ConvergePlan& plan, const std::vector<C
                 slopes.push_back(c->slope);
             md << "| " << curve_name(*row.front()) << " |" << (rmse ? "" : " " + number(median(slopes), "%.2f") + " |");
             for (const ConvergeCurve* c : row)
-                md << " " << (rmse ? number(c->rmse.back() / c->reference, "%.2e") : number(c->slope, "%.2f")) << " |";
+                md << " " << (rmse ? readable_number(c->rmse.back() / c->reference) : number(c->slope, "%.2f")) << " |";
             md << "\n";
         }
     md << "\n";

@@ -2,7 +2,9 @@
 // (alpha 0.3, view at 60 degrees by default) and every method it writes a
 // sample cloud (.npy with sidecar, and .ply), a histogram with its figure,
 // and one summary page, index.md, with each method's chi-square p-value and
-// throughput and the figures embedded; one line per method says where.
+// throughput and the figures embedded, and index.html, the same with a
+// rotatable 3-D view of each method's cloud (demo_page.hpp); one line per
+// method says where.
 // With --eta, a rough dielectric: every method but bounded, over the whole sphere.
 // --sampler FILE.h adds a user sampler (tested against its own pdf).
 #include <filesystem>
@@ -12,7 +14,10 @@
 #include "atomic_file.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
+#include "demo_page.hpp"
+#include "html_page.hpp"
 #include "histogram_job.hpp"
+#include "report_text.hpp"
 #include "sample_job.hpp"
 #include "sample_options.hpp"
 
@@ -23,13 +28,14 @@ namespace {
 struct DemoCommand {
     SampleOptions options;
     UserSamplerOptions user;  // --sampler FILE.h: added to the methods
-    std::string count = "1e5", histogram_count = "1e6", out = "ggx-demo";
-    bool no_png = false;
+    std::string count = "1e5", histogram_count = "1e6", cloud_points = "10000", out = "ggx-demo";
+    bool no_png = false, no_html = false;
 };
 
 struct MethodResult {
     SamplerChoice method;
     HistogramResult histogram;
+    ggxcl::SampleSet cloud;  // the page's points: the first of the method's cloud
 };
 
 SampleJob cloud_job(const SampleOptions& options, const SamplerChoice& method, std::uint64_t count,
@@ -102,20 +108,28 @@ void write_intro(std::ostream& md, const DemoCommand& demo, const std::string& d
        << ".\n\n";
 }
 
-std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult>& results, const std::string& device)
+// The page's intro and the table of every method's verdict and speed.
+std::string summary_table(const DemoCommand& demo, const std::vector<MethodResult>& results, const std::string& device)
 {
     std::ostringstream md;
     write_intro(md, demo, device);
     md << "| method | chi-square | dof | p-value | samples/s | files |\n|---|---|---|---|---|---|\n";
     for (const MethodResult& r : results) {
         const std::string name = r.method.name();
-        md << "| " << name << " | " << r.histogram.chi_square << " | " << r.histogram.dof << " | "
-           << r.histogram.p_value << " | " << r.histogram.samples_per_second << " | " << name << ".npy, " << name
-           << ".ply, " << name << ".hist.* |\n";
+        md << "| " << name << " | " << readable_number(r.histogram.chi_square, 4) << " | " << r.histogram.dof << " | "
+           << readable_number(r.histogram.p_value) << " | " << rate_text(r.histogram.samples_per_second, "samples/s")
+           << " | " << name << ".npy, " << name << ".ply, " << name << ".hist.* |\n";
     }
     if (demo.options.parsed_eta() != 0.0f)
         md << "\nbounded is left out: it has no exact dielectric sampler (its cap leaves out microfacet normals "
               "that refract, so some transmitted directions are never drawn).\n";
+    return md.str();
+}
+
+std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult>& results, const std::string& device)
+{
+    std::ostringstream md;
+    md << summary_table(demo, results, device);
     for (const MethodResult& r : results)
         if (!r.histogram.png.empty())
             md << "\n## " << r.method.name() << "\n\n![" << r.method.name()
@@ -124,13 +138,19 @@ std::string summary_page(const DemoCommand& demo, const std::vector<MethodResult
 }
 
 struct DemoCounts {
-    std::uint64_t cloud = 0, histogram = 0;
+    std::uint64_t cloud = 0, histogram = 0, page_points = 0;
 };
 
 // Checks every option for every method; returns the counts and what will be sampled.
 DemoCounts check_demo(const DemoCommand& demo, std::vector<Batch>& batches)
 {
-    DemoCounts counts{parse_count("-n", demo.count), parse_count("--histogram-n", demo.histogram_count)};
+    DemoCounts counts{parse_count("-n", demo.count), parse_count("--histogram-n", demo.histogram_count),
+                      parse_count("--page-points", demo.cloud_points)};
+    if (counts.page_points > 1000000)
+        throw UsageError("--page-points", demo.cloud_points, "1 .. 1e6 (each point is about 13 bytes of page)");
+    counts.page_points = std::min(counts.page_points, counts.cloud);
+    if (!demo.no_html)
+        require_three_js();
     std::vector<ggxcl::SampleParams> params;
     for (const SamplerChoice& method : demo_methods(demo))
         params.push_back(demo.options.for_method(method.method).params_for(method.method, method.user));
@@ -163,12 +183,24 @@ void run_demo(const DemoCommand& demo, DemoCounts counts)
         h.range = {options.parsed_seed(), 0, histogram_count};
         h.prefix = base + ".hist";
         h.png = !demo.no_png;
-        results.push_back({method, run_histogram_job(sampler, h)});
+        results.push_back({method, run_histogram_job(sampler, h), {}});
+        if (!demo.no_html)
+            results.back().cloud = sampler.generate(h.params, {options.parsed_seed(), 0, counts.page_points},
+                                                    {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_m,
+                                                     ggxcl::Field::pdf_o});
         std::cout << method.name() << ": samples in " << base << ".npy and " << base << ".ply, histogram "
                   << h.prefix << (h.png ? ".png" : ".json") << " (p = " << results.back().histogram.p_value << ")\n";
     }
     write_text_file(demo.out + "/index.md", summary_page(demo, results, sampler.device_name()));
     std::cout << "summary: " << demo.out << "/index.md\n";
+    if (demo.no_html)
+        return;
+    std::vector<DemoPageMethod> page;
+    for (MethodResult& r : results)
+        page.push_back({r.method.name(), r.histogram, std::move(r.cloud)});
+    const ggxcl::SampleParams first = demo.options.params_for(ggxcl::Method::caps, nullptr);
+    write_demo_page(demo.out + "/index.html", summary_table(demo, results, sampler.device_name()), page, first.view);
+    std::cout << "page: " << demo.out << "/index.html (open it in a browser; three.js in " << demo.out << "/three)\n";
 }
 
 } // namespace
@@ -181,7 +213,10 @@ Prepare add_demo_command(CLI::App& app)
     cmd->add_option("-n,--count", state->count, "samples per method in the clouds")->capture_default_str();
     cmd->add_option("--histogram-n", state->histogram_count, "samples per method in the histograms")
         ->capture_default_str();
+    cmd->add_option("--page-points", state->cloud_points, "samples per method in index.html's 3-D views (at most -n)")
+        ->capture_default_str();
     cmd->add_flag("--no-png", state->no_png, "skip the figures (no Python needed)");
+    cmd->add_flag("--no-html", state->no_html, "skip index.html (no three.js needed)");
     cmd->add_option("--out", state->out, "output folder")->capture_default_str();
     state->user.add_to(*cmd);
     return [cmd, state]() -> std::optional<Work> {

@@ -1,6 +1,8 @@
 // user_checks.cpp - the bins under a device pdf, and the pdf checks of a user sampler.
 #include "user_checks.hpp"
 
+#include "report_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -8,14 +10,6 @@
 namespace ggxapp {
 
 namespace {
-
-std::string short_number(double value)
-{
-    std::ostringstream out;
-    out.precision(3);
-    out << value;
-    return out.str();
-}
 
 // The relative difference of a and b (0 when both are 0).
 double relative_difference(double a, double b)
@@ -35,8 +29,8 @@ HistogramCheck pdf_integral_check(const std::vector<double>& probabilities, doub
     HistogramCheck check;
     check.name = "pdf integrates to 1";
     check.passed = std::fabs(total - 1.0) <= allowed;
-    check.summary = check.name + ": " + short_number(total) + " over the sphere (allowed: 1 +- " +
-                    short_number(allowed) + ")";
+    check.summary = check.name + ": " + readable_number(total) + " over the sphere (allowed: 1 +- " +
+                    readable_number(allowed) + ")";
     return check;
 }
 
@@ -84,7 +78,7 @@ std::vector<HistogramCheck> pdf_checks(ggxcl::Sampler& sampler, const ggxcl::Sam
         check.passed = a.with_density > 0 && double(a.disagree) <= 1e-3 * double(a.with_density);
         check.summary = check.name + ": " + std::to_string(a.disagree) + " of " + std::to_string(a.with_density) +
                         " samples with a density differ by more than 1e-3 (relative), the largest by " +
-                        short_number(a.worst);
+                        readable_number(a.worst);
         checks.push_back(check);
     }
     return checks;

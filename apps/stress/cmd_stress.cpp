@@ -7,14 +7,18 @@
 // a layer of cells per index, an eta column in the CSV, the totals per
 // method and per index, and bounded listed as refused.  --sampler FILE.h
 // adds a user sampler's device map (its own functions; the host reference
-// does not know it) beside the methods'.
+// does not know it) beside the methods'.  --html writes a page of the
+// totals and the maps.
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "atomic_file.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
+#include "html_page.hpp"
+#include "report_text.hpp"
 #include "plot.hpp"
 #include "sample_options.hpp"
 #include "stress_dielectric.hpp"
@@ -25,7 +29,7 @@ namespace ggxapp {
 namespace {
 
 struct StressCommand {
-    std::string methods = "all", precision = "precise", device, out, eta;
+    std::string methods = "all", precision = "precise", device, out, eta, html;
     UserSamplerOptions user;
     bool no_png = false;
 };
@@ -107,19 +111,19 @@ void add_cells(Cell& total, const Cell* cells, std::size_t count)
 }
 
 template <class Cell>
-void print_total(const std::string& label, const char* side, const Cell& total)
+void print_total(std::ostream& out, const std::string& label, const char* side, const Cell& total)
 {
-    std::cout << "| " << label << " | " << side << " | " << total.cases;
+    out << "| " << label << " | " << side << " | " << total.cases;
     for (std::uint64_t n : total.failures)
-        std::cout << " | " << n;
-    std::cout << " |\n";
+        out << " | " << n;
+    out << " |\n";
 }
 
-void print_totals(const std::string& method, const char* side, const StressMap& map)
+void print_totals(std::ostream& out, const std::string& method, const char* side, const StressMap& map)
 {
     CellCounts total;
     add_cells(total, map.data(), map.size());
-    print_total(method, side, total);
+    print_total(out, method, side, total);
 }
 
 struct StressPlan {
@@ -147,32 +151,32 @@ StressPlan plan_stress(const StressCommand& cmd)
 }
 
 // The header of a totals table (Markdown) whose first column is `first`.
-void print_table_header(const std::string& first, int kinds, const char* (*name)(int))
+void print_table_header(std::ostream& out, const std::string& first, int kinds, const char* (*name)(int))
 {
-    std::cout << "| " << first << " | side | cases";
+    out << "| " << first << " | side | cases";
     for (int k = 0; k < kinds; ++k)
-        std::cout << " | " << name(k);
-    std::cout << " |\n|---|---|---|";
+        out << " | " << name(k);
+    out << " |\n|---|---|---|";
     for (int k = 0; k < kinds; ++k)
-        std::cout << "---|";
-    std::cout << "\n";
+        out << "---|";
+    out << "\n";
 }
 
 // The CSV's header line and the totals table's header (Markdown).
-void write_headers(std::ostringstream& csv)
+void write_headers(std::ostringstream& csv, std::ostream& out)
 {
     csv << std::setprecision(9) << "method,side,precision,alpha,theta_degrees,cases";
     for (int k = 0; k < failure_kinds; ++k)
         csv << "," << failure_name(k);
     csv << "\n";
-    print_table_header("method", failure_kinds, failure_name);
+    print_table_header(out, "method", failure_kinds, failure_name);
 }
 
-void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Sampler& sampler)
+void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Sampler& sampler, std::ostream& out)
 {
     StressAxes axes = stress_axes();
     std::ostringstream csv;
-    write_headers(csv);
+    write_headers(csv, out);
     for (ggxcl::Method method : plan.methods) {
         std::string name(ggxcl::method_name(method));
         std::vector<StressCase> cases = stress_cases(method, axes);
@@ -180,15 +184,15 @@ void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, ggxc
         StressMap host = host_stress_map(method, cases, axes);
         append_rows(csv, name, "device", cmd.precision, axes, device);
         append_rows(csv, name, "host", "double", axes, host);
-        print_totals(name, "device", device);
-        print_totals(name, "host", host);
+        print_totals(out, name, "device", device);
+        print_totals(out, name, "host", host);
     }
     for (const auto& user : plan.users) {  // the device alone: the reference does not know them
         std::vector<StressCase> cases = stress_cases(ggxcl::Method::user, axes);
         StressMap device =
             device_stress_map(sampler, ggxcl::Method::user, plan.precision, cases, axes, true, user.get());
         append_rows(csv, user->name(), "device", cmd.precision, axes, device);
-        print_totals(user->name(), "device", device);
+        print_totals(out, user->name(), "device", device);
     }
     write_text_file(cmd.out + ".csv", csv.str());
 }
@@ -200,10 +204,10 @@ struct DielectricMaps {
 };
 
 // The totals per index over every method run, device and host.
-void print_eta_totals(const StressAxes& axes, const std::vector<DielectricMaps>& runs)
+void print_eta_totals(std::ostream& out, const StressAxes& axes, const std::vector<DielectricMaps>& runs)
 {
-    std::cout << "\nPer index, every method together:\n\n";
-    print_table_header("eta", dielectric::kinds, dielectric::kind_name);
+    out << "\nPer index, every method together:\n\n";
+    print_table_header(out, "eta", dielectric::kinds, dielectric::kind_name);
     const std::size_t layer = axes.alphas.size() * axes.cos_theta.size();
     for (std::size_t e = 0; e < axes.etas.size(); ++e)
         for (const char* side : {"device", "host"}) {
@@ -212,11 +216,11 @@ void print_eta_totals(const StressAxes& axes, const std::vector<DielectricMaps>&
                 add_cells(total, (side[0] == 'd' ? run.device : run.host).data() + e * layer, layer);
             std::ostringstream label;
             label << std::setprecision(9) << axes.etas[e];
-            print_total(label.str(), side, total);
+            print_total(out, label.str(), side, total);
         }
 }
 
-void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Sampler& sampler)
+void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Sampler& sampler, std::ostream& out)
 {
     StressAxes axes = dielectric_axes(plan.etas);
     std::ostringstream csv;
@@ -224,12 +228,12 @@ void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggx
     for (int k = 0; k < dielectric::kinds; ++k)
         csv << "," << dielectric::kind_name(k);
     csv << "\n";
-    print_table_header("method", dielectric::kinds, dielectric::kind_name);
+    print_table_header(out, "method", dielectric::kinds, dielectric::kind_name);
     std::vector<DielectricMaps> runs;
     for (ggxcl::Method method : plan.methods) {
         std::string name(ggxcl::method_name(method));
         if (method == ggxcl::Method::bounded) {
-            std::cout << "| " << name << " | refused: no exact dielectric sampler |\n";
+            out << "| " << name << " | refused: no exact dielectric sampler |\n";
             continue;
         }
         std::vector<StressCase> cases = dielectric_cases(method, axes);
@@ -241,25 +245,62 @@ void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggx
             dielectric::Counts total;
             const dielectric::Map& map = side[0] == 'd' ? run.device : run.host;
             add_cells(total, map.data(), map.size());
-            print_total(name, side, total);
+            print_total(out, name, side, total);
         }
         runs.push_back(std::move(run));
     }
     if (!runs.empty())
-        print_eta_totals(axes, runs);
+        print_eta_totals(out, axes, runs);
     write_text_file(cmd.out + ".csv", csv.str());
+}
+
+// The page: what was run, the totals, and each chart the plot script drew.
+std::string stress_markdown(const StressCommand& cmd, const StressPlan& plan, const std::string& device,
+                            const std::string& totals)
+{
+    std::ostringstream md;
+    md << "# ggx stress\n\n- Command: `" << command_line() << "`\n- Date: " << utc_now() << "\n- Device: " << device
+       << ", " << cmd.precision << " mode\n\n"
+       << (plan.etas.empty() ? "Every method's device functions and the double-precision reference over roughness x "
+                               "view x uniforms (edge and random), counted per kind of failure. "
+                             : "The rough dielectric's cases over relative index x roughness x view x uniforms, "
+                               "counted per kind of failure. ")
+       << "Each column counts the cases of one kind (a non-finite value, the fallback, a normal or direction off "
+          "its side, a pdf that is not positive or disagrees with its recomputation); docs/STABILITY.md says what "
+          "each kind means. The maps show where in roughness x view they happen.\n\n## Totals\n\n"
+       << totals;
+    std::vector<std::string> charts;
+    for (ggxcl::Method method : plan.methods)
+        if (plan.etas.empty() || method != ggxcl::Method::bounded)
+            charts.emplace_back(ggxcl::method_name(method));
+    for (const auto& user : plan.users)
+        charts.push_back(user->name());
+    if (!plan.etas.empty())
+        charts.emplace_back("eta");
+    for (const std::string& chart : charts) {
+        const std::string png = cmd.out + "-" + chart + ".png";
+        if (std::filesystem::exists(png))
+            md << "\n## " << chart << "\n\n![" << chart << ": where it fails](" << relative_to(png, cmd.html) << ")\n";
+    }
+    return md.str();
 }
 
 void run_stress(const StressCommand& cmd, const StressPlan& plan)
 {
     check_writable_folder("--out", cmd.out + ".csv");
+    if (!cmd.html.empty())
+        check_writable_folder("--html", cmd.html);
     ggxcl::Sampler sampler(cmd.device);
+    std::ostringstream totals;
     if (plan.etas.empty())
-        run_conductor_stress(cmd, plan, sampler);
+        run_conductor_stress(cmd, plan, sampler, totals);
     else
-        run_dielectric_stress(cmd, plan, sampler);
+        run_dielectric_stress(cmd, plan, sampler, totals);
+    std::cout << totals.str();
     if (!cmd.no_png)
         run_plot_script("plot_stress.py", {cmd.out + ".csv", cmd.out});
+    if (!cmd.html.empty())
+        write_markdown_page(cmd.html, stress_markdown(cmd, plan, sampler.device_name(), totals.str()));
 }
 
 } // namespace
@@ -279,6 +320,7 @@ Prepare add_stress_command(CLI::App& app)
                                      "near 1 from both sides, typical and extreme (every method but bounded)");
     cmd->add_option("--out", s->out, "output prefix: PREFIX.csv and PREFIX-METHOD.png")->required();
     cmd->add_flag("--no-png", s->no_png, "write the CSV only (no Python needed)");
+    cmd->add_option("--html", s->html, "write a web page of the totals and the maps");
     return [cmd, s]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;

@@ -273,7 +273,8 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
     }
 }
 
-TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown report")
+TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown report that answers first; "
+          "bench/check_targets.py checks the project's targets on its CSV")
 {
     fs::path dir = scratch() / "bench";
     fs::create_directories(dir);
@@ -309,12 +310,29 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
             CHECK(std::stod(csv_cell(csv, row.line, "ops_float")) > 0.0);
         }
     std::string md = read_all(dir / "B.md");
-    for (const char* part : {"## Targets", "## Speed (ns per sample)", "b-speed-error.png", "b-speed-rmse.png",
-                             "| caps | precise |", "| heitz | native |", "ggx bench --methods caps,heitz",
-                             "## Sequences", "| caps | sobol |", "## How close to this device's limits",
-                             "| heitz | furnace |", "every method within 2x of its limit (precise write and fused)"})
+    for (const char* part : {"## Which sampler on this device", "- **Fastest**: ", "- **Most accurate**: ",
+                             "- **Lowest error at equal time**: ", "## Speed (ns per sample)", "b-speed-error.png",
+                             "b-speed-rmse.png", "| caps | precise |", "| heitz | native |",
+                             "ggx bench --methods caps,heitz", "## Sequences", "| caps | sobol |",
+                             "## How close to this device's limits", "| heitz | furnace |", " M samples/s |"})
         CHECK(md.find(part) != std::string::npos);
-    CHECK(md.find("G samples/s (precise, m + pdf_m written)") == std::string::npos);  // no absolute rate targets
+    CHECK(md.find("## Which sampler") < md.find("## Speed (ns per sample)"));  // the user's answer first
+    CHECK(md.find("Targets") == std::string::npos);  // the project's targets are bench/check_targets.py's
+    CHECK(md.find("e+0") == std::string::npos);      // numbers for people, not 7.87954e+07
+    // The project's targets from the same CSV, written into a copy of the report.
+    Run targets = ggxtest::run_ggx("python3 " GGX_CHECK_TARGETS " " + (dir / "b.csv").string() + " --into " +
+                              (dir / "B.md").string() + " > " + (dir / "targets.md").string(),
+                          dir / "targets.err", false);
+    CAPTURE(targets.err);
+    REQUIRE(targets.status == 0);
+    const std::string with_targets = read_all(dir / "B.md");
+    for (const char* target : {"every method within 2x of its limit (precise write and fused)",
+                               "caps / heitz speed >= 1.35, write", "every method >= 12x the native C++ baseline"}) {
+        CAPTURE(target);
+        CHECK(with_targets.find(target) != std::string::npos);
+        CHECK(with_targets.find(target) > with_targets.find("## The project's speed targets"));
+    }
+    CHECK(with_targets.rfind(md, 0) == 0);  // the report kept as it was, the section after it
     CHECK(md.find("Rough dielectric") == std::string::npos);  // without --eta, conductors only
     for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(csv)) {
         CAPTURE(row.line);

@@ -1,0 +1,67 @@
+"""test_check_targets.py - bench/check_targets.py on CSVs made for the purpose:
+a target met and not met turns on the numbers (caps / heitz at 1.4 and 1.2),
+targets without their rows are left out, --into replaces its own section
+(run twice, one section) and keeps the rest, and a file that is not a bench
+CSV is refused with a message naming what is missing."""
+import os
+import subprocess
+import sys
+
+SCRIPT = os.path.join(os.path.dirname(__file__), "..", "..", "bench", "check_targets.py")
+HEADER = "method,precision,job,ns_median,ns_min,ns_max,sequence,eta,compute_limit_ns,percent_of_limit,samples_per_run\n"
+
+
+def write_csv(path, rows):
+    with open(path, "w") as f:
+        f.write(HEADER + "".join(",".join(map(str, row)) + "\n" for row in rows))
+
+
+def run(*args):
+    return subprocess.run([sys.executable, SCRIPT, *map(str, args)], capture_output=True, text=True)
+
+
+def rows(caps_ns, heitz_ns):
+    return [("caps", "precise", "write", caps_ns, caps_ns, caps_ns, "philox", 0, 3.0, 60, 1024),
+            ("heitz", "precise", "write", heitz_ns, heitz_ns, heitz_ns, "philox", 0, 3.0, 40, 1024)]
+
+
+def target_line(output, start):
+    return next(line for line in output.splitlines() if line.startswith("| " + start))
+
+
+def test_a_target_turns_on_the_numbers(tmp_path):
+    met, missed = tmp_path / "met.csv", tmp_path / "missed.csv"
+    write_csv(met, rows(5.0, 7.0))      # heitz / caps = 1.4
+    write_csv(missed, rows(5.0, 6.0))   # 1.2: the negative control
+    out_met, out_missed = run(met), run(missed)
+    assert out_met.returncode == 0 and out_missed.returncode == 0
+    assert target_line(out_met.stdout, "caps / heitz speed >= 1.35, write").endswith("| 1.40 | yes |")
+    assert target_line(out_missed.stdout, "caps / heitz speed >= 1.35, write").endswith("| 1.20 | **no** |")
+    assert "slowest heitz write: 40% of its limit | **no** |" in out_met.stdout
+    near_limit = tmp_path / "near.csv"
+    write_csv(near_limit, [row[:9] + (50,) + row[10:] for row in rows(5.0, 7.0)])   # both at 50%: met
+    assert "slowest caps write: 50% of its limit | yes |" in run(near_limit).stdout
+    assert "furnace" not in out_met.stdout         # no furnace rows: no furnace target
+    assert "native C++" not in out_met.stdout      # no native rows: no baseline target
+    assert "2 of 3 met." in out_met.stdout      # every method within 2x of caps, too
+
+
+def test_into_replaces_its_own_section(tmp_path):
+    csv_path, document = tmp_path / "b.csv", tmp_path / "BENCHMARKS.md"
+    write_csv(csv_path, rows(5.0, 7.0))
+    document.write_text("# Benchmarks\n\nthe user's report\n")
+    assert run(csv_path, "--into", document).returncode == 0
+    write_csv(csv_path, rows(5.0, 6.0))
+    assert run(csv_path, "--into", document).returncode == 0
+    text = document.read_text()
+    assert text.startswith("# Benchmarks\n\nthe user's report\n")
+    assert text.count("## The project's speed targets") == 1
+    assert "| 1.20 | **no** |" in text and "| 1.40 |" not in text
+
+
+def test_a_file_that_is_not_a_bench_csv_is_refused(tmp_path):
+    other = tmp_path / "other.csv"
+    other.write_text("alpha,theta\n0.3,60\n")
+    result = run(other)
+    assert result.returncode == 1
+    assert "is not the CSV of `ggx bench --csv`" in result.stderr and "ns_median" in result.stderr

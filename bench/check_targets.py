@@ -155,7 +155,8 @@ def process_targets(r):
 def section(targets, csv_name):
     lines = [BEGIN, "## The project's speed targets", "",
              f"What ggxcl expects of itself on this device, checked by `bench/check_targets.py` against the bench's "
-             f"CSV ({csv_name}). The report above is what a user reads; these are the project's own goals.", "",
+             f"CSV ({csv_name}). The report above is what a user reads; these are the project's own goals. "
+             f"Cost probes, the limits' arithmetic and earlier measurements: [COST-PROBES.md](COST-PROBES.md).", "",
              "| target | measured | met |", "|---|---|---|"]
     lines += [f"| {t['what']} | {t['measured']} | {'yes' if t['met'] else '**no**'} |" for t in targets]
     met = sum(t["met"] for t in targets)

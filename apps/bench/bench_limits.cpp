@@ -145,7 +145,7 @@ void write_limit_section(std::ostream& md, const BenchReport& r)
           "of (ops per sample / the class's peak), the class that binds in brackets, and beside it the sum over "
           "the classes (the bound where all classes share one set of units, as on a CPU); the bandwidth limit, the "
           "job's stored bytes per sample at the store-only kernel's speed; % = the tighter (larger) limit / the "
-          "measured time. See COST-PROBES.md, \"How close to the limit\".\n\n";
+          "measured time.\n\n";
     write_peaks(md, r);
     const std::vector<const BenchRow*> rows = table_rows(r);
     md << "| method | job | measured ns | compute limit ns (binds) | sum over classes ns | bandwidth limit ns | "

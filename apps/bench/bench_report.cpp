@@ -469,8 +469,7 @@ void write_user_pdf_section(std::ostringstream& md, const BenchReport& r)
 std::string bench_markdown(const BenchReport& r, const std::string& speed_error_png, const std::string& speed_rmse_png)
 {
     std::ostringstream md;
-    md << "# Benchmarks\n\nWritten by `ggx bench`; regenerate it with the command below rather than editing it.\n"
-          "Cost probes and earlier measurements: [COST-PROBES.md](COST-PROBES.md).\n\n"
+    md << "# ggx bench: the samplers on this device\n\nWritten by `ggx bench`; the command below runs it again.\n\n"
        << "- Command: `" << r.command << "`\n- Date: " << r.date << "\n- Machine: " << r.machine
        << "\n- Device: " << r.device << "\n- Speed runs: alpha " << r.alpha << ", view at " << r.theta
        << " degrees, " << r.count << " samples per run (world job: per-sample normals and views, at most 2^22), median of "

@@ -152,8 +152,8 @@ def process_targets(r):
     return out
 
 
-def section(targets, csv_name):
-    lines = [BEGIN, "## The project's speed targets", "",
+def section(targets, csv_name, command):
+    lines = [BEGIN, "## The project's speed targets", "", f"- Command: `{command}`", "",
              f"What ggxcl expects of itself on this device, checked by `bench/check_targets.py` against the bench's "
              f"CSV ({csv_name}). The report above is what a user reads; these are the project's own goals. "
              f"Cost probes, the limits' arithmetic and earlier measurements: [COST-PROBES.md](COST-PROBES.md).", "",
@@ -185,7 +185,7 @@ def main():
     args = parser.parse_args()
     r = Rows(args.csv)
     targets = limit_and_rate_targets(r) + mode_and_job_targets(r) + baseline_targets(r) + process_targets(r)
-    text = section(targets, os.path.basename(args.csv))
+    text = section(targets, os.path.basename(args.csv), " ".join(["python3", "bench/check_targets.py", *sys.argv[1:]]))
     sys.stdout.write(text)
     if args.into:
         write_into(args.into, text)

@@ -61,9 +61,10 @@ std::string ns_cell(const BenchRow* row)
     return fixed(row->timing.median, 2) + " (" + fixed(row->timing.low, 2) + "–" + fixed(row->timing.high, 2) + ")";
 }
 
-double gsps(const BenchRow* row)
+// Millions of samples per second, as people read them ("263").
+std::string msps(const BenchRow* row)
 {
-    return row ? 1.0 / row->timing.median : 0.0;
+    return readable_number(1e3 / row->timing.median);
 }
 
 // The default mode's row of (method, job): what a user runs.
@@ -176,14 +177,14 @@ void write_answer(std::ostream& md, const BenchReport& r)
 
 void write_speed_table(std::ostream& md, const BenchReport& r)
 {
-    md << "| method | precision | write m + pdf_m: ns | G samples/s | fused furnace: ns | world space o: ns | "
+    md << "| method | precision | write m + pdf_m: ns | M samples/s | fused furnace: ns | world space o: ns | "
           "per-sample view, alpha: ns |\n|---|---|---|---|---|---|---|\n";
     for (const std::string& m : method_order(r))
         for (const char* mode : {"precise", "precise-unguarded", "relaxed", "native"}) {
             const BenchRow* w = find_row(r, m, mode, "write");
             if (!w)
                 continue;
-            md << "| " << m << " | " << mode << " | " << ns_cell(w) << " | " << fixed(gsps(w), 3) << " | "
+            md << "| " << m << " | " << mode << " | " << ns_cell(w) << " | " << msps(w) << " | "
                << ns_cell(find_row(r, m, mode, "furnace")) << " | " << ns_cell(find_row(r, m, mode, "world")) << " | "
                << ns_cell(find_row(r, m, mode, "per-sample")) << " |\n";
         }
@@ -191,7 +192,7 @@ void write_speed_table(std::ostream& md, const BenchReport& r)
         md << "| caps | native, vectorized (omp simd) | – | – | " << fixed(r.vectorized.median, 2) << " ("
            << fixed(r.vectorized.low, 2) << "–" << fixed(r.vectorized.high, 2) << ") | – | – |\n";
     if (const BenchRow* store = find_row(r, "all", "store-only", "write"))
-        md << "| (none) | store only: the write job's bytes | " << ns_cell(store) << " | " << fixed(gsps(store), 3)
+        md << "| (none) | store only: the write job's bytes | " << ns_cell(store) << " | " << msps(store)
            << " | – | – | – |\n";
 }
 

@@ -325,6 +325,16 @@ void write_dielectric_section(std::ostream& md, const BenchReport& r)
 
 } // namespace
 
+BenchRow row_of(const std::string& method, const std::string& precision, const std::string& job, Timing timing)
+{
+    BenchRow row;
+    row.method = method;
+    row.precision = precision;
+    row.job = job;
+    row.timing = timing;
+    return row;
+}
+
 std::uint64_t samples_at_budget(const BenchRow& row, const BenchReport& report)
 {
     double cells = double(report.scene_size) * report.scene_size;
@@ -357,16 +367,6 @@ std::string machine_description()
 
 namespace {
 
-BenchRow timing_row(const std::string& method, const std::string& precision, const std::string& job, Timing t)
-{
-    BenchRow row;
-    row.method = method;
-    row.precision = precision;
-    row.job = job;
-    row.timing = t;
-    return row;
-}
-
 struct CsvRow {
     BenchRow row;
     std::uint64_t samples_per_run;
@@ -379,27 +379,27 @@ std::vector<CsvRow> process_rows(const BenchReport& r)
 {
     std::vector<CsvRow> rows;
     if (r.startup.measured) {
-        rows.push_back({timing_row("ggx", "process", "startup-cold", Timing{r.startup.cold_ms * 1e6,
+        rows.push_back({row_of("ggx", "process", "startup-cold", Timing{r.startup.cold_ms * 1e6,
                                                                               r.startup.cold_ms * 1e6,
                                                                               r.startup.cold_ms * 1e6}), 1});
         const Timing& warm = r.startup.warm_ms;
-        rows.push_back({timing_row("ggx", "process", "startup-warm", Timing{warm.median * 1e6, warm.low * 1e6,
+        rows.push_back({row_of("ggx", "process", "startup-warm", Timing{warm.median * 1e6, warm.low * 1e6,
                                                                               warm.high * 1e6}), 1});
     }
     if (r.apps.measured) {
         const double binning = r.apps.histogram_device;
-        rows.push_back({timing_row("caps", "process", "sample-npy", r.apps.sample_npy), r.apps.count});
-        rows.push_back({timing_row("caps", "process", "histogram", r.apps.histogram), r.apps.count});
-        rows.push_back({timing_row("caps", "process", "npy-file-floor", r.apps.npy_file_floor), r.apps.count});
-        rows.push_back({timing_row("caps", "process", "histogram-binning", Timing{binning, binning, binning}),
+        rows.push_back({row_of("caps", "process", "sample-npy", r.apps.sample_npy), r.apps.count});
+        rows.push_back({row_of("caps", "process", "histogram", r.apps.histogram), r.apps.count});
+        rows.push_back({row_of("caps", "process", "npy-file-floor", r.apps.npy_file_floor), r.apps.count});
+        rows.push_back({row_of("caps", "process", "histogram-binning", Timing{binning, binning, binning}),
                         r.apps.count});
     }
     if (r.enqueue.measured) {
         const Timing& us = r.enqueue.host_us;
         const double first = r.enqueue.second_sampler_first_us * 1e3;
-        rows.push_back({timing_row("caps", "host", "enqueue", Timing{us.median * 1e3, us.low * 1e3, us.high * 1e3}),
+        rows.push_back({row_of("caps", "host", "enqueue", Timing{us.median * 1e3, us.low * 1e3, us.high * 1e3}),
                         r.enqueue.count});
-        rows.push_back({timing_row("caps", "host", "enqueue-second-sampler-first", Timing{first, first, first}),
+        rows.push_back({row_of("caps", "host", "enqueue-second-sampler-first", Timing{first, first, first}),
                         r.enqueue.count});
     }
     return rows;

@@ -82,6 +82,9 @@ struct BenchReport {
     std::string peaks_unavailable, ops_unavailable;  // why there are no peaks, no op counts
 };
 
+// A row of (method, precision, job) with its timing, nothing else measured.
+BenchRow row_of(const std::string& method, const std::string& precision, const std::string& job, Timing timing);
+
 // 1 / (variance x seconds per sample), and the RMSE of each cell of the table
 // after the budget is spent on it: sqrt(variance / (budget / (cells x time))),
 // the Monte Carlo model, true for independent uniforms only (rmse_measured

@@ -36,16 +36,6 @@ namespace ggxapp {
 
 namespace {
 
-BenchRow row_of(const std::string& method, const std::string& precision, const std::string& job, Timing timing)
-{
-    BenchRow row;
-    row.method = method;
-    row.precision = precision;
-    row.job = job;
-    row.timing = timing;
-    return row;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,6 +2,8 @@
 // wall clock when the profiling timestamps cannot be right.
 #include "bench_speed.hpp"
 
+#include "report_text.hpp"
+
 #include <ggxcl/benchmark.hpp>
 
 #include <algorithm>
@@ -57,9 +59,7 @@ bool plausible_profile(double event_ns, double wall_ns)
 
 std::string describe_implausible(double event_ns, double wall_ns)
 {
-    std::ostringstream text;
-    text << "a run profiled at " << event_ns << " ns took " << wall_ns << " ns";
-    return text.str();
+    return "a run profiled at " + duration_text(event_ns) + " took " + duration_text(wall_ns);
 }
 
 } // namespace

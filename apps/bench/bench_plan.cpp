@@ -58,9 +58,10 @@ void plan_user_samplers(const BenchCommand& cmd, BenchPlan& plan)
 
 BenchPlan plan_bench(const BenchCommand& cmd)
 {
-    BenchPlan plan{parse_name_list("--methods", cmd.methods, method_names()),
-                   parse_name_list("--precisions", cmd.precisions, {"precise", "relaxed"}),
-                   parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world", "per-sample"}), {}, {}, {}};
+    BenchPlan plan;
+    plan.methods = parse_name_list("--methods", cmd.methods, method_names());
+    plan.precisions = parse_name_list("--precisions", cmd.precisions, {"precise", "relaxed"});
+    plan.jobs = parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world", "per-sample"});
     for (const std::string& name : parse_name_list("--sequences", cmd.sequences, {"philox", "sobol"}))
         if (name != "philox")  // always timed
             plan.sequences.push_back(name);

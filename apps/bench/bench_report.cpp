@@ -49,11 +49,6 @@ std::string fixed(double value, int digits)
     return out.str();
 }
 
-std::string sci(double value)
-{
-    return readable_number(value);
-}
-
 std::string ns_cell(const BenchRow* row)
 {
     if (!row)
@@ -203,8 +198,8 @@ void write_accuracy_tables(std::ostream& md, const BenchReport& r)
         for (const char* mode : {"precise", "relaxed", "native"}) {
             const BenchRow* w = find_row(r, m, mode, "write");
             if (w && w->has_error)
-                md << "| " << m << " | " << mode << " | " << sci(w->error.angle_p99) << " | " << sci(w->error.angle_max)
-                   << " | " << sci(w->error.pdf_p99) << " | " << sci(w->error.pdf_max) << " |\n";
+                md << "| " << m << " | " << mode << " | " << readable_number(w->error.angle_p99) << " | " << readable_number(w->error.angle_max)
+                   << " | " << readable_number(w->error.pdf_p99) << " | " << readable_number(w->error.pdf_max) << " |\n";
         }
 }
 
@@ -217,7 +212,7 @@ void write_variance_table(std::ostream& md, const BenchReport& r)
             const BenchRow* f = find_row(r, m, mode, "furnace");
             if (f && f->variance > 0)
                 md << "| " << m << " | " << mode << " | " << fixed(f->variance, 5) << " | " << fixed(f->mean_albedo, 5) << " | "
-                   << fixed(f->timing.median, 2) << " | " << sci(efficiency(*f)) << " | " << sci(rmse_at_budget(*f, r))
+                   << fixed(f->timing.median, 2) << " | " << readable_number(efficiency(*f)) << " | " << readable_number(rmse_at_budget(*f, r))
                    << " |\n";
         }
 }
@@ -236,8 +231,8 @@ void write_sequence_table(std::ostream& md, const BenchReport& r)
             if (!f || f->rmse_measured == 0)
                 continue;
             md << "| " << m << " | " << sequence << " | " << ns_cell(w) << " | " << ns_cell(f) << " | "
-               << (w && w->has_error ? sci(w->error.angle_p99) : "–") << " | " << samples_at_budget(*f, r) << " | "
-               << sci(f->rmse_measured) << " |\n";
+               << (w && w->has_error ? readable_number(w->error.angle_p99) : "–") << " | " << samples_at_budget(*f, r) << " | "
+               << readable_number(f->rmse_measured) << " |\n";
         }
 }
 
@@ -464,7 +459,7 @@ void write_user_pdf_section(std::ostringstream& md, const BenchReport& r)
           "recomputed from (i, o): 0 for a sampler whose pdf function matches what it samples.\n\n"
           "| sampler | precision | pdf_o off its pdf(i, o) |\n|---|---|---|\n";
     for (const BenchRow* row : rows)
-        md << "| " << row->method << " | " << row->precision << " | " << sci(row->pdf_disagreement) << " |\n";
+        md << "| " << row->method << " | " << row->precision << " | " << readable_number(row->pdf_disagreement) << " |\n";
 }
 
 std::string bench_markdown(const BenchReport& r, const std::string& speed_error_png, const std::string& speed_rmse_png)

@@ -290,20 +290,12 @@ void measure_native_if_available(const BenchPlan& plan, BenchReport& report)
     }
 }
 
-// The charts' prefix: --charts, else beside the page (--html's path without its extension), else none.
-std::string charts_prefix(const BenchCommand& cmd)
-{
-    if (!cmd.charts.empty() || cmd.html.empty())
-        return cmd.charts;
-    return std::filesystem::path(cmd.html).replace_extension().string();
-}
-
 void write_outputs(const BenchCommand& cmd, const BenchReport& report)
 {
     if (!cmd.csv.empty())
         write_text_file(cmd.csv, bench_csv(report));
     std::string speed_error, speed_rmse;
-    if (const std::string charts = charts_prefix(cmd); !charts.empty()) {
+    if (const std::string charts = charts_prefix(cmd.charts, cmd.html); !charts.empty()) {
         speed_error = charts + "-speed-error.png";
         speed_rmse = charts + "-speed-rmse.png";
         std::string csv_path = charts + ".plot.csv";

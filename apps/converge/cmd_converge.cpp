@@ -19,14 +19,6 @@ namespace ggxapp {
 
 namespace {
 
-// The charts' prefix: --charts, else beside the page (--html's path without its extension), else none.
-std::string charts_prefix(const ConvergeCommand& cmd)
-{
-    if (!cmd.charts.empty() || cmd.html.empty())
-        return cmd.charts;
-    return std::filesystem::path(cmd.html).replace_extension().string();
-}
-
 void draw_charts(const std::string& charts, const std::string& csv, const std::string& speeds,
                  const std::string& device)
 {
@@ -60,7 +52,7 @@ void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan)
     if (!cmd.csv.empty())
         write_text_file(cmd.csv, csv);
     ConvergeReportInfo info{command_line(), utc_now(), sampler.device_name(), "", plan.randomizations};
-    const std::string charts = charts_prefix(cmd);
+    const std::string charts = charts_prefix(cmd.charts, cmd.html);
     if (!charts.empty())
         draw_charts(charts, csv, speeds_csv(speeds), info.device);
     // The report with its chart links relative to where it goes.

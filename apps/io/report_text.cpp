@@ -24,6 +24,13 @@ std::string relative_to(const std::string& path, const std::string& page)
     return std::filesystem::relative(std::filesystem::absolute(path), folder).string();
 }
 
+std::string charts_prefix(const std::string& charts, const std::string& html)
+{
+    if (!charts.empty() || html.empty())
+        return charts;
+    return std::filesystem::path(html).replace_extension().string();
+}
+
 namespace {
 
 // "1.20e-07" -> "1.2e-7": no trailing zeros in the mantissa, no padding in the exponent.

@@ -14,6 +14,10 @@ std::string utc_now();  // "2026-12-02 05:30 UTC"
 // itself when there is no page.
 std::string relative_to(const std::string& path, const std::string& page);
 
+// Where a command's charts go: `charts` (its --charts prefix) when given, else beside the page
+// `html` (its path without the extension), else nowhere ("").
+std::string charts_prefix(const std::string& charts, const std::string& html);
+
 // `value` with `significant` digits: fixed between 1e-3 and 1e6 ("0.0123",
 // "4.29", "1497"), else scientific with a short exponent ("1.2e-7"); "0" for 0.
 std::string readable_number(double value, int significant = 3);

@@ -12,7 +12,7 @@ install(TARGETS ggxcl EXPORT ggxclTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lib/include/ggxcl DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-  FILES_MATCHING PATTERN "*.hpp")
+  FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
 # Every header (user kernels include them) and the bulk kernels built from
 # them, for reading or building offline; not the stress harness.
 file(GLOB GGXCL_DEVICE_HEADERS ${PROJECT_SOURCE_DIR}/kernels/*.h)

@@ -73,6 +73,17 @@ enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
 #define GGX_SEQUENCE_SOBOL 1
 #define GGX_SEQUENCE_COUNT 2
 
+// The precision modes (ggxcl::Precision: which options a program is built
+// with) and the transport modes of a rough dielectric's transmission
+// (ggxcl::Transport: -DGGX_IMPORTANCE=1 for importance), in the order of the
+// C++ enums and of the C API's (ggxcl/ggxcl.h).
+#define GGX_PRECISION_PRECISE 0
+#define GGX_PRECISION_RELAXED 1
+#define GGX_PRECISION_COUNT 2
+#define GGX_TRANSPORT_RADIANCE 0
+#define GGX_TRANSPORT_IMPORTANCE 1
+#define GGX_TRANSPORT_COUNT 2
+
 // Argument positions of the sampling kernels: ggx_sample_bulk(_tail),
 // ggx_furnace_bulk, ggx_histogram and ggx_histogram_bins(_tail) begin with
 //   seed, first, count, stride (the histogram kernels: samples per work-item),

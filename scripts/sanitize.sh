@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# sanitize.sh - builds the host code (library, reference, tool, tests) with
+# sanitize.sh - builds the host code (library, reference, tool, tests, the C API's C test) with
 # AddressSanitizer and UndefinedBehaviorSanitizer in build-asan/ and runs the
 # test suite there on PoCL.  Leak reports from the OpenCL stack (PoCL, its
 # LLVM, the ICD loader), which we cannot fix, are suppressed by
@@ -8,8 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 cmake --build build-asan -j"$(nproc)"
 # PoCL alone: Mesa's OpenCL libraries (rusticl, Clover) leak when the ICD
 # loader merely loads them, partly in frames LeakSanitizer cannot name (no

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tsan.sh - builds the host code of the threaded tests (library, reference,
 # test helpers, test_threads: 8 threads sharing Samplers; test_runtime: a
-# range split across samplers in threads) with ThreadSanitizer in
+# range split across samplers in threads; test_c_api: four C threads sharing
+# one sampler of the C API) with ThreadSanitizer in
 # build-tsan/ and runs them on PoCL.  Any report fails the run; none is
 # suppressed (the OpenCL stack is not instrumented, and PoCL's threads
 # reported nothing through the interceptors).
@@ -9,12 +10,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 flags="-fsanitize=thread -fno-omit-frame-pointer -g"
-cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DGGXCL_BUILD_PYTHON=OFF >/dev/null
-cmake --build build-tsan -j"$(nproc)" --target test_threads test_runtime
+cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" \
+  -DGGXCL_BUILD_PYTHON=OFF >/dev/null
+cmake --build build-tsan -j"$(nproc)" --target test_threads test_runtime test_c_api_cpp_dump test_c_api_consumer
 icd_dir="$PWD/build-tsan/icd-pocl-only"
 mkdir -p "$icd_dir"
 cp /etc/OpenCL/vendors/pocl.icd "$icd_dir/"
 export OCL_ICD_VENDORS="$icd_dir"
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
-ctest --test-dir build-tsan --output-on-failure -R '^test_(threads|runtime)$' "$@"
+ctest --test-dir build-tsan --output-on-failure -R '^test_(threads|runtime|c_api)$' "$@"

@@ -29,6 +29,13 @@ static_assert(static_cast<int>(Sequence::philox) == GGX_SEQUENCE_PHILOX);
 static_assert(static_cast<int>(Sequence::sobol) == GGX_SEQUENCE_SOBOL);
 static_assert(all_sequences.size() == GGX_SEQUENCE_COUNT, "every kernel sequence id has its ggxcl::Sequence");
 
+static_assert(static_cast<int>(Precision::precise) == GGX_PRECISION_PRECISE);
+static_assert(static_cast<int>(Precision::relaxed) == GGX_PRECISION_RELAXED);
+static_assert(all_precisions.size() == GGX_PRECISION_COUNT, "every precision id has its ggxcl::Precision");
+static_assert(static_cast<int>(Transport::radiance) == GGX_TRANSPORT_RADIANCE);
+static_assert(static_cast<int>(Transport::importance) == GGX_TRANSPORT_IMPORTANCE);
+static_assert(all_transports.size() == GGX_TRANSPORT_COUNT, "every transport id has its ggxcl::Transport");
+
 // The kernel's id of a method, and the -DGGX_WRITE_MASK bits of a field set
 // (FieldSet's bits are 1 << field id, the kernels' mask bits).
 constexpr int method_id(Method method) { return static_cast<int>(method); }

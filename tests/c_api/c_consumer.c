@@ -1,0 +1,411 @@
+/* c_consumer.c - a C99 program against ggxcl's C API (ggxcl/ggxcl.h).
+ *   c_consumer bits DUMP USER_DIR   its own context, queue and buffers at
+ *       offsets (direct, sub-buffer, staged) get the C++ enqueue's bits of
+ *       every method (DUMP, from cpp_dump) and leave the rest of each buffer
+ *       untouched; the host calls agree; then every status code that one
+ *       process can provoke (USER_DIR holds tests/user_samplers).
+ *   c_consumer threads DUMP         four threads share one sampler, each with
+ *       its own queue, and get the same bits.
+ *   c_consumer no-device            (no OpenCL platform) GGXCL_DEVICE_ERROR.
+ *   c_consumer no-cache             (no writable cache) GGXCL_ERROR.
+ *   c_consumer out-of-memory        GGXCL_OUT_OF_HOST_MEMORY.
+ * Exits 0 when every check passes, else 1 after naming the failures. */
+#define _POSIX_C_SOURCE 200809L
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <ggxcl/ggxcl.h>
+
+#include "c_api_cases.h"
+
+static int failures = 0;
+
+#define CHECK(condition, ...)                                        \
+    do {                                                             \
+        if (!(condition)) {                                          \
+            fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__);     \
+            fprintf(stderr, __VA_ARGS__);                            \
+            fprintf(stderr, "\n");                                   \
+            ++failures;                                              \
+        }                                                            \
+    } while (0)
+
+#define MUST(call)                                                                              \
+    do {                                                                                        \
+        ggxcl_status must_status = (call);                                                      \
+        if (must_status != GGXCL_SUCCESS) {                                                     \
+            fprintf(stderr, "FAIL %s:%d: %s: %s\n", __FILE__, __LINE__, ggxcl_status_string(must_status), \
+                    ggxcl_last_error());                                                        \
+            exit(1);                                                                            \
+        }                                                                                       \
+    } while (0)
+
+static const float sentinel = -7.0f;
+static const float* dump = NULL; /* CASE_FLOATS per method */
+
+static void read_dump(const char* path)
+{
+    size_t floats = (size_t)GGXCL_METHOD_COUNT * CASE_FLOATS;
+    float* data = malloc(floats * sizeof(float));
+    FILE* file = fopen(path, "rb");
+    if (!data || !file || fread(data, sizeof(float), floats, file) != floats) {
+        fprintf(stderr, "cannot read %s floats from %s\n", "all", path);
+        exit(1);
+    }
+    fclose(file);
+    dump = data;
+}
+
+static ggxcl_params case_params(ggxcl_method method)
+{
+    ggxcl_params params;
+    ggxcl_default_params(&params);
+    params.method = method;
+    params.alpha_x = case_alpha_x((int)method);
+    params.alpha_y = case_alpha_y((int)method);
+    memcpy(params.view, case_view, sizeof case_view);
+    return params;
+}
+
+/* A buffer of `floats` floats, every one the sentinel. */
+static cl_mem sentinel_buffer(cl_context context, cl_command_queue queue, size_t floats)
+{
+    cl_int error = CL_SUCCESS;
+    cl_mem mem = clCreateBuffer(context, CL_MEM_READ_WRITE, floats * sizeof(float), NULL, &error);
+    CHECK(error == CL_SUCCESS, "clCreateBuffer: %d", error);
+    error = clEnqueueFillBuffer(queue, mem, &sentinel, sizeof sentinel, 0, floats * sizeof(float), 0, NULL, NULL);
+    CHECK(error == CL_SUCCESS, "clEnqueueFillBuffer: %d", error);
+    return mem;
+}
+
+/* Compares `planes` planes at `offset` (CASE_STRIDE apart) of `mem` with
+ * the dump's floats at `expected`, and checks every other float of the
+ * buffer's `floats` is still the sentinel. */
+static void expect_planes(cl_command_queue queue, cl_mem mem, size_t floats, size_t offset, int planes,
+                          const float* expected, const char* what, const char* method)
+{
+    float* host = malloc(floats * sizeof(float));
+    size_t i, written = 0, mismatches = 0, touched = 0;
+    clEnqueueReadBuffer(queue, mem, CL_TRUE, 0, floats * sizeof(float), host, 0, NULL, NULL);
+    for (i = 0; i < floats; ++i) {
+        size_t local = i - offset, plane = local / CASE_STRIDE, j = local % CASE_STRIDE;
+        if (i >= offset && plane < (size_t)planes && j < CASE_COUNT) {
+            ++written;
+            if (memcmp(&host[i], &expected[plane * CASE_COUNT + j], sizeof(float)) != 0)
+                ++mismatches;
+        } else if (host[i] != sentinel) {
+            ++touched;
+        }
+    }
+    CHECK(written == (size_t)planes * CASE_COUNT && mismatches == 0,
+          "%s %s: %zu of %zu floats differ from the C++ API's", method, what, mismatches, written);
+    CHECK(touched == 0, "%s %s: %zu floats outside the planes were written", method, what, touched);
+    free(host);
+}
+
+/* Offsets in floats: o at the device's base address alignment (a sub-buffer), pdf_m at 7
+ * and the pdfs at 3 (below any alignment: staged), pdf_o and weight in one buffer at 0 and
+ * 2000. */
+enum { PDF_M_OFFSET = 7, WEIGHT_OFFSET = 2000, PDF_OFFSET = 3 };
+static size_t o_offset = 0;
+
+static void set_aligned_offset(cl_device_id device)
+{
+    cl_uint align_bits = 0;
+    clGetDeviceInfo(device, CL_DEVICE_MEM_BASE_ADDR_ALIGN, sizeof align_bits, &align_bits, NULL);
+    o_offset = align_bits / (8 * sizeof(float));
+    CHECK(o_offset > PDF_M_OFFSET, "a base address alignment of %u bits", align_bits);
+}
+struct Device {
+    cl_context context;
+    cl_device_id device;
+};
+
+/* Our own context on the device the library picks by default (GGXCL_DEVICE, else the first). */
+static struct Device own_context(void)
+{
+    ggxcl_sampler* probe = NULL;
+    struct Device d;
+    cl_int error = CL_SUCCESS;
+    MUST(ggxcl_sampler_create("", &probe));
+    d.device = ggxcl_sampler_device(probe);
+    clRetainDevice(d.device);
+    ggxcl_sampler_release(probe);
+    d.context = clCreateContext(NULL, 1, &d.device, NULL, NULL, &error);
+    set_aligned_offset(d.device);
+    CHECK(error == CL_SUCCESS, "clCreateContext: %d", error);
+    return d;
+}
+
+#define PLANE_FLOATS(planes) ((size_t)(planes) * CASE_STRIDE + 300u)
+
+/* One method through ggxcl_enqueue, ggxcl_enqueue_pdf and ggxcl_enqueue_eval on `queue`. */
+static void check_method(ggxcl_sampler* sampler, cl_context context, cl_command_queue queue, ggxcl_method method)
+{
+    const char* name = ggxcl_method_name(method);
+    const float* expected = dump + (size_t)method * CASE_FLOATS;
+    ggxcl_params params = case_params(method);
+    ggxcl_range range = {CASE_SEED, CASE_FIRST, CASE_COUNT};
+    ggxcl_device_outputs out;
+    cl_mem m = sentinel_buffer(context, queue, PLANE_FLOATS(3)), o = sentinel_buffer(context, queue, PLANE_FLOATS(3) + o_offset);
+    cl_mem pdf_m = sentinel_buffer(context, queue, PLANE_FLOATS(1)), shared = sentinel_buffer(context, queue, 4000);
+    cl_mem u = sentinel_buffer(context, queue, PLANE_FLOATS(2)), pdf = sentinel_buffer(context, queue, PLANE_FLOATS(1));
+    cl_mem value = sentinel_buffer(context, queue, PLANE_FLOATS(1));
+    cl_event sampled = NULL, evaluated[2] = {NULL, NULL};
+    ggxcl_buffer directions, pdfs, values;
+    memset(&out, 0, sizeof out);
+    out.m.mem = m;
+    out.o.mem = o, out.o.offset = o_offset;
+    out.pdf_m.mem = pdf_m, out.pdf_m.offset = PDF_M_OFFSET;
+    out.pdf_o.mem = shared;
+    out.weight.mem = shared, out.weight.offset = WEIGHT_OFFSET;
+    out.u.mem = u;
+    MUST(ggxcl_enqueue(sampler, queue, &params, &range, &out, CASE_STRIDE, NULL, 0, NULL, &sampled));
+    directions = out.o;
+    pdfs.mem = pdf, pdfs.offset = PDF_OFFSET;
+    values.mem = value, values.offset = 0;
+    MUST(ggxcl_enqueue_pdf(sampler, queue, &params, CASE_COUNT, directions, pdfs, CASE_STRIDE, NULL, 1, &sampled,
+                           &evaluated[0]));
+    MUST(ggxcl_enqueue_eval(sampler, queue, &params, CASE_COUNT, directions, values, CASE_STRIDE, NULL, 1, &sampled,
+                            &evaluated[1]));
+    CHECK(clWaitForEvents(2, evaluated) == CL_SUCCESS, "%s: the events did not complete", name);
+    expect_planes(queue, m, PLANE_FLOATS(3), 0, 3, expected, "m", name);
+    expect_planes(queue, o, PLANE_FLOATS(3) + o_offset, o_offset, 3, expected + 3 * CASE_COUNT, "o", name);
+    expect_planes(queue, pdf_m, PLANE_FLOATS(1), PDF_M_OFFSET, 1, expected + 6 * CASE_COUNT, "pdf_m", name);
+    expect_planes(queue, u, PLANE_FLOATS(2), 0, 2, expected + 9 * CASE_COUNT, "u", name);
+    expect_planes(queue, pdf, PLANE_FLOATS(1), PDF_OFFSET, 1, expected + 11 * CASE_COUNT, "pdf", name);
+    expect_planes(queue, value, PLANE_FLOATS(1), 0, 1, expected + 12 * CASE_COUNT, "eval", name);
+    {   /* pdf_o and weight side by side in one buffer */
+        float host[4000];
+        size_t j, differ = 0;
+        clEnqueueReadBuffer(queue, shared, CL_TRUE, 0, sizeof host, host, 0, NULL, NULL);
+        for (j = 0; j < CASE_COUNT; ++j)
+            differ += memcmp(&host[j], &expected[7 * CASE_COUNT + j], sizeof(float)) != 0 ||
+                      memcmp(&host[WEIGHT_OFFSET + j], &expected[8 * CASE_COUNT + j], sizeof(float)) != 0 ||
+                      host[CASE_COUNT + j] != sentinel;
+        CHECK(differ == 0, "%s pdf_o and weight in one buffer: %zu samples differ", name, differ);
+    }
+    clReleaseEvent(sampled), clReleaseEvent(evaluated[0]), clReleaseEvent(evaluated[1]);
+    clReleaseMemObject(m), clReleaseMemObject(o), clReleaseMemObject(pdf_m), clReleaseMemObject(shared);
+    clReleaseMemObject(u), clReleaseMemObject(pdf), clReleaseMemObject(value);
+}
+
+/* The host calls: ggxcl_generate gives the enqueue's bits, the furnace's two forms agree. */
+static void check_host_calls(ggxcl_sampler* sampler, cl_command_queue queue)
+{
+    ggxcl_params params = case_params(GGXCL_METHOD_BOUNDED);
+    ggxcl_range range = {CASE_SEED, CASE_FIRST, CASE_COUNT};
+    const float* expected = dump + (size_t)GGXCL_METHOD_BOUNDED * CASE_FLOATS;
+    static float o[3 * CASE_COUNT], weight[CASE_COUNT], pdf[CASE_COUNT];
+    ggxcl_host_outputs out;
+    ggxcl_furnace_sums sums;
+    ggxcl_range furnace_range = {3, 0, 1u << 16};
+    size_t items = ggxcl_furnace_items(sampler, furnace_range.count), i;
+    cl_mem partial = sentinel_buffer(ggxcl_sampler_context(sampler), queue, 2 * items + 5);
+    ggxcl_buffer partial_at = {NULL, 5};
+    float* host = malloc((2 * items + 5) * sizeof(float));
+    double total = 0.0;
+    memset(&out, 0, sizeof out);
+    out.o = o, out.weight = weight;
+    MUST(ggxcl_generate(sampler, &params, &range, GGXCL_FIELD_BIT(GGXCL_FIELD_O) | GGXCL_FIELD_BIT(GGXCL_FIELD_WEIGHT), &out));
+    CHECK(memcmp(o, expected + 3 * CASE_COUNT, sizeof o) == 0, "ggxcl_generate's o differs from enqueue's");
+    CHECK(memcmp(weight, expected + 8 * CASE_COUNT, sizeof weight) == 0, "ggxcl_generate's weight differs");
+    MUST(ggxcl_pdf(sampler, &params, CASE_COUNT, o, pdf));
+    {   /* the host pdf takes directions as vectors it normalizes: within float rounding */
+        size_t j, differ = 0;
+        for (j = 0; j < CASE_COUNT; ++j) {
+            float want = expected[11 * CASE_COUNT + j], scale = want > 1.0f ? want : 1.0f;
+            differ += !(pdf[j] - want <= 1e-5f * scale && want - pdf[j] <= 1e-5f * scale);
+        }
+        CHECK(differ == 0, "ggxcl_pdf: %zu of %u differ from enqueue_pdf's by more than 1e-5", differ, CASE_COUNT);
+    }
+
+    MUST(ggxcl_furnace(sampler, &params, &furnace_range, &sums));
+    partial_at.mem = partial;
+    MUST(ggxcl_enqueue_furnace(sampler, queue, &params, &furnace_range, partial_at, NULL, 0, NULL, NULL));
+    clEnqueueReadBuffer(queue, partial, CL_TRUE, 0, (2 * items + 5) * sizeof(float), host, 0, NULL, NULL);
+    for (i = 0; i < items; ++i)
+        total += host[5 + i];
+    CHECK(sums.count == furnace_range.count && sums.mean > 0.5 && sums.mean <= 1.0 + 1e-6,
+          "furnace: %llu samples, mean %g", (unsigned long long)sums.count, sums.mean);
+    CHECK(total / (double)furnace_range.count > sums.mean - 1e-5 && total / (double)furnace_range.count < sums.mean + 1e-5,
+          "enqueue_furnace's mean %.8f, furnace's %.8f", total / (double)furnace_range.count, sums.mean);
+    CHECK(host[0] == sentinel && host[4] == sentinel, "enqueue_furnace wrote before its offset");
+    free(host);
+    clReleaseMemObject(partial);
+}
+
+/* Expects `status` to be `expected`, with a message containing `needle`. */
+static void expect_status(ggxcl_status status, ggxcl_status expected, const char* needle, const char* what)
+{
+    CHECK(status == expected, "%s: %s, expected %s (%s)", what, ggxcl_status_string(status),
+          ggxcl_status_string(expected), ggxcl_last_error());
+    CHECK(strstr(ggxcl_last_error(), needle) != NULL, "%s: the message lacks \"%s\": %s", what, needle,
+          ggxcl_last_error());
+}
+
+/* Every status a process with a device can provoke. */
+static void check_errors(ggxcl_sampler* sampler, cl_command_queue queue, const char* user_dir)
+{
+    ggxcl_params params = case_params(GGXCL_METHOD_CAPS);
+    ggxcl_range range = {1, 0, 100000};
+    ggxcl_device_outputs out;
+    ggxcl_sampler* other = NULL;
+    ggxcl_user_sampler* broken = NULL;
+    static float o[3 * 100000];
+    ggxcl_host_outputs host;
+    char path[4096];
+    cl_mem small = sentinel_buffer(ggxcl_sampler_context(sampler), queue, 1000);
+
+    params.alpha_x = -1.0f;
+    expect_status(ggxcl_generate(sampler, &params, &range, 0, &(ggxcl_host_outputs){0}), GGXCL_INVALID_ARGUMENT,
+                  "alpha", "a negative alpha");
+    CHECK(strstr(ggxcl_last_error_parameter(), "alpha") != NULL, "the parameter of a bad alpha: %s",
+          ggxcl_last_error_parameter());
+    params = case_params((ggxcl_method)63);
+    expect_status(ggxcl_generate(sampler, &params, &range, 0, &(ggxcl_host_outputs){0}), GGXCL_INVALID_ARGUMENT,
+                  "params.method", "method 63");
+    params = case_params(GGXCL_METHOD_CAPS);
+    memset(&out, 0, sizeof out);
+    out.pdf_m.mem = small, out.pdf_m.offset = 10;
+    range.count = 995;
+    expect_status(ggxcl_enqueue(sampler, queue, &params, &range, &out, 0, NULL, 0, NULL, NULL), GGXCL_INVALID_ARGUMENT,
+                  "outputs.pdf_m", "a too-small buffer");
+    CHECK(strcmp(ggxcl_last_error_parameter(), "outputs.pdf_m") == 0, "its parameter: %s", ggxcl_last_error_parameter());
+    expect_status(ggxcl_enqueue(NULL, queue, &params, &range, &out, 0, NULL, 0, NULL, NULL), GGXCL_INVALID_ARGUMENT,
+                  "sampler", "a NULL sampler");
+    expect_status(ggxcl_sampler_create("no such device anywhere", &other), GGXCL_NO_MATCHING_DEVICE,
+                  "no such device anywhere", "an unknown device");
+    CHECK(other == NULL, "a failed create left a sampler");
+
+    snprintf(path, sizeof path, "%s/syntax_error.h", user_dir);
+    MUST(ggxcl_user_sampler_load(path, NULL, &broken));
+    params.method = GGXCL_METHOD_USER, params.user_sampler = broken;
+    range.count = 1000;
+    memset(&host, 0, sizeof host);
+    host.o = o;
+    expect_status(ggxcl_generate(sampler, &params, &range, GGXCL_FIELD_BIT(GGXCL_FIELD_O), &host), GGXCL_BUILD_ERROR,
+                  "syntax_error.h:9", "a user sampler that does not compile");
+    CHECK(strstr(ggxcl_last_build_log(), "syntax_error.h") != NULL, "the build log: %s", ggxcl_last_build_log());
+    ggxcl_user_sampler_release(broken);
+
+    /* Device memory exhausted, then a lost device (injected: docs/RELIABILITY.md). */
+    params = case_params(GGXCL_METHOD_CAPS);
+    range.count = 100000;
+    setenv("GGXCL_INJECT_FAULT", "alloc-above=64", 1);
+    expect_status(ggxcl_generate(sampler, &params, &range, GGXCL_FIELD_BIT(GGXCL_FIELD_O), &host), GGXCL_CL_ERROR,
+                  "CL_MEM_OBJECT_ALLOCATION_FAILURE", "device memory exhausted");
+    CHECK(ggxcl_last_cl_error() == CL_MEM_OBJECT_ALLOCATION_FAILURE, "its CL code: %d", ggxcl_last_cl_error());
+    MUST(ggxcl_sampler_create("", &other));
+    setenv("GGXCL_INJECT_FAULT", "lost-after=0", 1);
+    expect_status(ggxcl_generate(other, &params, &range, GGXCL_FIELD_BIT(GGXCL_FIELD_O), &host), GGXCL_DEVICE_LOST,
+                  "CL_DEVICE_NOT_AVAILABLE", "a lost device");
+    CHECK(ggxcl_last_cl_error() == CL_DEVICE_NOT_AVAILABLE, "its CL code: %d", ggxcl_last_cl_error());
+    unsetenv("GGXCL_INJECT_FAULT");
+    ggxcl_sampler_release(other);
+    clReleaseMemObject(small);
+}
+
+struct ThreadWork {
+    ggxcl_sampler* sampler;
+    cl_context context;
+    ggxcl_method method;
+};
+
+static void* thread_body(void* argument)
+{
+    struct ThreadWork* work = argument;
+    cl_int error = CL_SUCCESS;
+    cl_command_queue queue = clCreateCommandQueue(work->context, ggxcl_sampler_device(work->sampler), 0, &error);
+    int round;
+    for (round = 0; round < 3; ++round)
+        check_method(work->sampler, work->context, queue, work->method);
+    clReleaseCommandQueue(queue);
+    return NULL;
+}
+
+/* Four threads on one sampler, each with its own queue and its own method. */
+static void check_threads(void)
+{
+    struct Device d = own_context();
+    ggxcl_sampler* sampler = NULL;
+    pthread_t threads[4];
+    struct ThreadWork work[4];
+    int t;
+    MUST(ggxcl_sampler_create_with_context(d.context, d.device, &sampler));
+    for (t = 0; t < 4; ++t) {
+        work[t].sampler = sampler, work[t].context = d.context, work[t].method = (ggxcl_method)(t + 1);
+        CHECK(pthread_create(&threads[t], NULL, thread_body, &work[t]) == 0, "pthread_create");
+    }
+    for (t = 0; t < 4; ++t)
+        pthread_join(threads[t], NULL);
+    ggxcl_sampler_release(sampler);
+    clReleaseContext(d.context), clReleaseDevice(d.device);
+}
+
+static void check_bits(const char* user_dir)
+{
+    struct Device d = own_context();
+    cl_int error = CL_SUCCESS;
+    cl_command_queue queue = clCreateCommandQueue(d.context, d.device, 0, &error);
+    ggxcl_sampler* sampler = NULL;
+    int method, major = -1, minor = -1, patch = -1;
+    char options[4096];
+    size_t needed = 0;
+    const char* include_dir = NULL;
+    MUST(ggxcl_sampler_create_with_context(d.context, d.device, &sampler));
+    CHECK(ggxcl_sampler_context(sampler) == d.context, "the sampler is not on our context");
+    for (method = 0; method < GGXCL_METHOD_COUNT; ++method)
+        check_method(sampler, d.context, queue, (ggxcl_method)method);
+    check_host_calls(sampler, queue);
+    check_errors(sampler, queue, user_dir);
+
+    ggxcl_version_numbers(&major, &minor, &patch);
+    CHECK(major >= 0 && minor >= 0 && patch >= 0 && strchr(ggxcl_version(), '.'), "version %s", ggxcl_version());
+    MUST(ggxcl_device_include_dir(&include_dir));
+    MUST(ggxcl_build_options(sampler, GGXCL_PRECISION_RELAXED, options, sizeof options, &needed));
+    CHECK(strstr(options, include_dir) && strstr(options, "-cl-fast-relaxed-math") && needed == strlen(options) + 1,
+          "build options: %s", options);
+    printf("c_consumer: %d methods on %s (ggxcl %s), device headers in %s\n", GGXCL_METHOD_COUNT,
+           ggxcl_sampler_device_name(sampler), ggxcl_version(), include_dir);
+    ggxcl_sampler_release(sampler);
+    clReleaseCommandQueue(queue), clReleaseContext(d.context), clReleaseDevice(d.device);
+}
+
+int main(int argc, char** argv)
+{
+    const char* mode = argc > 1 ? argv[1] : "";
+    if (strcmp(mode, "bits") == 0 && argc == 4) {
+        read_dump(argv[2]);
+        check_bits(argv[3]);
+    } else if (strcmp(mode, "threads") == 0 && argc == 3) {
+        read_dump(argv[2]);
+        check_threads();
+    } else if (strcmp(mode, "no-device") == 0) {
+        ggxcl_sampler* sampler = NULL;
+        expect_status(ggxcl_sampler_create("", &sampler), GGXCL_DEVICE_ERROR, "OpenCL", "no OpenCL platform");
+    } else if (strcmp(mode, "no-cache") == 0) {
+        const char* dir = NULL;
+        expect_status(ggxcl_device_include_dir(&dir), GGXCL_ERROR, "cannot write the device headers",
+                      "no writable cache");
+    } else if (strcmp(mode, "out-of-memory") == 0) {
+        ggxcl_params params;
+        ggxcl_sampler* sampler = NULL;
+        float one = 0.0f;
+        ggxcl_default_params(&params);
+        MUST(ggxcl_sampler_create("", &sampler));
+        expect_status(ggxcl_pdf(sampler, &params, (size_t)1 << 46, &one, &one), GGXCL_OUT_OF_HOST_MEMORY,
+                      "out of host memory", "2^46 directions");
+        ggxcl_sampler_release(sampler);
+    } else {
+        fprintf(stderr, "usage: c_consumer bits DUMP USER_DIR | threads DUMP | no-device | no-cache | out-of-memory\n");
+        return 2;
+    }
+    if (failures)
+        fprintf(stderr, "c_consumer %s: %d check(s) failed\n", mode, failures);
+    else
+        printf("c_consumer %s: ok\n", mode);
+    return failures ? 1 : 0;
+}

@@ -1,0 +1,17 @@
+#!/bin/sh
+# run_c_api.sh - test_c_api: the C++ API's bits (cpp_dump), then the C
+# program against them (c_consumer bits, threads), and the statuses that need
+# a process of their own: no OpenCL platform (an empty OCL_ICD_VENDORS), no
+# writable cache for the device headers, host memory exhausted.
+# Usage: run_c_api.sh CPP_DUMP C_CONSUMER USER_SAMPLER_DIR WORK_DIR
+set -eu
+cpp_dump=$1 consumer=$2 user_dir=$3 work=$4
+rm -rf "$work"
+mkdir -p "$work/no-vendors"
+"$cpp_dump" "$work/cpp-dump.f32"
+"$consumer" bits "$work/cpp-dump.f32" "$user_dir"
+"$consumer" threads "$work/cpp-dump.f32"
+OCL_ICD_VENDORS="$work/no-vendors" "$consumer" no-device
+env -u GGXCL_DEVICE_INCLUDE_DIR XDG_CACHE_HOME=/dev/null/cache HOME=/dev/null TMPDIR=/dev/null "$consumer" no-cache
+ASAN_OPTIONS="${ASAN_OPTIONS:-}:allocator_may_return_null=1" "$consumer" out-of-memory
+rm -rf "$work"

@@ -1,6 +1,7 @@
 # GgxclPkgConfig.cmake - ggxcl.pc for `pkg-config --cflags --libs ggxcl`:
 # the include directory and ggxcl's public compile definitions, the library
-# with OpenCL (and, for a static libggxcl, the thread library).  The prefix
+# with OpenCL (and, for a static libggxcl, the thread library, and the C++
+# runtime as Libs.private for C programs).  The prefix
 # is found from the file's own place (${pcfiledir}), so the installed tree
 # can move; `pkg-config --variable=devicedir ggxcl` names the device headers.
 if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_INCLUDEDIR}")
@@ -34,6 +35,11 @@ endforeach()
 get_target_property(GGXCL_TYPE ggxcl TYPE)
 if(GGXCL_TYPE STREQUAL "STATIC_LIBRARY" AND CMAKE_THREAD_LIBS_INIT)
   string(APPEND GGXCL_PC_LIBS " ${CMAKE_THREAD_LIBS_INIT}")
+endif()
+# A static libggxcl is C++: a C program links it with `pkg-config --static`, which adds these.
+set(GGXCL_PC_LIBS_PRIVATE "")
+if(GGXCL_TYPE STREQUAL "STATIC_LIBRARY")
+  set(GGXCL_PC_LIBS_PRIVATE "-lstdc++ -lm")
 endif()
 
 configure_file(${CMAKE_CURRENT_LIST_DIR}/ggxcl.pc.in ${PROJECT_BINARY_DIR}/package/ggxcl.pc @ONLY)

@@ -6,16 +6,25 @@
 # `pkg-config --cflags --libs ggxcl` and against the build tree's export
 # (ggxcl_DIR = the build tree), runs both, builds examples/cpu_render (the
 # device headers as plain C++, no OpenCL) with a bare -I and through
-# find_package's device_headers component, runs it, and removes the prefix.
+# find_package's device_headers component, runs it; then C: ggxcl.h compiles
+# as C99 (-pedantic) and as C++, examples/c builds as a C-only CMake project
+# with find_package and runs, tests/c_api/c_consumer.c builds with
+# `pkg-config` as C99 and gets the C++ API's bits (CPP_DUMP writes them);
+# and removes the prefix.
 # Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, LIBDIR, INCLUDEDIR, BINDIR,
-# GENERATOR, CXX, CXX_FLAGS, LINKER_FLAGS, SAMPLES, HAS_GGX, and PYTHON with
-# PYTHON_DIR (the package's folder under the prefix) when the module is built.
+# GENERATOR, CXX, CXX_FLAGS, CC, C_FLAGS, LINKER_FLAGS, CPP_DUMP, SAMPLES,
+# HAS_GGX, and PYTHON with PYTHON_DIR (the package's folder under the prefix)
+# when the module is built.
 cmake_minimum_required(VERSION 3.20)
 set(prefix ${WORK_DIR}/prefix)
 separate_arguments(cxx_flags UNIX_COMMAND "${CXX_FLAGS}")
+separate_arguments(c_flags UNIX_COMMAND "${C_FLAGS}")
 separate_arguments(linker_flags UNIX_COMMAND "${LINKER_FLAGS}")
+# Programs built by hand find the installed shared libggxcl.
+list(APPEND linker_flags -Wl,-rpath,${prefix}/${LIBDIR})
 set(forward_flags -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX}
-    "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
+    "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" -DCMAKE_C_COMPILER=${CC} "-DCMAKE_C_FLAGS=${C_FLAGS}"
+    "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
 
 function(fail message)
   file(REMOVE_RECURSE ${WORK_DIR})
@@ -123,7 +132,31 @@ step("configure examples/cpu_render" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/
 step("build examples/cpu_render" ${CMAKE_COMMAND} --build ${WORK_DIR}/cpu-render-build)
 step("run cpu_render (find_package)" ${WORK_DIR}/cpu-render-build/cpu_render 200000)
 
-# 7. The installed Python package imports from under the prefix and samples
+# 7. C: the header as C99 and as C++, examples/c (a C-only project) through find_package, and the
+# C API's test program through pkg-config, against the C++ API's bits.
+file(WRITE ${WORK_DIR}/headers/c_header.c "#include <ggxcl/ggxcl.h>\n")
+file(WRITE ${WORK_DIR}/headers/c_header.cpp "#include <ggxcl/ggxcl.h>\n#include <ggxcl/ggxcl.hpp>\n")
+step("ggxcl.h as C99" ${CC} -std=c99 -Wall -Wextra -pedantic -Werror -fsyntax-only ${pc_flags}
+  ${WORK_DIR}/headers/c_header.c)
+step("ggxcl.h as C++" ${CXX} -std=c++17 -Wall -Wextra -pedantic -Werror -fsyntax-only ${pc_flags}
+  ${WORK_DIR}/headers/c_header.cpp)
+step("configure examples/c" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/c -B ${WORK_DIR}/c-build
+  -DCMAKE_PREFIX_PATH=${prefix} ${forward_flags})
+step("build examples/c" ${CMAKE_COMMAND} --build ${WORK_DIR}/c-build)
+step("run sample_into_buffers" ${WORK_DIR}/c-build/sample_into_buffers 65536)
+message(STATUS "${step_output}")
+if(NOT step_output MATCHES "directional albedo 0\\.82")
+  fail("sample_into_buffers: not the furnace albedo of caps at 60 degrees, alpha 0.3 (0.822) in ${step_output}")
+endif()
+step("compile c_consumer.c with pkg-config" ${CC} -std=c99 -Wall -Wextra -pedantic -Werror -O2 ${c_flags}
+  -I${SOURCE_DIR}/tests/c_api ${SOURCE_DIR}/tests/c_api/c_consumer.c ${pc_flags} ${linker_flags}
+  -o ${WORK_DIR}/c-consumer)
+step("C++ API's bits" ${CPP_DUMP} ${WORK_DIR}/cpp-dump.f32)
+step("run c_consumer (pkg-config)" ${WORK_DIR}/c-consumer bits ${WORK_DIR}/cpp-dump.f32
+  ${SOURCE_DIR}/tests/user_samplers)
+message(STATUS "${step_output}")
+
+# 8. The installed Python package imports from under the prefix and samples
 # (no semicolons in the code: step() would split it as a CMake list).
 if(PYTHON)
   step("import the installed Python package" ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c

@@ -1,9 +1,10 @@
 /* c_consumer.c - a C99 program against ggxcl's C API (ggxcl/ggxcl.h).
  *   c_consumer bits DUMP USER_DIR   its own context, queue and buffers at
  *       offsets (direct, sub-buffer, staged) get the C++ enqueue's bits of
- *       every method (DUMP, from cpp_dump) and leave the rest of each buffer
- *       untouched; the host calls agree; then every status code that one
- *       process can provoke (USER_DIR holds tests/user_samplers).
+ *       every case of c_api_cases.h (DUMP, from cpp_dump) and leave the rest
+ *       of each buffer untouched; per-sample inputs from buffers at offsets;
+ *       the host calls agree; then every status code that one process can
+ *       provoke (USER_DIR holds tests/user_samplers).
  *   c_consumer threads DUMP         four threads share one sampler, each with
  *       its own queue, and get the same bits.
  *   c_consumer no-device            (no OpenCL platform) GGXCL_DEVICE_ERROR.
@@ -47,7 +48,7 @@ static const float* dump = NULL; /* CASE_FLOATS per method */
 
 static void read_dump(const char* path)
 {
-    size_t floats = (size_t)GGXCL_METHOD_COUNT * CASE_FLOATS;
+    size_t floats = CASE_TOTAL * CASE_FLOATS;
     float* data = malloc(floats * sizeof(float));
     FILE* file = fopen(path, "rb");
     if (!data || !file || fread(data, sizeof(float), floats, file) != floats) {
@@ -58,15 +59,34 @@ static void read_dump(const char* path)
     dump = data;
 }
 
-static ggxcl_params case_params(ggxcl_method method)
+static ggxcl_user_sampler* user_sampler = NULL; /* CASE_USER_FILE */
+
+static void load_user_sampler(const char* user_dir)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", user_dir, CASE_USER_FILE);
+    MUST(ggxcl_user_sampler_load(path, NULL, &user_sampler));
+}
+
+static ggxcl_params case_params(const struct api_case* c)
 {
     ggxcl_params params;
     ggxcl_default_params(&params);
-    params.method = method;
-    params.alpha_x = case_alpha_x((int)method);
-    params.alpha_y = case_alpha_y((int)method);
+    params.method = (ggxcl_method)c->method;
+    params.alpha_x = case_alpha_x(c);
+    params.alpha_y = case_alpha_y(c);
     memcpy(params.view, case_view, sizeof case_view);
+    params.eta = c->eta;
+    params.transport = c->importance ? GGXCL_TRANSPORT_IMPORTANCE : GGXCL_TRANSPORT_RADIANCE;
+    params.user_sampler = c->method == GGX_METHOD_USER ? user_sampler : NULL;
     return params;
+}
+
+static const char* case_name(const struct api_case* c)
+{
+    if (c->eta != 0.0f)
+        return "caps as a dielectric";
+    return c->method == GGX_METHOD_USER ? ggxcl_user_sampler_name(user_sampler) : ggxcl_method_name((ggxcl_method)c->method);
 }
 
 /* A buffer of `floats` floats, every one the sentinel. */
@@ -141,20 +161,35 @@ static struct Device own_context(void)
 
 #define PLANE_FLOATS(planes) ((size_t)(planes) * CASE_STRIDE + 300u)
 
-/* One method through ggxcl_enqueue, ggxcl_enqueue_pdf and ggxcl_enqueue_eval on `queue`. */
-static void check_method(ggxcl_sampler* sampler, cl_context context, cl_command_queue queue, ggxcl_method method)
+/* pdf_o at 0 and weight at WEIGHT_OFFSET of one buffer, the floats between untouched. */
+static void expect_side_by_side(cl_command_queue queue, cl_mem shared, const float* expected, const char* name)
 {
-    const char* name = ggxcl_method_name(method);
-    const float* expected = dump + (size_t)method * CASE_FLOATS;
-    ggxcl_params params = case_params(method);
+    float host[4000];
+    size_t j, differ = 0;
+    clEnqueueReadBuffer(queue, shared, CL_TRUE, 0, sizeof host, host, 0, NULL, NULL);
+    for (j = 0; j < CASE_COUNT; ++j)
+        differ += memcmp(&host[j], &expected[PLANE_PDF_O * CASE_COUNT + j], sizeof(float)) != 0 ||
+                  memcmp(&host[WEIGHT_OFFSET + j], &expected[PLANE_WEIGHT * CASE_COUNT + j], sizeof(float)) != 0 ||
+                  host[CASE_COUNT + j] != sentinel;
+    CHECK(differ == 0, "%s pdf_o and weight in one buffer: %zu samples differ", name, differ);
+}
+
+/* One case through ggxcl_enqueue, ggxcl_enqueue_pdf and ggxcl_enqueue_eval on `queue`. */
+static void check_case(ggxcl_sampler* sampler, cl_context context, cl_command_queue queue, size_t index)
+{
+    const struct api_case* c = &api_cases[index];
+    const char* name = case_name(c);
+    const float* expected = dump + index * CASE_FLOATS;
+    const int u_planes = c->eta != 0.0f ? 3 : 2;
+    ggxcl_params params = case_params(c);
     ggxcl_range range = {CASE_SEED, CASE_FIRST, CASE_COUNT};
     ggxcl_device_outputs out;
     cl_mem m = sentinel_buffer(context, queue, PLANE_FLOATS(3)), o = sentinel_buffer(context, queue, PLANE_FLOATS(3) + o_offset);
     cl_mem pdf_m = sentinel_buffer(context, queue, PLANE_FLOATS(1)), shared = sentinel_buffer(context, queue, 4000);
-    cl_mem u = sentinel_buffer(context, queue, PLANE_FLOATS(2)), pdf = sentinel_buffer(context, queue, PLANE_FLOATS(1));
+    cl_mem u = sentinel_buffer(context, queue, PLANE_FLOATS(3)), pdf = sentinel_buffer(context, queue, PLANE_FLOATS(1));
     cl_mem value = sentinel_buffer(context, queue, PLANE_FLOATS(1));
     cl_event sampled = NULL, evaluated[2] = {NULL, NULL};
-    ggxcl_buffer directions, pdfs, values;
+    ggxcl_buffer pdfs, values;
     memset(&out, 0, sizeof out);
     out.m.mem = m;
     out.o.mem = o, out.o.offset = o_offset;
@@ -163,41 +198,75 @@ static void check_method(ggxcl_sampler* sampler, cl_context context, cl_command_
     out.weight.mem = shared, out.weight.offset = WEIGHT_OFFSET;
     out.u.mem = u;
     MUST(ggxcl_enqueue(sampler, queue, &params, &range, &out, CASE_STRIDE, NULL, 0, NULL, &sampled));
-    directions = out.o;
     pdfs.mem = pdf, pdfs.offset = PDF_OFFSET;
     values.mem = value, values.offset = 0;
-    MUST(ggxcl_enqueue_pdf(sampler, queue, &params, CASE_COUNT, directions, pdfs, CASE_STRIDE, NULL, 1, &sampled,
+    MUST(ggxcl_enqueue_pdf(sampler, queue, &params, CASE_COUNT, out.o, pdfs, CASE_STRIDE, NULL, 1, &sampled,
                            &evaluated[0]));
-    MUST(ggxcl_enqueue_eval(sampler, queue, &params, CASE_COUNT, directions, values, CASE_STRIDE, NULL, 1, &sampled,
+    MUST(ggxcl_enqueue_eval(sampler, queue, &params, CASE_COUNT, out.o, values, CASE_STRIDE, NULL, 1, &sampled,
                             &evaluated[1]));
     CHECK(clWaitForEvents(2, evaluated) == CL_SUCCESS, "%s: the events did not complete", name);
-    expect_planes(queue, m, PLANE_FLOATS(3), 0, 3, expected, "m", name);
-    expect_planes(queue, o, PLANE_FLOATS(3) + o_offset, o_offset, 3, expected + 3 * CASE_COUNT, "o", name);
-    expect_planes(queue, pdf_m, PLANE_FLOATS(1), PDF_M_OFFSET, 1, expected + 6 * CASE_COUNT, "pdf_m", name);
-    expect_planes(queue, u, PLANE_FLOATS(2), 0, 2, expected + 9 * CASE_COUNT, "u", name);
-    expect_planes(queue, pdf, PLANE_FLOATS(1), PDF_OFFSET, 1, expected + 11 * CASE_COUNT, "pdf", name);
-    expect_planes(queue, value, PLANE_FLOATS(1), 0, 1, expected + 12 * CASE_COUNT, "eval", name);
-    {   /* pdf_o and weight side by side in one buffer */
-        float host[4000];
-        size_t j, differ = 0;
-        clEnqueueReadBuffer(queue, shared, CL_TRUE, 0, sizeof host, host, 0, NULL, NULL);
-        for (j = 0; j < CASE_COUNT; ++j)
-            differ += memcmp(&host[j], &expected[7 * CASE_COUNT + j], sizeof(float)) != 0 ||
-                      memcmp(&host[WEIGHT_OFFSET + j], &expected[8 * CASE_COUNT + j], sizeof(float)) != 0 ||
-                      host[CASE_COUNT + j] != sentinel;
-        CHECK(differ == 0, "%s pdf_o and weight in one buffer: %zu samples differ", name, differ);
-    }
+    expect_planes(queue, m, PLANE_FLOATS(3), 0, 3, expected + PLANE_M * CASE_COUNT, "m", name);
+    expect_planes(queue, o, PLANE_FLOATS(3) + o_offset, o_offset, 3, expected + PLANE_O * CASE_COUNT, "o", name);
+    expect_planes(queue, pdf_m, PLANE_FLOATS(1), PDF_M_OFFSET, 1, expected + PLANE_PDF_M * CASE_COUNT, "pdf_m", name);
+    expect_planes(queue, u, PLANE_FLOATS(3), 0, u_planes, expected + PLANE_U * CASE_COUNT, "u", name);
+    expect_planes(queue, pdf, PLANE_FLOATS(1), PDF_OFFSET, 1, expected + PLANE_PDF * CASE_COUNT, "pdf", name);
+    expect_planes(queue, value, PLANE_FLOATS(1), 0, 1, expected + PLANE_EVAL * CASE_COUNT, "eval", name);
+    expect_side_by_side(queue, shared, expected, name);
     clReleaseEvent(sampled), clReleaseEvent(evaluated[0]), clReleaseEvent(evaluated[1]);
     clReleaseMemObject(m), clReleaseMemObject(o), clReleaseMemObject(pdf_m), clReleaseMemObject(shared);
     clReleaseMemObject(u), clReleaseMemObject(pdf), clReleaseMemObject(value);
 }
 
+/* Per-sample views (at offset 5: staged) and alphas (at the aligned offset: a sub-buffer),
+ * every one the case's own: the samples agree with the uniform request's within float
+ * rounding (the host normalizes a uniform view in double; the kernel takes these as they are). */
+static void check_per_sample_inputs(ggxcl_sampler* sampler, cl_context context, cl_command_queue queue)
+{
+    const size_t index = 3; /* caps */
+    const float* expected = dump + index * CASE_FLOATS + PLANE_O * CASE_COUNT;
+    ggxcl_params params = case_params(&api_cases[index]);
+    ggxcl_range range = {CASE_SEED, CASE_FIRST, CASE_COUNT};
+    float* views = calloc(5 + 3 * CASE_STRIDE, sizeof(float));
+    float* alphas = calloc(o_offset + 2 * CASE_STRIDE, sizeof(float));
+    float o_host[3 * CASE_STRIDE];
+    size_t j, plane, differ = 0;
+    ggxcl_device_inputs in;
+    ggxcl_device_outputs out;
+    cl_int error = CL_SUCCESS;
+    cl_mem view_mem, alpha_mem, o = sentinel_buffer(context, queue, 3 * CASE_STRIDE);
+    for (plane = 0; plane < 3; ++plane)
+        for (j = 0; j < CASE_STRIDE; ++j)
+            views[5 + plane * CASE_STRIDE + j] = case_view[plane];
+    for (j = 0; j < CASE_STRIDE; ++j)
+        alphas[o_offset + j] = params.alpha_x, alphas[o_offset + CASE_STRIDE + j] = params.alpha_y;
+    view_mem = clCreateBuffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, (5 + 3 * CASE_STRIDE) * sizeof(float),
+                              views, &error);
+    alpha_mem = clCreateBuffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                               (o_offset + 2 * CASE_STRIDE) * sizeof(float), alphas, &error);
+    memset(&in, 0, sizeof in);
+    memset(&out, 0, sizeof out);
+    in.view.mem = view_mem, in.view.offset = 5;
+    in.alpha.mem = alpha_mem, in.alpha.offset = o_offset;
+    out.o.mem = o;
+    MUST(ggxcl_enqueue(sampler, queue, &params, &range, &out, CASE_STRIDE, &in, 0, NULL, NULL));
+    clEnqueueReadBuffer(queue, o, CL_TRUE, 0, sizeof o_host, o_host, 0, NULL, NULL);
+    for (plane = 0; plane < 3; ++plane)
+        for (j = 0; j < CASE_COUNT; ++j) {
+            float got = o_host[plane * CASE_STRIDE + j], want = expected[plane * CASE_COUNT + j];
+            differ += !(got - want <= 1e-4f && want - got <= 1e-4f);
+        }
+    CHECK(differ == 0, "per-sample inputs: %zu of %u components differ by more than 1e-4", differ, 3 * CASE_COUNT);
+    free(views), free(alphas);
+    clReleaseMemObject(view_mem), clReleaseMemObject(alpha_mem), clReleaseMemObject(o);
+}
+
 /* The host calls: ggxcl_generate gives the enqueue's bits, the furnace's two forms agree. */
 static void check_host_calls(ggxcl_sampler* sampler, cl_command_queue queue)
 {
-    ggxcl_params params = case_params(GGXCL_METHOD_BOUNDED);
+    const size_t index = 5; /* bounded */
+    ggxcl_params params = case_params(&api_cases[index]);
     ggxcl_range range = {CASE_SEED, CASE_FIRST, CASE_COUNT};
-    const float* expected = dump + (size_t)GGXCL_METHOD_BOUNDED * CASE_FLOATS;
+    const float* expected = dump + index * CASE_FLOATS;
     static float o[3 * CASE_COUNT], weight[CASE_COUNT], pdf[CASE_COUNT];
     ggxcl_host_outputs out;
     ggxcl_furnace_sums sums;
@@ -210,13 +279,13 @@ static void check_host_calls(ggxcl_sampler* sampler, cl_command_queue queue)
     memset(&out, 0, sizeof out);
     out.o = o, out.weight = weight;
     MUST(ggxcl_generate(sampler, &params, &range, GGXCL_FIELD_BIT(GGXCL_FIELD_O) | GGXCL_FIELD_BIT(GGXCL_FIELD_WEIGHT), &out));
-    CHECK(memcmp(o, expected + 3 * CASE_COUNT, sizeof o) == 0, "ggxcl_generate's o differs from enqueue's");
-    CHECK(memcmp(weight, expected + 8 * CASE_COUNT, sizeof weight) == 0, "ggxcl_generate's weight differs");
+    CHECK(memcmp(o, expected + PLANE_O * CASE_COUNT, sizeof o) == 0, "ggxcl_generate's o differs from enqueue's");
+    CHECK(memcmp(weight, expected + PLANE_WEIGHT * CASE_COUNT, sizeof weight) == 0, "ggxcl_generate's weight differs");
     MUST(ggxcl_pdf(sampler, &params, CASE_COUNT, o, pdf));
     {   /* the host pdf takes directions as vectors it normalizes: within float rounding */
         size_t j, differ = 0;
         for (j = 0; j < CASE_COUNT; ++j) {
-            float want = expected[11 * CASE_COUNT + j], scale = want > 1.0f ? want : 1.0f;
+            float want = expected[PLANE_PDF * CASE_COUNT + j], scale = want > 1.0f ? want : 1.0f;
             differ += !(pdf[j] - want <= 1e-5f * scale && want - pdf[j] <= 1e-5f * scale);
         }
         CHECK(differ == 0, "ggxcl_pdf: %zu of %u differ from enqueue_pdf's by more than 1e-5", differ, CASE_COUNT);
@@ -249,7 +318,8 @@ static void expect_status(ggxcl_status status, ggxcl_status expected, const char
 /* Every status a process with a device can provoke. */
 static void check_errors(ggxcl_sampler* sampler, cl_command_queue queue, const char* user_dir)
 {
-    ggxcl_params params = case_params(GGXCL_METHOD_CAPS);
+    const struct api_case caps = {GGX_METHOD_CAPS, 0.0f, 0}, unknown = {63, 0.0f, 0};
+    ggxcl_params params = case_params(&caps);
     ggxcl_range range = {1, 0, 100000};
     ggxcl_device_outputs out;
     ggxcl_sampler* other = NULL;
@@ -264,10 +334,10 @@ static void check_errors(ggxcl_sampler* sampler, cl_command_queue queue, const c
                   "alpha", "a negative alpha");
     CHECK(strstr(ggxcl_last_error_parameter(), "alpha") != NULL, "the parameter of a bad alpha: %s",
           ggxcl_last_error_parameter());
-    params = case_params((ggxcl_method)63);
+    params = case_params(&unknown);
     expect_status(ggxcl_generate(sampler, &params, &range, 0, &(ggxcl_host_outputs){0}), GGXCL_INVALID_ARGUMENT,
                   "params.method", "method 63");
-    params = case_params(GGXCL_METHOD_CAPS);
+    params = case_params(&caps);
     memset(&out, 0, sizeof out);
     out.pdf_m.mem = small, out.pdf_m.offset = 10;
     range.count = 995;
@@ -292,7 +362,7 @@ static void check_errors(ggxcl_sampler* sampler, cl_command_queue queue, const c
     ggxcl_user_sampler_release(broken);
 
     /* Device memory exhausted, then a lost device (injected: docs/RELIABILITY.md). */
-    params = case_params(GGXCL_METHOD_CAPS);
+    params = case_params(&caps);
     range.count = 100000;
     setenv("GGXCL_INJECT_FAULT", "alloc-above=64", 1);
     expect_status(ggxcl_generate(sampler, &params, &range, GGXCL_FIELD_BIT(GGXCL_FIELD_O), &host), GGXCL_CL_ERROR,
@@ -311,7 +381,7 @@ static void check_errors(ggxcl_sampler* sampler, cl_command_queue queue, const c
 struct ThreadWork {
     ggxcl_sampler* sampler;
     cl_context context;
-    ggxcl_method method;
+    size_t case_index;
 };
 
 static void* thread_body(void* argument)
@@ -321,7 +391,7 @@ static void* thread_body(void* argument)
     cl_command_queue queue = clCreateCommandQueue(work->context, ggxcl_sampler_device(work->sampler), 0, &error);
     int round;
     for (round = 0; round < 3; ++round)
-        check_method(work->sampler, work->context, queue, work->method);
+        check_case(work->sampler, work->context, queue, work->case_index);
     clReleaseCommandQueue(queue);
     return NULL;
 }
@@ -336,7 +406,7 @@ static void check_threads(void)
     int t;
     MUST(ggxcl_sampler_create_with_context(d.context, d.device, &sampler));
     for (t = 0; t < 4; ++t) {
-        work[t].sampler = sampler, work[t].context = d.context, work[t].method = (ggxcl_method)(t + 1);
+        work[t].sampler = sampler, work[t].context = d.context, work[t].case_index = (size_t)t + 3; /* caps, caps-iso, bounded, the dielectric */
         CHECK(pthread_create(&threads[t], NULL, thread_body, &work[t]) == 0, "pthread_create");
     }
     for (t = 0; t < 4; ++t)
@@ -351,14 +421,16 @@ static void check_bits(const char* user_dir)
     cl_int error = CL_SUCCESS;
     cl_command_queue queue = clCreateCommandQueue(d.context, d.device, 0, &error);
     ggxcl_sampler* sampler = NULL;
-    int method, major = -1, minor = -1, patch = -1;
+    size_t index;
+    int major = -1, minor = -1, patch = -1;
     char options[4096];
     size_t needed = 0;
     const char* include_dir = NULL;
     MUST(ggxcl_sampler_create_with_context(d.context, d.device, &sampler));
     CHECK(ggxcl_sampler_context(sampler) == d.context, "the sampler is not on our context");
-    for (method = 0; method < GGXCL_METHOD_COUNT; ++method)
-        check_method(sampler, d.context, queue, (ggxcl_method)method);
+    for (index = 0; index < CASE_TOTAL; ++index)
+        check_case(sampler, d.context, queue, index);
+    check_per_sample_inputs(sampler, d.context, queue);
     check_host_calls(sampler, queue);
     check_errors(sampler, queue, user_dir);
 
@@ -368,7 +440,7 @@ static void check_bits(const char* user_dir)
     MUST(ggxcl_build_options(sampler, GGXCL_PRECISION_RELAXED, options, sizeof options, &needed));
     CHECK(strstr(options, include_dir) && strstr(options, "-cl-fast-relaxed-math") && needed == strlen(options) + 1,
           "build options: %s", options);
-    printf("c_consumer: %d methods on %s (ggxcl %s), device headers in %s\n", GGXCL_METHOD_COUNT,
+    printf("c_consumer: %u cases on %s (ggxcl %s), device headers in %s\n", (unsigned)CASE_TOTAL,
            ggxcl_sampler_device_name(sampler), ggxcl_version(), include_dir);
     ggxcl_sampler_release(sampler);
     clReleaseCommandQueue(queue), clReleaseContext(d.context), clReleaseDevice(d.device);
@@ -379,7 +451,9 @@ int main(int argc, char** argv)
     const char* mode = argc > 1 ? argv[1] : "";
     if (strcmp(mode, "bits") == 0 && argc == 4) {
         read_dump(argv[2]);
+        load_user_sampler(argv[3]);
         check_bits(argv[3]);
+        ggxcl_user_sampler_release(user_sampler);
     } else if (strcmp(mode, "threads") == 0 && argc == 3) {
         read_dump(argv[2]);
         check_threads();

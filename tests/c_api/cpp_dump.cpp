@@ -1,8 +1,9 @@
 // cpp_dump.cpp - what the C++ API's enqueue gives for the requests of
-// c_api_cases.h: every method's six fields, then enqueue_pdf and
-// enqueue_eval of the sampled o, written as raw floats to the file named
-// by argv[1] (CASE_FLOATS per method, in id order) for c_consumer.c.
+// c_api_cases.h: each case's six fields, then enqueue_pdf and enqueue_eval
+// of the sampled o, written as raw floats (CASE_FLOATS per case, in order)
+// to the file argv[1] for c_consumer.c; argv[2] holds tests/user_samplers.
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "ggxcl/ggxcl.hpp"
@@ -18,35 +19,45 @@ std::vector<float> read(cl::CommandQueue& queue, const cl::Buffer& buffer, std::
     return host;
 }
 
-// One method's floats: each field's planes packed CASE_COUNT apart.
-std::vector<float> dump_method(ggxcl::Sampler& sampler, ggxcl::Method method)
+ggxcl::SampleParams case_params(const api_case& c, const std::string& user_dir)
 {
-    const int id = static_cast<int>(method);
     ggxcl::SampleParams params;
-    params.method = method;
-    params.alpha_x = case_alpha_x(id);
-    params.alpha_y = case_alpha_y(id);
+    params.method = static_cast<ggxcl::Method>(c.method);
+    params.alpha_x = case_alpha_x(&c);
+    params.alpha_y = case_alpha_y(&c);
     params.view = {case_view[0], case_view[1], case_view[2]};
+    params.eta = c.eta;
+    params.transport = c.importance ? ggxcl::Transport::importance : ggxcl::Transport::radiance;
+    if (c.method == GGX_METHOD_USER)
+        params.user_sampler = ggxcl::UserSampler::load(user_dir + "/" + CASE_USER_FILE);
+    return params;
+}
+
+// One case's floats: each field's planes packed CASE_COUNT apart (u padded to 3 planes).
+std::vector<float> dump_case(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params)
+{
     cl::CommandQueue& queue = sampler.queue();
     ggxcl::DeviceOutputs out;
     for (ggxcl::Field field : ggxcl::all_fields)
-        out.of(field) = cl::Buffer(sampler.context(), CL_MEM_READ_WRITE,
-                                   sizeof(float) * 3 * CASE_STRIDE);
+        out.of(field) = cl::Buffer(sampler.context(), CL_MEM_READ_WRITE, sizeof(float) * 3 * CASE_STRIDE);
     sampler.enqueue(queue, params, {CASE_SEED, CASE_FIRST, CASE_COUNT}, out, CASE_STRIDE);
     cl::Buffer pdf(sampler.context(), CL_MEM_READ_WRITE, sizeof(float) * CASE_STRIDE);
     cl::Buffer value(sampler.context(), CL_MEM_READ_WRITE, sizeof(float) * CASE_STRIDE);
     sampler.enqueue_pdf(queue, params, CASE_COUNT, out.o, pdf, CASE_STRIDE);
     sampler.enqueue_eval(queue, params, CASE_COUNT, out.o, value, CASE_STRIDE);
     std::vector<float> floats;
-    auto add = [&](const cl::Buffer& buffer, int planes) {
+    auto add = [&](const cl::Buffer& buffer, int planes, int padded) {
         const std::vector<float> host = read(queue, buffer, static_cast<std::size_t>(planes) * CASE_STRIDE);
         for (int c = 0; c < planes; ++c)
             floats.insert(floats.end(), host.begin() + c * CASE_STRIDE, host.begin() + c * CASE_STRIDE + CASE_COUNT);
+        floats.resize(floats.size() + static_cast<std::size_t>(padded - planes) * CASE_COUNT, 0.0f);
     };
-    for (ggxcl::Field field : ggxcl::all_fields)
-        add(out.of(field), ggxcl::field_columns(field));
-    add(pdf, 1);
-    add(value, 1);
+    for (ggxcl::Field field : ggxcl::all_fields) {
+        const int planes = ggxcl::field_columns(field, params.eta != 0.0f);
+        add(out.of(field), planes, field == ggxcl::Field::u ? 3 : planes);
+    }
+    add(pdf, 1, 1);
+    add(value, 1, 1);
     return floats;
 }
 
@@ -54,19 +65,19 @@ std::vector<float> dump_method(ggxcl::Sampler& sampler, ggxcl::Method method)
 
 int main(int argc, char** argv)
 {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: cpp_dump OUT.f32\n");
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: cpp_dump OUT.f32 USER_SAMPLER_DIR\n");
         return 2;
     }
     ggxcl::Sampler sampler;
     std::FILE* file = std::fopen(argv[1], "wb");
     if (!file)
         return 1;
-    for (ggxcl::Method method : ggxcl::all_methods) {
-        const std::vector<float> floats = dump_method(sampler, method);
+    for (const api_case& c : api_cases) {
+        const std::vector<float> floats = dump_case(sampler, case_params(c, argv[2]));
         if (floats.size() != CASE_FLOATS || std::fwrite(floats.data(), sizeof(float), floats.size(), file) != floats.size())
             return 1;
     }
-    std::printf("cpp_dump: %zu methods on %s\n", ggxcl::all_methods.size(), sampler.device_name().c_str());
+    std::printf("cpp_dump: %zu cases on %s\n", CASE_TOTAL, sampler.device_name().c_str());
     return std::fclose(file) == 0 ? 0 : 1;
 }

@@ -8,7 +8,7 @@ set -eu
 cpp_dump=$1 consumer=$2 user_dir=$3 work=$4
 rm -rf "$work"
 mkdir -p "$work/no-vendors"
-"$cpp_dump" "$work/cpp-dump.f32"
+"$cpp_dump" "$work/cpp-dump.f32" "$user_dir"
 "$consumer" bits "$work/cpp-dump.f32" "$user_dir"
 "$consumer" threads "$work/cpp-dump.f32"
 OCL_ICD_VENDORS="$work/no-vendors" "$consumer" no-device

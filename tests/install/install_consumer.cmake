@@ -151,7 +151,7 @@ endif()
 step("compile c_consumer.c with pkg-config" ${CC} -std=c99 -Wall -Wextra -pedantic -Werror -O2 ${c_flags}
   -I${SOURCE_DIR}/tests/c_api ${SOURCE_DIR}/tests/c_api/c_consumer.c ${pc_flags} ${linker_flags}
   -o ${WORK_DIR}/c-consumer)
-step("C++ API's bits" ${CPP_DUMP} ${WORK_DIR}/cpp-dump.f32)
+step("C++ API's bits" ${CPP_DUMP} ${WORK_DIR}/cpp-dump.f32 ${SOURCE_DIR}/tests/user_samplers)
 step("run c_consumer (pkg-config)" ${WORK_DIR}/c-consumer bits ${WORK_DIR}/cpp-dump.f32
   ${SOURCE_DIR}/tests/user_samplers)
 message(STATUS "${step_output}")

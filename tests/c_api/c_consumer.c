@@ -465,6 +465,12 @@ int main(int argc, char** argv)
         expect_status(ggxcl_device_include_dir(&dir), GGXCL_ERROR, "cannot write the device headers",
                       "no writable cache");
     } else if (strcmp(mode, "out-of-memory") == 0) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+        /* The sanitizers' allocators end the process when operator new fails instead of
+         * throwing: this status is provoked by the plain build's run. */
+        printf("c_consumer out-of-memory: not under a sanitizer (its new aborts instead of throwing)\n");
+        return 0;
+#else
         ggxcl_params params;
         ggxcl_sampler* sampler = NULL;
         float one = 0.0f;
@@ -473,6 +479,7 @@ int main(int argc, char** argv)
         expect_status(ggxcl_pdf(sampler, &params, (size_t)1 << 46, &one, &one), GGXCL_OUT_OF_HOST_MEMORY,
                       "out of host memory", "2^46 directions");
         ggxcl_sampler_release(sampler);
+#endif
     } else {
         fprintf(stderr, "usage: c_consumer bits DUMP USER_DIR | threads DUMP | no-device | no-cache | out-of-memory\n");
         return 2;

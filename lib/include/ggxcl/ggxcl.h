@@ -17,8 +17,9 @@
  *
  * Handles may be shared by threads: every call on a sampler may run in
  * several threads at once (give each thread its own queue for parallel
- * launches).  A call that fails returns a status below zero and leaves its
- * outputs unwritten; ggxcl_last_error() then says why.  docs/PIPELINES.md. */
+ * launches).  A call that fails returns a status below zero and
+ * ggxcl_last_error() says why; what it had written by then (whole chunks of
+ * ggxcl_generate before a device failed) stays.  docs/PIPELINES.md. */
 #ifndef GGXCL_H
 #define GGXCL_H
 

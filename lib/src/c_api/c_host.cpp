@@ -158,11 +158,8 @@ ggxcl_status ggxcl_build_options(const ggxcl_sampler* sampler, ggxcl_precision p
 {
     return guarded([&] {
         const ggxcl::Sampler& s = require(sampler, "sampler").sampler;
-        ggxcl_params p;
-        ggxcl_default_params(&p);
-        p.precision = precision;
         const std::string text = ggxcl::device_include_option() + ggxcl::device_options(s.device()) +
-                                 ggxcl::precision_options(s.device(), to_params(&p).precision);
+                                 ggxcl::precision_options(s.device(), to_precision(precision, "precision"));
         if (needed)
             *needed = text.size() + 1;
         if (!options)

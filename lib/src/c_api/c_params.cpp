@@ -60,7 +60,7 @@ SampleParams to_params(const ggxcl_params* c)
     p.alpha_y = in.alpha_y;
     p.view = to_vec3(in.view);
     p.normal = to_vec3(in.normal);
-    p.precision = to_enum(in.precision, all_precisions, "params.precision", "precise, relaxed");
+    p.precision = to_precision(in.precision, "params.precision");
     p.sequence = to_enum(in.sequence, all_sequences, "params.sequence", "philox, sobol");
     p.world_space = in.world_space != 0;
     p.eta = in.eta;
@@ -68,6 +68,11 @@ SampleParams to_params(const ggxcl_params* c)
     if (in.user_sampler)
         p.user_sampler = in.user_sampler->sampler;
     return p;
+}
+
+Precision to_precision(int id, const char* parameter)
+{
+    return to_enum(id, all_precisions, parameter, precision_list());
 }
 
 SampleRange to_range(const ggxcl_range* c)

@@ -20,19 +20,6 @@ using ggxcl::Field;
 
 namespace {
 
-float* host_output(const ggxcl_host_outputs& outputs, Field field)
-{
-    switch (field) {
-    case Field::m: return outputs.m;
-    case Field::o: return outputs.o;
-    case Field::pdf_m: return outputs.pdf_m;
-    case Field::pdf_o: return outputs.pdf_o;
-    case Field::weight: return outputs.weight;
-    case Field::u: break;
-    }
-    return outputs.u;
-}
-
 std::vector<ggxcl::Vec3> planar_directions(std::size_t count, const float* directions)
 {
     if (count > 0)
@@ -103,14 +90,14 @@ ggxcl_status ggxcl_generate(ggxcl_sampler* sampler, const ggxcl_params* params, 
         const ggxcl_host_outputs& out = require(outputs, "outputs");
         for (Field field : ggxcl::all_fields)
             if (wanted.has(field))
-                non_null(host_output(out, field), ("outputs." + std::string(ggxcl::field_name(field))).c_str());
+                non_null(output_of(out, field), ("outputs." + std::string(ggxcl::field_name(field))).c_str());
         // Each chunk's planes straight into the caller's arrays (planes range.count apart).
         s.generate_chunk_views(p, r, wanted, [&](const ggxcl::SampleView& chunk, std::uint64_t offset) {
             for (Field field : ggxcl::all_fields) {
                 if (!wanted.has(field))
                     continue;
                 const float* from = chunk.column_source(field);
-                float* to = host_output(out, field);
+                float* to = output_of(out, field);
                 for (int c = 0; c < ggxcl::field_columns(field, p.eta != 0.0f); ++c)
                     std::memcpy(to + c * r.count + offset, from + c * chunk.stride, chunk.count * sizeof(float));
             }

@@ -30,19 +30,6 @@ DeviceInputs place_inputs(PlacedBuffers& placed, const ggxcl_device_inputs* inpu
     return in;
 }
 
-const ggxcl_buffer& output_of(const ggxcl_device_outputs& outputs, Field field)
-{
-    switch (field) {
-    case Field::m: return outputs.m;
-    case Field::o: return outputs.o;
-    case Field::pdf_m: return outputs.pdf_m;
-    case Field::pdf_o: return outputs.pdf_o;
-    case Field::weight: return outputs.weight;
-    case Field::u: break;
-    }
-    return outputs.u;
-}
-
 // Runs `launch(queue, kernel_wait)` between the input copies and the output copies of `placed`.
 template <class Launch>
 void enqueue_placed(cl_command_queue queue, PlacedBuffers& placed, cl_uint wait_count, const cl_event* wait,

@@ -8,8 +8,9 @@
 # device headers as plain C++, no OpenCL) with a bare -I and through
 # find_package's device_headers component, runs it; then C: ggxcl.h compiles
 # as C99 (-pedantic) and as C++, examples/c builds as a C-only CMake project
-# with find_package and runs, tests/c_api/c_consumer.c builds with
-# `pkg-config` as C99 and gets the C++ API's bits (CPP_DUMP writes them);
+# with find_package and runs, tests/c_api/c_consumer.c builds as C99 with
+# `pkg-config` and as a C-only CMake project with find_package, and gets the
+# C++ API's bits (CPP_DUMP writes them) both ways;
 # and removes the prefix.
 # Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, LIBDIR, INCLUDEDIR, BINDIR,
 # GENERATOR, CXX, CXX_FLAGS, CC, C_FLAGS, LINKER_FLAGS, CPP_DUMP, SAMPLES,
@@ -155,6 +156,11 @@ step("C++ API's bits" ${CPP_DUMP} ${WORK_DIR}/cpp-dump.f32 ${SOURCE_DIR}/tests/u
 step("run c_consumer (pkg-config)" ${WORK_DIR}/c-consumer bits ${WORK_DIR}/cpp-dump.f32
   ${SOURCE_DIR}/tests/user_samplers)
 message(STATUS "${step_output}")
+step("configure c_consumer (C-only, find_package)" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/c_api/installed
+  -B ${WORK_DIR}/c-consumer-build -DCMAKE_PREFIX_PATH=${prefix} ${forward_flags})
+step("build c_consumer (find_package)" ${CMAKE_COMMAND} --build ${WORK_DIR}/c-consumer-build)
+step("run c_consumer (find_package)" ${WORK_DIR}/c-consumer-build/c_consumer bits ${WORK_DIR}/cpp-dump.f32
+  ${SOURCE_DIR}/tests/user_samplers)
 
 # 8. The installed Python package imports from under the prefix and samples
 # (no semicolons in the code: step() would split it as a CMake list).

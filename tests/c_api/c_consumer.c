@@ -52,7 +52,7 @@ static void read_dump(const char* path)
     float* data = malloc(floats * sizeof(float));
     FILE* file = fopen(path, "rb");
     if (!data || !file || fread(data, sizeof(float), floats, file) != floats) {
-        fprintf(stderr, "cannot read %s floats from %s\n", "all", path);
+        fprintf(stderr, "cannot read %zu floats from %s\n", floats, path);
         exit(1);
     }
     fclose(file);

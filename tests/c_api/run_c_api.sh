@@ -3,10 +3,14 @@
 # program against them (c_consumer bits, threads), and the statuses that need
 # a process of their own: no OpenCL platform (an empty OCL_ICD_VENDORS), no
 # writable cache for the device headers, host memory exhausted.
-# Usage: run_c_api.sh CPP_DUMP C_CONSUMER USER_SAMPLER_DIR WORK_DIR
+# Usage: run_c_api.sh CPP_DUMP C_CONSUMER USER_SAMPLER_DIR WORK_PARENT
+# (each run works in a folder of its own under WORK_PARENT: test.sh runs the
+# suite on two devices at once in one build tree).
 set -eu
-cpp_dump=$1 consumer=$2 user_dir=$3 work=$4
-rm -rf "$work"
+cpp_dump=$1 consumer=$2 user_dir=$3
+mkdir -p "$4"
+work=$(mktemp -d "$4/run.XXXXXX")
+trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/no-vendors"
 "$cpp_dump" "$work/cpp-dump.f32" "$user_dir"
 "$consumer" bits "$work/cpp-dump.f32" "$user_dir"
@@ -14,4 +18,3 @@ mkdir -p "$work/no-vendors"
 OCL_ICD_VENDORS="$work/no-vendors" "$consumer" no-device
 env -u GGXCL_DEVICE_INCLUDE_DIR XDG_CACHE_HOME=/dev/null/cache HOME=/dev/null TMPDIR=/dev/null "$consumer" no-cache
 "$consumer" out-of-memory
-rm -rf "$work"

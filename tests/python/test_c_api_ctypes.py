@@ -1,7 +1,7 @@
 """test_c_api_ctypes.py - ggxcl's C API (ggxcl/ggxcl.h) from Python's ctypes,
 as any language with a C FFI reaches it: ggxcl_generate gives the bits the
-Python module's sample() gives, and a bad alpha comes back as
-GGXCL_INVALID_ARGUMENT with its message and parameter.  The library is the
+Python module's sample() gives, and a bad alpha or an unknown sequence
+comes back as GGXCL_INVALID_ARGUMENT with its message and parameter.  The library is the
 one GGXCL_C_LIBRARY names (CTest: the build tree's libggxcl.so)."""
 import ctypes
 import os
@@ -94,3 +94,13 @@ def test_bad_alpha_is_a_status_with_its_message(lib, c_sampler):
                                 ctypes.byref(HostOutputs()))
     assert status == GGXCL_INVALID_ARGUMENT
     assert b"alpha" in lib.ggxcl_last_error_parameter() and b"-0.5" in lib.ggxcl_last_error()
+
+
+def test_unknown_sequence_names_the_sequences(lib, c_sampler):
+    params = params_of(lib, "caps", (0.3, 0.3), (0.0, 0.0, 1.0))
+    params.sequence = 7
+    status = lib.ggxcl_generate(c_sampler, ctypes.byref(params), ctypes.byref(Range(1, 0, 10)), 0,
+                                ctypes.byref(HostOutputs()))
+    assert status == GGXCL_INVALID_ARGUMENT
+    assert lib.ggxcl_last_error_parameter() == b"params.sequence"
+    assert b"philox, sobol" in lib.ggxcl_last_error()

@@ -8,39 +8,41 @@
 
 namespace ggxcl::capi {
 
-PlacedBuffers::PlacedBuffers(const cl::Context& context, const cl::Device& device, std::uint64_t count,
-                             std::uint64_t stride)
-    : context_(context), count_(count), stride_(stride == 0 ? count : stride)
+std::size_t base_address_alignment(const cl::Device& device)
 {
-    align_bytes_ = device.getInfo<CL_DEVICE_MEM_BASE_ADDR_ALIGN>() / 8;  // reported in bits
-    if (align_bytes_ == 0)
-        align_bytes_ = 1;
+    const std::size_t bytes = device.getInfo<CL_DEVICE_MEM_BASE_ADDR_ALIGN>() / 8;  // reported in bits
+    return bytes == 0 ? 1 : bytes;
 }
 
-cl::Buffer PlacedBuffers::input(const ggxcl_buffer& buffer, const char* parameter, int planes)
+cl::Buffer PlacedBuffers::input(const ggxcl_buffer& buffer, const char* parameter, int planes, std::uint64_t count,
+                                 std::uint64_t stride)
 {
-    return place(buffer, parameter, planes, true);
+    return place(buffer, parameter, planes, count, stride, true);
 }
 
-cl::Buffer PlacedBuffers::output(const ggxcl_buffer& buffer, const char* parameter, int planes)
+cl::Buffer PlacedBuffers::output(const ggxcl_buffer& buffer, const char* parameter, int planes, std::uint64_t count,
+                                  std::uint64_t stride)
 {
-    return place(buffer, parameter, planes, false);
+    return place(buffer, parameter, planes, count, stride, false);
 }
 
-cl::Buffer PlacedBuffers::place(const ggxcl_buffer& buffer, const char* parameter, int planes, bool is_input)
+cl::Buffer PlacedBuffers::place(const ggxcl_buffer& buffer, const char* parameter, int planes, std::uint64_t count,
+                                std::uint64_t stride, bool is_input)
 {
     if (!buffer.mem)
         return {};
+    if (stride == 0)
+        stride = count;
     cl::Buffer caller(buffer.mem, true);
     // planes * stride floats from the offset, as the C++ API asks of its buffers.
-    const std::size_t span = static_cast<std::size_t>(planes * stride_);
+    const std::size_t span = static_cast<std::size_t>(planes * stride);
     const std::size_t size = caller.getInfo<CL_MEM_SIZE>() / sizeof(float);
     if (buffer.offset > size || size - buffer.offset < span)
         throw InvalidArgument(parameter, "a buffer of " + std::to_string(size) + " floats with offset " +
                                              std::to_string(buffer.offset),
                               "offset + " + std::to_string(span) + " floats (" + std::to_string(planes) +
-                                  " plane(s) of stride " + std::to_string(stride_) + ") within the buffer");
-    if (buffer.offset == 0 || span == 0)
+                                  " plane(s) of stride " + std::to_string(stride) + ") within the buffer");
+    if (buffer.offset == 0 || count == 0)
         return caller;
     const std::size_t origin = buffer.offset * sizeof(float);
     if (origin % align_bytes_ == 0 && caller.getInfo<CL_MEM_ASSOCIATED_MEMOBJECT>()() == nullptr) {
@@ -49,9 +51,9 @@ cl::Buffer PlacedBuffers::place(const ggxcl_buffer& buffer, const char* paramete
     }
     cl::Buffer scratch(context_, CL_MEM_READ_WRITE, span * sizeof(float));
     if (is_input)
-        in_copies_.push_back({caller, scratch, buffer.offset, 0, planes});
+        in_copies_.push_back({caller, scratch, buffer.offset, 0, planes, count, stride});
     else
-        out_copies_.push_back({scratch, caller, 0, buffer.offset, planes});
+        out_copies_.push_back({scratch, caller, 0, buffer.offset, planes, count, stride});
     return scratch;
 }
 
@@ -61,10 +63,10 @@ std::vector<cl::Event> PlacedBuffers::enqueue_copies(cl::CommandQueue& queue, co
     std::vector<cl::Event> done;
     for (const PlaneCopies& copy : copies)
         for (int plane = 0; plane < copy.planes; ++plane) {
-            const std::size_t plane_start = static_cast<std::size_t>(plane * stride_);
+            const std::size_t plane_start = static_cast<std::size_t>(plane * copy.stride);
             cl::Event event;
             queue.enqueueCopyBuffer(copy.from, copy.to, (copy.from_offset + plane_start) * sizeof(float),
-                                    (copy.to_offset + plane_start) * sizeof(float), count_ * sizeof(float),
+                                    (copy.to_offset + plane_start) * sizeof(float), copy.count * sizeof(float),
                                     wait.empty() ? nullptr : &wait, &event);
             done.push_back(event);
         }
@@ -73,7 +75,7 @@ std::vector<cl::Event> PlacedBuffers::enqueue_copies(cl::CommandQueue& queue, co
 
 std::vector<cl::Event> PlacedBuffers::before_kernel(cl::CommandQueue& queue, const std::vector<cl::Event>& wait)
 {
-    if (in_copies_.empty() || count_ == 0)
+    if (in_copies_.empty())
         return wait;
     std::vector<cl::Event> ready = wait;
     for (const cl::Event& event : enqueue_copies(queue, in_copies_, wait))
@@ -83,7 +85,7 @@ std::vector<cl::Event> PlacedBuffers::before_kernel(cl::CommandQueue& queue, con
 
 cl::Event PlacedBuffers::after_kernel(cl::CommandQueue& queue, const cl::Event& kernel)
 {
-    if (out_copies_.empty() || count_ == 0)
+    if (out_copies_.empty())
         return kernel;
     std::vector<cl::Event> copies = enqueue_copies(queue, out_copies_, {kernel});
     cl::Event all;

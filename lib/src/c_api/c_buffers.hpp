@@ -17,14 +17,17 @@ namespace ggxcl::capi {
 
 class PlacedBuffers {
 public:
-    // For a call on `count` samples with planes `stride` floats apart (0: count).
-    PlacedBuffers(const cl::Context& context, const cl::Device& device, std::uint64_t count, std::uint64_t stride);
+    // For one call on `context`; `align_bytes` is the device's base address alignment.
+    PlacedBuffers(const cl::Context& context, std::size_t align_bytes) : context_(context), align_bytes_(align_bytes) {}
 
-    // The buffer the kernel reads (input) or writes (output) for `buffer` of
-    // `planes` planes; a default buffer when buffer.mem is NULL.  Throws
-    // InvalidArgument naming `parameter` when the caller's buffer is too small.
-    cl::Buffer input(const ggxcl_buffer& buffer, const char* parameter, int planes);
-    cl::Buffer output(const ggxcl_buffer& buffer, const char* parameter, int planes);
+    // The buffer the kernel reads (input) or writes (output) for `buffer`:
+    // `planes` planes of `count` floats, `stride` apart (0: count); a default
+    // buffer when buffer.mem is NULL.  Throws InvalidArgument naming
+    // `parameter` when the caller's buffer is too small.
+    cl::Buffer input(const ggxcl_buffer& buffer, const char* parameter, int planes, std::uint64_t count,
+                     std::uint64_t stride);
+    cl::Buffer output(const ggxcl_buffer& buffer, const char* parameter, int planes, std::uint64_t count,
+                      std::uint64_t stride);
 
     // Enqueues the input copies after `wait` and returns what the kernel waits for.
     std::vector<cl::Event> before_kernel(cl::CommandQueue& queue, const std::vector<cl::Event>& wait);
@@ -36,16 +39,20 @@ private:
         cl::Buffer from, to;
         std::size_t from_offset, to_offset;  // floats
         int planes;
+        std::uint64_t count, stride;         // floats per plane, floats between planes
     };
-    cl::Buffer place(const ggxcl_buffer& buffer, const char* parameter, int planes, bool is_input);
-    std::vector<cl::Event> enqueue_copies(cl::CommandQueue& queue, const std::vector<PlaneCopies>& copies,
-                                          const std::vector<cl::Event>& wait);
+    cl::Buffer place(const ggxcl_buffer& buffer, const char* parameter, int planes, std::uint64_t count,
+                     std::uint64_t stride, bool is_input);
+    static std::vector<cl::Event> enqueue_copies(cl::CommandQueue& queue, const std::vector<PlaneCopies>& copies,
+                                                 const std::vector<cl::Event>& wait);
 
     cl::Context context_;
-    std::uint64_t count_, stride_;
     std::size_t align_bytes_;
     std::vector<PlaneCopies> in_copies_, out_copies_;
 };
+
+// CL_DEVICE_MEM_BASE_ADDR_ALIGN in bytes: where a sub-buffer may begin.
+std::size_t base_address_alignment(const cl::Device& device);
 
 // The caller's wait list as events (retained), and an event handed to the caller (retained for it).
 std::vector<cl::Event> wait_list(cl_uint count, const cl_event* events);

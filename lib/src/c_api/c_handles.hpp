@@ -5,19 +5,19 @@
 #include <memory>
 #include <string>
 
+#include "c_api/c_buffers.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/ggxcl.h"
 #include "ggxcl/sampler.hpp"
 #include "ggxcl/user_sampler.hpp"
 
+// A sampler and what the C calls read of its device, once.
 struct ggxcl_sampler {
-    explicit ggxcl_sampler(const std::string& selector) : sampler(selector), device_name(sampler.device_name()) {}
-    ggxcl_sampler(const cl::Context& context, const cl::Device& device)
-        : sampler(context, device), device_name(sampler.device_name())
-    {
-    }
+    explicit ggxcl_sampler(const std::string& selector) : sampler(selector) {}
+    ggxcl_sampler(const cl::Context& context, const cl::Device& device) : sampler(context, device) {}
     ggxcl::Sampler sampler;
-    const std::string device_name;
+    const std::string device_name = sampler.device_name();
+    const std::size_t base_align_bytes = ggxcl::capi::base_address_alignment(sampler.device());
 };
 
 struct ggxcl_user_sampler {

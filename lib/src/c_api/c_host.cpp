@@ -65,7 +65,7 @@ void ggxcl_version_numbers(int* major, int* minor, int* patch)
 const char* ggxcl_method_name(ggxcl_method method)
 {
     if (method == GGXCL_METHOD_USER)
-        return "user";
+        return ggxcl::method_name(ggxcl::Method::user).data();
     if (method < 0 || method >= GGXCL_METHOD_COUNT)
         return nullptr;
     return ggxcl::method_name(ggxcl::all_methods[static_cast<std::size_t>(method)]).data();

@@ -1,31 +1,20 @@
 // c_params.cpp - ggxcl_params, ggxcl_range and field masks as SampleParams,
-// SampleRange and FieldSet; the C enums checked against the C++ ones.
+// SampleRange and FieldSet, every enum value checked.
 #include "c_api/c_params.hpp"
 
 #include <string>
 
 #include "c_api/c_handles.hpp"
+#include "device_contract.hpp"
 #include "ggxcl/error.hpp"
 
 namespace ggxcl::capi {
 namespace {
 
-#define GGXCL_C_METHOD_MATCHES(ID, identifier, name) \
-    static_assert(static_cast<int>(Method::identifier) == GGXCL_METHOD_##ID);
-GGX_METHOD_LIST(GGXCL_C_METHOD_MATCHES)
-#undef GGXCL_C_METHOD_MATCHES
-static_assert(static_cast<int>(Method::user) == GGXCL_METHOD_USER);
+// The C enums are the contract's ids (ggxcl.h), and the C++ enums are checked against the same
+// ids (device_contract.hpp): the two APIs agree.  Methods come from the one list on both sides.
 static_assert(GGXCL_METHOD_COUNT == all_methods.size());
-static_assert(static_cast<int>(Field::m) == GGXCL_FIELD_M && static_cast<int>(Field::o) == GGXCL_FIELD_O &&
-              static_cast<int>(Field::pdf_m) == GGXCL_FIELD_PDF_M && static_cast<int>(Field::pdf_o) == GGXCL_FIELD_PDF_O &&
-              static_cast<int>(Field::weight) == GGXCL_FIELD_WEIGHT && static_cast<int>(Field::u) == GGXCL_FIELD_U);
-static_assert(GGXCL_FIELD_COUNT == all_fields.size());
-static_assert(static_cast<int>(Precision::precise) == GGXCL_PRECISION_PRECISE &&
-              static_cast<int>(Precision::relaxed) == GGXCL_PRECISION_RELAXED);
-static_assert(static_cast<int>(Sequence::philox) == GGXCL_SEQUENCE_PHILOX &&
-              static_cast<int>(Sequence::sobol) == GGXCL_SEQUENCE_SOBOL);
-static_assert(static_cast<int>(Transport::radiance) == GGXCL_TRANSPORT_RADIANCE &&
-              static_cast<int>(Transport::importance) == GGXCL_TRANSPORT_IMPORTANCE);
+static_assert(static_cast<int>(Method::user) == GGXCL_METHOD_USER);
 
 Method to_method(int id)
 {
@@ -38,12 +27,16 @@ Method to_method(int id)
     return all_methods[static_cast<std::size_t>(id)];
 }
 
-// all_precisions, all_sequences, all_transports are in id order.
-template <class Enum, std::size_t count>
-Enum to_enum(int id, const std::array<Enum, count>& all, const char* parameter, const std::string& names)
+// all_precisions, all_sequences, all_transports are in id order; `name` gives each one's name.
+template <class Enum, std::size_t count, class Name>
+Enum to_enum(int id, const std::array<Enum, count>& all, const char* parameter, Name name)
 {
-    if (id < 0 || static_cast<std::size_t>(id) >= count)
+    if (id < 0 || static_cast<std::size_t>(id) >= count) {
+        std::string names;
+        for (Enum value : all)
+            names += (names.empty() ? "" : ", ") + std::string(name(value));
         throw InvalidArgument(parameter, std::to_string(id), "0 .. " + std::to_string(count - 1) + " (" + names + ")");
+    }
     return all[static_cast<std::size_t>(id)];
 }
 
@@ -61,10 +54,10 @@ SampleParams to_params(const ggxcl_params* c)
     p.view = to_vec3(in.view);
     p.normal = to_vec3(in.normal);
     p.precision = to_precision(in.precision, "params.precision");
-    p.sequence = to_enum(in.sequence, all_sequences, "params.sequence", "philox, sobol");
+    p.sequence = to_enum(in.sequence, all_sequences, "params.sequence", sequence_name);
     p.world_space = in.world_space != 0;
     p.eta = in.eta;
-    p.transport = to_enum(in.transport, all_transports, "params.transport", "radiance, importance");
+    p.transport = to_enum(in.transport, all_transports, "params.transport", transport_name);
     if (in.user_sampler)
         p.user_sampler = in.user_sampler->sampler;
     return p;
@@ -72,7 +65,7 @@ SampleParams to_params(const ggxcl_params* c)
 
 Precision to_precision(int id, const char* parameter)
 {
-    return to_enum(id, all_precisions, parameter, precision_list());
+    return to_enum(id, all_precisions, parameter, precision_name);
 }
 
 SampleRange to_range(const ggxcl_range* c)

@@ -15,16 +15,18 @@ using ggxcl::SampleParams;
 
 namespace {
 
-// The caller's per-sample inputs, placed for a call (u has 3 planes for a dielectric).
-DeviceInputs place_inputs(PlacedBuffers& placed, const ggxcl_device_inputs* inputs, const SampleParams& params)
+// The caller's per-sample inputs of `count` samples, placed for a call (u has 3 planes for a dielectric).
+DeviceInputs place_inputs(PlacedBuffers& placed, const ggxcl_device_inputs* inputs, const SampleParams& params,
+                          std::uint64_t count, std::uint64_t stride)
 {
     DeviceInputs in;
     if (!inputs)
         return in;
-    in.view = placed.input(inputs->view, "inputs.view", 3);
-    in.alpha = placed.input(inputs->alpha, "inputs.alpha", 2);
-    in.normal = placed.input(inputs->normal, "inputs.normal", 3);
-    in.uniforms = placed.input(inputs->uniforms, "inputs.uniforms", ggxcl::field_columns(Field::u, params.eta != 0.0f));
+    in.view = placed.input(inputs->view, "inputs.view", 3, count, stride);
+    in.alpha = placed.input(inputs->alpha, "inputs.alpha", 2, count, stride);
+    in.normal = placed.input(inputs->normal, "inputs.normal", 3, count, stride);
+    in.uniforms = placed.input(inputs->uniforms, "inputs.uniforms", ggxcl::field_columns(Field::u, params.eta != 0.0f),
+                               count, stride);
     in.views_above_horizon = inputs->views_above_horizon != 0;
     in.isotropic = inputs->isotropic != 0;
     return in;
@@ -51,10 +53,10 @@ ggxcl_status enqueue_directions(ggxcl_sampler* sampler, cl_command_queue queue, 
     return guarded([&] {
         ggxcl::Sampler& s = require(sampler, "sampler").sampler;
         const SampleParams p = to_params(params);
-        PlacedBuffers placed(s.context(), s.device(), count, stride);
-        const cl::Buffer dirs = placed.input(directions, "directions", 3);
-        const cl::Buffer values = placed.output(out, eval ? "values" : "pdfs", 1);
-        const DeviceInputs in = place_inputs(placed, inputs, p);
+        PlacedBuffers placed(s.context(), sampler->base_align_bytes);
+        const cl::Buffer dirs = placed.input(directions, "directions", 3, count, stride);
+        const cl::Buffer values = placed.output(out, eval ? "values" : "pdfs", 1, count, stride);
+        const DeviceInputs in = place_inputs(placed, inputs, p, count, stride);
         enqueue_placed(queue, placed, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>& w) {
             return eval ? s.enqueue_eval(q, p, count, dirs, values, stride, in, or_null(w))
                         : s.enqueue_pdf(q, p, count, dirs, values, stride, in, or_null(w));
@@ -122,14 +124,14 @@ ggxcl_status ggxcl_enqueue(ggxcl_sampler* sampler, cl_command_queue queue, const
         const SampleParams p = to_params(params);
         const ggxcl::SampleRange r = to_range(range);
         const ggxcl_device_outputs& out = require(outputs, "outputs");
-        PlacedBuffers placed(s.context(), s.device(), r.count, stride);
+        PlacedBuffers placed(s.context(), sampler->base_align_bytes);
         ggxcl::DeviceOutputs device_out;
         for (Field field : ggxcl::all_fields) {
             const std::string name = "outputs." + std::string(ggxcl::field_name(field));
             device_out.of(field) = placed.output(output_of(out, field), name.c_str(),
-                                                 ggxcl::field_columns(field, p.eta != 0.0f));
+                                                 ggxcl::field_columns(field, p.eta != 0.0f), r.count, stride);
         }
-        const DeviceInputs in = place_inputs(placed, inputs, p);
+        const DeviceInputs in = place_inputs(placed, inputs, p, r.count, stride);
         enqueue_placed(queue, placed, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>& w) {
             return s.enqueue(q, p, r, device_out, stride, in, or_null(w));
         });
@@ -163,16 +165,12 @@ ggxcl_status ggxcl_enqueue_furnace(ggxcl_sampler* sampler, cl_command_queue queu
         const SampleParams p = to_params(params);
         const ggxcl::SampleRange r = to_range(range);
         const std::size_t floats = s.furnace_items(r.count) * (p.eta != 0.0f ? 3 : 2);
-        PlacedBuffers sums_placed(s.context(), s.device(), floats, floats);
-        const cl::Buffer sums_buffer = sums_placed.output(sums, "sums", 1);
-        // Per-sample inputs have the range's count and no stride of their own.
-        PlacedBuffers inputs_placed(s.context(), s.device(), r.count, 0);
-        const DeviceInputs in = place_inputs(inputs_placed, inputs, p);
-        cl::CommandQueue caller_queue(non_null(queue, "queue"), true);
-        const std::vector<cl::Event> kernel_wait =
-            inputs_placed.before_kernel(caller_queue, wait_list(wait_count, wait));
-        const cl::Event kernel = s.enqueue_furnace(caller_queue, p, r, sums_buffer, in, or_null(kernel_wait));
-        hand_over(sums_placed.after_kernel(caller_queue, kernel), event);
+        PlacedBuffers placed(s.context(), sampler->base_align_bytes);
+        const cl::Buffer sums_buffer = placed.output(sums, "sums", 1, floats, floats);
+        const DeviceInputs in = place_inputs(placed, inputs, p, r.count, 0);  // no stride of their own
+        enqueue_placed(queue, placed, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>& w) {
+            return s.enqueue_furnace(q, p, r, sums_buffer, in, or_null(w));
+        });
     });
 }
 

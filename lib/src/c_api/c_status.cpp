@@ -65,15 +65,6 @@ ggxcl_status record_current_exception() noexcept
     }
 }
 
-ggxcl_status record_invalid_argument(const std::string& parameter, const std::string& message) noexcept
-{
-    try {
-        return record(GGXCL_INVALID_ARGUMENT, "invalid " + parameter + ": " + message, parameter);
-    } catch (...) {
-        return GGXCL_OUT_OF_HOST_MEMORY;
-    }
-}
-
 } // namespace ggxcl::capi
 
 using ggxcl::capi::last_error;

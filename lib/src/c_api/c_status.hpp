@@ -4,7 +4,6 @@
 // thrown ever leaves a C entry point.
 #pragma once
 
-#include <string>
 
 #include "ggxcl/ggxcl.h"
 
@@ -12,9 +11,6 @@ namespace ggxcl::capi {
 
 // Records the exception being handled (call inside a catch block) and returns its status.
 ggxcl_status record_current_exception() noexcept;
-
-// Records a failure of the C API itself (a NULL pointer, an unknown enum value).
-ggxcl_status record_invalid_argument(const std::string& parameter, const std::string& message) noexcept;
 
 // Runs `body` (returning void), turning anything it throws into a status.
 template <class Body>

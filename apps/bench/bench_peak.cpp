@@ -4,7 +4,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
 #include <vector>
+
+#include "child_process.hpp"
 
 namespace ggxapp {
 
@@ -15,8 +20,11 @@ constexpr double target_ns = 4e6;      // one timed run
 constexpr std::size_t min_items = 1u << 12, max_items = 1u << 24;
 constexpr int runs = 5;
 
-// One macro per class: a step of one chain.  The int step is two ops (xor, add: alternating, so that
-// no compiler folds the chain); the multiplies square (no constant to fold powers of).
+// One macro per class: a step of one chain, which reads the chain's value once (a step that read it
+// twice, x = x * x, makes an expression whose paths double with every step: NVIDIA's compiler took
+// minutes on it).  The int step is two ops (xor, add: alternating, so that no compiler folds the
+// chain); the multiply's xor keeps compilers from folding the chain of multiplies into a power of a,
+// and is not counted (it issues beside the multiply on GPUs; on a CPU the rate is a lower bound).
 const char* const source_text = R"CL(
 #define R2(S) S S
 #define STEPS(S) R2(R2(R2(R2(R2(S)))))
@@ -32,7 +40,7 @@ const char* const source_text = R"CL(
     }
 #define FMA_STEP(x) x = x * a + b;
 #define INT_STEP(x) x = (x ^ a) + b;
-#define MUL_STEP(x) x = x * x;
+#define MUL_STEP(x) x = (x * a) ^ b;
 #define MUL64_STEP(x) x = (uint)(((ulong)x * 0xD256D193ul) >> 32);
 #define SQRT_STEP(x) x = sqrt(x);
 #define DIV_STEP(x) x = a / x;
@@ -138,6 +146,45 @@ PeakRates measure_peaks(ggxcl::Sampler& sampler)
         peaks.ops_per_s[static_cast<std::size_t>(c)] = measure_class(sampler, program, out, c);
     peaks.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return peaks;
+}
+
+std::string peak_rates_text(const PeakRates& peaks)
+{
+    std::ostringstream text;
+    text << std::setprecision(17);
+    for (OpClass c : all_op_classes)
+        text << peak_kernel_name(c) << " " << peaks[c] << "\n";
+    text << "seconds " << peaks.seconds << "\n";
+    return text.str();
+}
+
+PeakRates parse_peak_rates(const std::string& text)
+{
+    std::istringstream lines(text);
+    PeakRates peaks;
+    for (OpClass c : all_op_classes) {
+        std::string name;
+        double rate = 0;
+        if (!(lines >> name >> rate) || name != peak_kernel_name(c) || !(rate > 0))
+            throw std::runtime_error("the peak probe printed no rate for " + std::string(peak_kernel_name(c)) + ": " +
+                                     text.substr(0, 400));
+        peaks.ops_per_s[static_cast<std::size_t>(c)] = rate;
+    }
+    std::string word;
+    if (!(lines >> word >> peaks.seconds) || word != "seconds")
+        throw std::runtime_error("the peak probe printed no time: " + text.substr(0, 400));
+    return peaks;
+}
+
+PeakRates measure_peaks_in_child(const std::string& device, double limit_s)
+{
+    std::vector<std::string> arguments = {"peak-probe"};
+    if (!device.empty())
+        arguments.insert(arguments.end(), {"--device", device});
+    const ChildOutput child = run_child("/proc/self/exe", arguments, limit_s);
+    if (!exited_ok(child.status))
+        throw std::runtime_error("`ggx peak-probe` " + describe_exit(child.status) + ": " + child.err.substr(0, 2000));
+    return parse_peak_rates(child.out);
 }
 
 } // namespace ggxapp

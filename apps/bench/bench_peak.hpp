@@ -36,4 +36,14 @@ double peak_ops_per_item(OpClass c);
 // Measures every class on the sampler's device and queue (which profiles).  Throws ggxcl or cl errors.
 PeakRates measure_peaks(ggxcl::Sampler& sampler);
 
+// The same in a child process, `ggx peak-probe` on the device `device` selects (a build inside a
+// driver cannot be interrupted, and one compiler took minutes on an earlier probe): stopped after
+// `limit_s` seconds.  Throws std::runtime_error saying why when the child fails, prints something
+// else than its rates, or runs past the limit (ChildTimedOut).
+PeakRates measure_peaks_in_child(const std::string& device, double limit_s);
+
+// The child's report: a line "<kernel name> <ops per s>" per class, then "seconds <s>"; and back.
+std::string peak_rates_text(const PeakRates& peaks);
+PeakRates parse_peak_rates(const std::string& text);
+
 } // namespace ggxapp

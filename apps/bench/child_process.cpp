@@ -1,8 +1,11 @@
 // child_process.cpp - posix_spawn with both output pipes drained by poll(), so that a child
-// writing much on either never blocks on the other.
+// writing much on either never blocks on the other, until the child's time limit if it has one.
 #include "child_process.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <cstring>
 #include <fcntl.h>
 #include <poll.h>
@@ -46,19 +49,33 @@ void open_pipe(Pipe& p, const std::string& command)
     p.write.fd = fds[1];
 }
 
-// Reads both pipes to their ends.
-void drain(Pipe& out, Pipe& err, ChildOutput& result)
+using Clock = std::chrono::steady_clock;
+
+// Milliseconds poll() may wait before `deadline` (-1: no deadline).
+int poll_timeout_ms(const Clock::time_point* deadline)
+{
+    if (!deadline)
+        return -1;
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(*deadline - Clock::now()).count();
+    return int(std::max<long long>(0, std::min<long long>(left, 1 << 30)));
+}
+
+// Reads both pipes to their ends; throws ChildTimedOut when `deadline` passes first.
+void drain(Pipe& out, Pipe& err, ChildOutput& result, const Clock::time_point* deadline, const std::string& why)
 {
     char buffer[65536];
     pollfd fds[2] = {{out.read.fd, POLLIN, 0}, {err.read.fd, POLLIN, 0}};
     std::string* texts[2] = {&result.out, &result.err};
     int open = 2;
     while (open > 0) {
-        if (::poll(fds, 2, -1) < 0) {
+        const int ready = ::poll(fds, 2, poll_timeout_ms(deadline));
+        if (ready < 0) {
             if (errno == EINTR)
                 continue;
             throw std::system_error(errno, std::generic_category(), "poll");
         }
+        if (ready == 0)
+            throw ChildTimedOut(why);
         for (int k = 0; k < 2; ++k) {
             if (fds[k].fd < 0 || fds[k].revents == 0)
                 continue;
@@ -75,7 +92,7 @@ void drain(Pipe& out, Pipe& err, ChildOutput& result)
 
 } // namespace
 
-ChildOutput run_child(const std::string& program, const std::vector<std::string>& arguments)
+ChildOutput run_child(const std::string& program, const std::vector<std::string>& arguments, double limit_s)
 {
     const std::string command = command_text(program, arguments);
     Pipe out, err;
@@ -101,8 +118,12 @@ ChildOutput run_child(const std::string& program, const std::vector<std::string>
     err.write.reset();
 
     ChildOutput result;
+    const Clock::time_point deadline =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit_s));
     try {
-        drain(out, err, result);
+        drain(out, err, result, limit_s > 0 ? &deadline : nullptr,
+              "`" + command + "` ran past its limit of " + std::to_string(int(std::ceil(limit_s))) +
+                  " s and was stopped");
     } catch (...) {
         ::kill(pid, SIGKILL);
         ::waitpid(pid, nullptr, 0);

@@ -41,22 +41,28 @@ double seconds_since(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Seconds the peak probe's child may take, its build included (a GPU's takes about one).
+constexpr double peak_probe_limit_s = 60;
+
 // What the limits need, before any timing: the tasks' op counts (clang, in parallel) and then the
-// device's peaks (bench_limits.hpp).  Neither stops the bench when it fails: the report says why.
-std::vector<std::optional<OpCounts>> measure_limit_inputs(ggxcl::Sampler& sampler, const std::vector<BenchTask>& tasks,
-                                                          BenchReport& report)
+// device's peaks (bench_limits.hpp), measured in a child process with a time limit.  Neither stops
+// the bench when it fails or runs past its time: the report says why.
+std::vector<std::optional<OpCounts>> measure_limit_inputs(ggxcl::Sampler& sampler, const std::string& device,
+                                                          const std::vector<BenchTask>& tasks, BenchReport& report)
 {
     auto start = std::chrono::steady_clock::now();
+    std::cerr << "counting the operations of " << tasks.size() << " device rows' kernels (clang)\n";
     std::vector<std::optional<OpCounts>> ops = count_task_ops(sampler, tasks, report.ops_unavailable);
     std::cerr << "op counts: " << (report.ops_unavailable.empty() ? "" : "unavailable (" + report.ops_unavailable + "), ")
               << seconds_since(start) << " s\n";
+    std::cerr << "measuring the device's peaks (a child process, at most " << peak_probe_limit_s << " s)\n";
     try {
-        report.peaks = measure_peaks(sampler);
+        report.peaks = measure_peaks_in_child(device, peak_probe_limit_s);
         report.has_peaks = true;
         std::cerr << "peak probe: " << report.peaks.seconds << " s\n";
     } catch (const std::exception& e) {
         report.peaks_unavailable = e.what();
-        std::cerr << "peak probe failed: " << e.what() << "\n";
+        std::cerr << "peak probe unavailable: " << e.what() << "\n";
     }
     return ops;
 }
@@ -229,7 +235,7 @@ BenchRow device_row(const BenchTask& task, Timing timing)
 void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchCommand& cmd, BenchReport& report)
 {
     const std::vector<BenchTask> tasks = bench_tasks(plan);
-    const std::vector<std::optional<OpCounts>> ops = measure_limit_inputs(sampler, tasks, report);
+    const std::vector<std::optional<OpCounts>> ops = measure_limit_inputs(sampler, cmd.device, tasks, report);
     std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
     DeviceTimer timer(sampler, report.count);
     std::vector<Timing> timings = timer.time_interleaved(tasks, report.repeats);
@@ -237,6 +243,8 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
     if (timer.wall_clock())
         std::cerr << "device rows timed by wall clock: " << report.device_clock << "\n";
     ExactValues exact;
+    if (!cmd.no_accuracy)
+        std::cerr << "measuring the accuracy columns\n";
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         BenchRow row = device_row(tasks[t], timings[t]);
         if (ops[t])
@@ -252,6 +260,7 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
 // they join the report only once the vectorized loop is timed too.
 void measure_native(const BenchPlan& plan, BenchReport& report)
 {
+    std::cerr << "timing the native C++ baseline (ggx-native)\n";
     NativeSetup setup{report.native_count, report.threads, report.repeats, plan.base.alpha_x, plan.base.view};
     std::vector<BenchRow> rows;
     for (const std::string& name : plan.methods) {
@@ -332,6 +341,7 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
     if (!cmd.no_native)
         measure_native_if_available(plan, report);
     if (!cmd.no_startup) {
+        std::cerr << "timing start-up, enqueue and whole commands\n";
         report.startup = measure_startup(cmd.device, 5);
         report.enqueue = measure_enqueue(sampler, plan.base);
         // Twice the device runs' count (2^25 by default): a process's fixed costs weigh as in a dataset run.

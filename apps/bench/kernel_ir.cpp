@@ -72,7 +72,7 @@ std::string compile_one(const ClangTool& clang, const IrRequest& request, const 
 {
     std::ofstream(source_file) << request.source;
     const std::vector<std::string> args = clang_arguments(request.options, source_file.string());
-    ChildOutput result = run_child(clang.path, args);
+    ChildOutput result = run_child(clang.path, args, 120);  // stopped when it runs past 2 min
     if (!exited_ok(result.status))
         throw std::runtime_error("`" + command_text(clang.path, args) + "` " + describe_exit(result.status) + ": " +
                                  result.err.substr(0, 2000));

@@ -18,7 +18,8 @@
 // language: OpenCL allows 3 ulp for sqrt and 2.5 ulp for division unless
 // built with -cl-fp32-correctly-rounded-divide-sqrt; C++ and CUDA round
 // both correctly (CUDA with its default -prec-sqrt=true -prec-div=true).
-// ggx_fma is one rounding everywhere; where C++ targets a CPU without
+// ggx_fma is one rounding everywhere, and in OpenCL C the only fused
+// multiply-add (FP_CONTRACT is off); where C++ targets a CPU without
 // hardware fma (libm would emulate it, slowly) GGX_NO_FMA defaults to 1 and
 // ggx_sincos.h uses a multiply and an add instead.
 #ifndef GGX_PLATFORM_H
@@ -26,6 +27,15 @@
 
 #if defined(__OPENCL_C_VERSION__)
 // ---- OpenCL C ------------------------------------------------------------
+// No contraction: OpenCL C lets a compiler fuse a * b + c into one fma where
+// it likes, and compilers decide differently per program (NVIDIA's did for
+// two programs with the same math), so the same sample would get other bits
+// in another program.  Off from here to the end of the program, the
+// including kernel's own code too; ggx_fma fuses where the math wants it.
+// Built with -cl-fast-relaxed-math (relaxed mode) the program may contract.
+#if !defined(__FAST_RELAXED_MATH__)
+#pragma OPENCL FP_CONTRACT OFF
+#endif
 typedef uint ggx_uint;
 typedef ulong ggx_ulong;
 // static: a plain `inline` function left uninlined (an unoptimized build, SPIR-V) has no external

@@ -37,22 +37,31 @@ GGX_INLINE float ggx_fresnel_dielectric(float c, float eta)
 
 // Conductor of complex relative index eta + i k, at cosine c in [0, 1], for
 // one wavelength (call once per channel).  The exact reflectance written in
-// real arithmetic: with s2 = 1 - c^2, t0 = eta^2 - k^2 - s2 and
-// a^2 + b^2 = sqrt(t0^2 + 4 eta^2 k^2), a = sqrt((a^2 + b^2 + t0) / 2),
-//   Rs = (a^2 + b^2 + c^2 - 2ac) / (a^2 + b^2 + c^2 + 2ac),
-//   Rp = Rs (c^2 (a^2 + b^2) + s2^2 - 2 a c s2) / (c^2 (a^2 + b^2) + s2^2 + 2 a c s2),
+// real arithmetic: with s2 = 1 - c^2, t0 = eta^2 - k^2 - s2 and a, b the
+// real and imaginary parts of sqrt((eta + i k)^2 - s2), so that
+// a^2 - b^2 = t0 and a^2 b^2 = eta^2 k^2,
+//   Rs = ((a - c)^2 + b^2) / ((a + c)^2 + b^2),
+//   Rp = Rs ((a c - s2)^2 + b^2 c^2) / ((a c + s2)^2 + b^2 c^2),
 // F = (Rs + Rp) / 2.  k = 0 and eta > 1 give the dielectric value.
+// Written against cancellation, which the critical angle of eta < 1 and
+// normal incidence at eta near 1 expose: t0 = c^2 + (eta^2 - 1) - k^2 by
+// fused multiply-adds (one rounding each, no 1 - c^2 formed); of a^2 and b^2
+// the larger is (sqrt(t0^2 + 4 eta^2 k^2) + |t0|) / 2, a sum of positives,
+// and the smaller eta^2 k^2 over it; and the numerators as sums of squares
+// rather than differences of the expanded terms.
 GGX_INLINE float ggx_fresnel_conductor(float c, float eta, float k)
 {
     c = ggx_clamp(c, 0.0f, 1.0f);
-    const float c2 = c * c, s2 = 1.0f - c2;
-    const float t0 = eta * eta - k * k - s2;
-    const float a2b2 = ggx_sqrt(t0 * t0 + 4.0f * eta * eta * k * k);
-    const float a = ggx_sqrt(ggx_fmax(0.5f * (a2b2 + t0), 0.0f));
-    const float t1 = a2b2 + c2, t2 = 2.0f * a * c;
-    const float rs = (t1 - t2) / (t1 + t2);
-    const float t3 = c2 * a2b2 + s2 * s2, t4 = t2 * s2;
-    const float rp = rs * (t3 - t4) / (t3 + t4);
+    const float c2 = c * c, s2 = 1.0f - c2, ek = eta * k;
+    const float t0 = ggx_fma(c, c, ggx_fma(-k, k, ggx_fma(eta, eta, -1.0f)));
+    const float twice_larger = ggx_sqrt(t0 * t0 + 4.0f * ek * ek) + ggx_fabs(t0);
+    const float larger = 0.5f * twice_larger;
+    const float smaller = twice_larger > 0.0f ? 2.0f * ek * ek / twice_larger : 0.0f;
+    const float a2 = t0 >= 0.0f ? larger : smaller, b2 = t0 >= 0.0f ? smaller : larger;
+    const float a = ggx_sqrt(a2);
+    const float rs = ((a - c) * (a - c) + b2) / ((a + c) * (a + c) + b2);
+    const float ac = a * c, b2c2 = b2 * c2;
+    const float rp = rs * ((ac - s2) * (ac - s2) + b2c2) / ((ac + s2) * (ac + s2) + b2c2);
     return 0.5f * (rs + rp);
 }
 

@@ -2,8 +2,11 @@
 Debian ships (gpu_targets.py): the covering set of list_programs (every option
 value, every pair of values) for AMD RDNA2, RDNA3, CDNA2 and GCN5, NVPTX and
 SPIR-V.  Fails on a failed compile or validation, on any scratch use or spill
-on the AMD targets, and on a local-memory depot in PTX; first checks that the
-spill check fails a kernel made to spill (spill_control.cl).
+on the AMD targets, on a local-memory depot in PTX, and on any contraction
+(llvm.fmuladd, `contract`) in the front end's LLVM IR of a precise program
+(ggx_platform.h turns FP_CONTRACT off); first checks that the spill check
+fails a kernel made to spill (spill_control.cl) and that the contraction
+check finds the one of contraction_control.cl.
 
 usage: python3 compile_programs.py LIST_PROGRAMS [--jobs N]"""
 
@@ -50,7 +53,11 @@ def check(program, target, sources, work):
         return [f"{where}: no kernel found in the assembly"]
     if target.isa == "nvptx" and not gpu.ptx_functions(compiled.code):
         return [f"{where}: no .entry in the PTX"]
-    return [f"{where}: {p}" for p in spill_problems(target, compiled)]
+    problems = spill_problems(target, compiled)
+    if target.isa == "spirv" and program.get("precision") == "precise" and gpu.contractions(compiled.code):
+        problems.append(f"{gpu.contractions(compiled.code)} contractions (llvm.fmuladd or `contract`) in the "
+                        "LLVM IR of a precise program")
+    return [f"{where}: {p}" for p in problems]
 
 
 def negative_control(work):
@@ -69,6 +76,11 @@ def negative_control(work):
                                 f"spill_control.cl on {target.name}: {problems}")
         if target.isa == "amdgcn" and "registers spilled" not in problems:
             failures.append(f"negative control: no spilled registers reported on {target.name}: {problems}")
+    spirv = next(t for t in gpu.TARGETS if t.isa == "spirv")
+    contraction = {"name": "contraction-control", "file": "contraction_control.cl", "options": "",
+                   "precision": "precise"}
+    if "contractions" not in " ".join(check(contraction, spirv, HERE, work)):
+        failures.append("negative control: the contraction check passed contraction_control.cl's a * b + c")
     return failures
 
 

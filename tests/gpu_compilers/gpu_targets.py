@@ -54,7 +54,7 @@ TARGETS = [
 class Compiled:
     ok: bool
     log: str
-    code: str = ""   # the assembly (AMD, PTX) or disassembly (SPIR-V)
+    code: str = ""   # the assembly (AMD, PTX) or the front end's LLVM IR (SPIR-V)
 
 
 def run(command):
@@ -69,14 +69,28 @@ def compile_program(target, source, options, out_base):
         ok, log = run(command + ["-S", "-o", out_base + ".s"])
         code = open(out_base + ".s").read() if ok else ""
         return Compiled(ok, log, code)
-    ok, log = run(command + ["-emit-llvm", "-c", "-o", out_base + ".bc"])
+    # The front end's LLVM IR as text (kept in `code`: what the contraction check reads), then
+    # assembled to bitcode for the SPIR-V translator.
+    ok, log = run(command + ["-emit-llvm", "-S", "-o", out_base + ".ll"])
+    code = open(out_base + ".ll").read() if ok else ""
+    if ok:
+        ok, more = run([CLANG, *target.flags[:2], "-c", "-emit-llvm", out_base + ".ll", "-o", out_base + ".bc"])
+        log += more
     if ok:
         ok, more = run([LLVM_SPIRV, "--spirv-max-version=1.0", out_base + ".bc", "-o", out_base + ".spv"])
         log += more
     if ok:
         ok, more = run([SPIRV_VAL, "--target-env", "opencl1.2", out_base + ".spv"])
         log += more
-    return Compiled(ok, log)
+    return Compiled(ok, log, code)
+
+
+def contractions(ir):
+    """The front end's contractions in LLVM IR text: fused multiply-adds it made of a * b + c
+    (llvm.fmuladd) and instructions it allowed to fuse later (the `contract` flag)."""
+    fused = len(re.findall(r"call [^\n]*@llvm\.fmuladd\.", ir))
+    flagged = len(re.findall(r"= (?:fadd|fsub|fmul)[^\n]*\bcontract\b", ir))
+    return fused + flagged
 
 
 # --- what the code says --------------------------------------------------

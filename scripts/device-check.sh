@@ -12,8 +12,21 @@
 # Everything it prints and writes goes to $OUT (default ./device-check-out):
 # summary.txt, the logs of each step, the bench report.
 # Usage: bash scripts/device-check.sh
+#        bash scripts/device-check.sh --bundle DIR
+# --bundle, on the Debian build machine: builds ggxcl with its tests and
+# writes DIR, a relocatable folder (scripts/bundle/make_bundle.py) to carry
+# to a GPU node that has no package manager and run there: DIR/run.sh
+# [--quick] (scripts/bundle/run.sh; docs/DEVICES.md).
 set -uo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = "--bundle" ]; then
+  [ -n "${2:-}" ] || { echo "device-check.sh: --bundle needs a folder: --bundle DIR" >&2; exit 2; }
+  set -e
+  bash scripts/install-deps.sh
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGGXCL_BUILD_TESTS=ON
+  cmake --build build -j"$(nproc)"
+  exec python3 scripts/bundle/make_bundle.py --build build --source . --out "$2"
+fi
 out="${OUT:-$PWD/device-check-out}"
 mkdir -p "$out"
 summary="$out/summary.txt"

@@ -25,6 +25,7 @@ test_packages=(
   python3-dev pybind11-dev python3-pytest python3-pyopencl  # the ggxcl Python module and its tests
   libstb-dev                          # PNG decoding in the tests, PNG encoding in examples/albedo_table
   pkgconf                             # the install test builds a consumer with pkg-config
+  patchelf                            # $ORIGIN run paths in the relocatable GPU-check bundle (device-check.sh --bundle)
   clang-15                            # the device headers as C++ and CUDA (test_languages); ggx bench's op counts
   libclc-15-dev llvm-spirv-15 spirv-tools  # every program for AMD, NVPTX and SPIR-V targets (test_gpu_compilers)
   openmpi-bin libopenmpi-dev          # mpirun for test_mpi_shards (ggx itself links no MPI)

@@ -1,8 +1,13 @@
 // test_build_log_lines.cpp - build logs mapped back to the files of a
 // program's #line markers (lib/src/build_log_lines.hpp), on the host: the
-// location forms of the OpenCL compilers that ignore the markers, and the logs
-// of those that honour them left as they are.
+// location forms of the OpenCL compilers that ignore the markers, the logs
+// of those that honour them left as they are, and a user sampler's
+// program as the library assembles it.
 #include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include <ggxcl/user_sampler.hpp>
 
 #include "build_log_lines.hpp"
 
@@ -155,4 +160,21 @@ TEST_CASE("line numbers past the end or 0, and text that is no location, are lef
     CHECK(mapped("<kernel>:99999999999:1: error: x\n") == "<kernel>:99999999999:1: error: x\n");
     CHECK(mapped("a:b: 3:4 :5: http://h:2/ 12:x\n") == "a:b: 3:4 :5: http://h:2/ 12:x\n");
     CHECK(mapped("") == "");
+}
+
+TEST_CASE("the library's own assembly: NVIDIA's physical line of a user sampler's line 9 maps to it")
+{
+    const std::string path = std::string(GGX_USER_SAMPLERS_DIR) + "/syntax_error.h";
+    const auto sampler = ggxcl::UserSampler::load(path);
+    const std::string program = ggxcl::program_source("ggx_bulk.cl", ggxcl::user_sampler_options(*sampler));
+    const std::string line9 = "    return ggx_sample_caps(i, ax, ay, u1, u2)\n}";
+    const std::size_t at = program.find(line9);
+    REQUIRE(at != std::string::npos);
+    const long physical = 1 + static_cast<long>(std::count(program.begin(), program.begin() + at, '\n'));
+    CHECK(physical > 1000);  // after the kernel file and the device headers
+    const std::string message = "error: expected ';' after return statement\n";
+    const std::string log = "<kernel>:" + std::to_string(physical) + ":46: " + message;
+    CHECK(map_build_log(log, program_lines(program)) == path + ":9:46: " + message);
+    const std::string in_kernel = "<kernel>:2:1: error: x\n";  // line 1 of ggx_bulk.cl is its #line marker
+    CHECK(map_build_log(in_kernel, program_lines(program)) == "ggx_bulk.cl:1:1: error: x\n");
 }

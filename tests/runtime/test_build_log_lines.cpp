@@ -1,8 +1,9 @@
 // test_build_log_lines.cpp - build logs mapped back to the files of a
 // program's #line markers (lib/src/build_log_lines.hpp), on the host: the
 // location forms of the OpenCL compilers that ignore the markers, the logs
-// of those that honour them left as they are, and a user sampler's
-// program as the library assembles it.
+// of those that honour them left as they are, a user sampler's program as
+// the library assembles it, and a user sampler's build summary starting
+// with the user's file and line.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -160,6 +161,19 @@ TEST_CASE("line numbers past the end or 0, and text that is no location, are lef
     CHECK(mapped("<kernel>:99999999999:1: error: x\n") == "<kernel>:99999999999:1: error: x\n");
     CHECK(mapped("a:b: 3:4 :5: http://h:2/ 12:x\n") == "a:b: 3:4 :5: http://h:2/ 12:x\n");
     CHECK(mapped("") == "");
+}
+
+TEST_CASE("a user sampler's summary starts with its file and line, from NVIDIA's mapped log and from PoCL's")
+{
+    const std::string prefix = "the user sampler does not compile: ";
+    const std::string nvidia = mapped("<kernel>:11:11: error: expected ';' after return statement\n{ return 1 }\n");
+    CHECK(ggxcl::user_build_summary(nvidia) ==
+          prefix + "/u/my file.h:10:11: error: expected ';' after return statement");
+    const std::string pocl = "error: /u/my file.h:10:11: expected ';'\nDevice x failed to build the program\n";
+    CHECK(ggxcl::user_build_summary(pocl) == prefix + "/u/my file.h:10:11: error: expected ';'");
+    const std::string warned = "syntax_error.h:3:1: warning: w\nsyntax_error.h:9:4: error: e\n";
+    CHECK(ggxcl::user_build_summary(warned) == prefix + "syntax_error.h:9:4: error: e");  // not the warning
+    CHECK(ggxcl::user_build_summary("no such line\n") == "the user sampler does not compile");
 }
 
 TEST_CASE("the library's own assembly: NVIDIA's physical line of a user sampler's line 9 maps to it")

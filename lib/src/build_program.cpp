@@ -1,8 +1,10 @@
 // build_program.cpp - building a program from source or from a cached
-// binary, with the library's errors (the build log travels in BuildError).
+// binary, with the library's errors (the build log travels in BuildError,
+// its locations mapped back to the source's files).
 #include "build_program.hpp"
 
 #include "binary_cache.hpp"
+#include "build_log_lines.hpp"
 #include "device_quirks.hpp"
 #include "ggxcl/error.hpp"
 
@@ -19,6 +21,13 @@ std::string build_log(const cl::Program& program, const cl::Device& device)
     }
 }
 
+// The build log with the file and line of `source`'s #line markers wherever the compiler printed
+// a physical line of the program (build_log_lines.hpp).
+std::string mapped_build_log(const cl::Program& program, const cl::Device& device, const std::string& source)
+{
+    return map_build_log(build_log(program, device), program_lines(source));
+}
+
 cl::Program build_from_source(const cl::Context& context, const cl::Device& device, const std::string& source,
                               const std::string& options)
 {
@@ -31,7 +40,8 @@ cl::Program build_from_source(const cl::Context& context, const cl::Device& devi
     try {
         program.build({device}, options.c_str());
     } catch (const cl::Error& e) {
-        throw BuildError(e.err(), device.getInfo<CL_DEVICE_NAME>(), options, build_log(program, device));
+        throw BuildError(e.err(), device.getInfo<CL_DEVICE_NAME>(), options,
+                         mapped_build_log(program, device, source));
     }
     return program;
 }

@@ -1,6 +1,8 @@
 // build_program.hpp - building an OpenCL program from source, with the
 // errors of the library: ClError when the program cannot be created,
-// BuildError (CL error name, options, build log) when it does not build.
+// BuildError (CL error name, options, build log) when it does not build,
+// the log's locations mapped back to the files of the source's #line
+// markers whatever the compiler prints (build_log_lines.hpp).
 // Every build gets the device's quirk options (device_quirks.hpp).
 #pragma once
 

@@ -113,6 +113,28 @@ void check_name(const std::string& name)
                                                             ")");
 }
 
+// The first line of `log` that contains `word`; empty when none does.
+std::string first_line_with(const std::string& log, const std::string& word)
+{
+    std::istringstream lines(log);
+    std::string line;
+    while (std::getline(lines, line))
+        if (line.find(word) != std::string::npos)
+            return line;
+    return "";
+}
+
+// A build log's error line with its location first: PoCL's "error: FILE:L:C: message" as
+// "FILE:L:C: error: message"; other lines (clang's, NVIDIA's mapped ones start so) as they are.
+std::string location_first(const std::string& line)
+{
+    static const std::regex pocl(R"(^\s*((?:fatal )?error): (.+?:\d+:(?:\d+:)?) )");
+    std::smatch match;
+    if (!std::regex_search(line, match, pocl))
+        return line;
+    return match[2].str() + " " + match[1].str() + ": " + match.suffix().str();
+}
+
 std::mutex sources_mutex;
 std::map<std::string, std::string>& user_parts()  // by key: what follows the kernel file
 {
@@ -183,12 +205,12 @@ std::string program_source(const std::string& file, const std::string& options)
 
 std::string user_build_summary(const std::string& log)
 {
-    std::istringstream lines(log);
-    std::string line;
-    while (std::getline(lines, line))
-        if (line.find("error") != std::string::npos)
-            return "the user sampler does not compile: " + line;
-    return "the user sampler does not compile";
+    std::string line = first_line_with(log, "error:");  // not a warning in a file named *error*
+    if (line.empty())
+        line = first_line_with(log, "error");
+    if (line.empty())
+        return "the user sampler does not compile";
+    return "the user sampler does not compile: " + location_first(line);
 }
 
 } // namespace ggxcl

@@ -169,6 +169,7 @@ TEST_CASE("a user sampler that does not compile names its file and line")
         CAPTURE(what);
         CHECK(what.rfind("the user sampler does not compile: ", 0) == 0);
         CHECK(what.substr(0, what.find('\n')).find("syntax_error.h:9:") != std::string::npos);
+        CHECK(what.rfind("the user sampler does not compile: " + sampler_file("syntax_error.h") + ":9:", 0) == 0);
     }
 }
 

@@ -66,9 +66,10 @@ std::string user_sampler_options(const UserSampler& sampler);
 // (in memory, on disk) keep user programs like the others, and an edited file builds anew.
 std::string program_source(const std::string& file, const std::string& options);
 
-// "the user sampler does not compile: " and the first line of a build log with an error (which,
-// with the #line markers of a user sampler's source, starts with the user's file and line): the
-// summary that leads the BuildError of a user sampler's program.
+// "the user sampler does not compile: " and the first line of a build log with an error, its
+// location first (the library has mapped the log's locations to the user's files, whatever the
+// compiler printed), so that it starts with the user's file and line: the summary that leads the
+// BuildError of a user sampler's program.
 std::string user_build_summary(const std::string& log);
 
 } // namespace ggxcl

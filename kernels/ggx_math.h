@@ -51,10 +51,13 @@ GGX_INLINE float ggx_G1(ggx_vec3 w, float ax, float ay)
 
 // Height-correlated G2 = 1/(1 + Lambda(i) + Lambda(o)) written without
 // divisions by iz or oz: 2 iz oz / (t(i) oz + t(o) iz) (Heitz 2014, eq. 99).
-// Takes t(i) and t(o) so callers that have them pay no square root.
+// Takes t(i) and t(o) so callers that have them pay no square root.  The
+// denominator fused (GGX_FMA): written as a sum of two products it is a
+// reduction that LLVM's SLP vectorizer pairs t(i) with t(o) for, and a
+// 2-wide vector inside PoCL's work-item loop keeps that loop scalar.
 GGX_INLINE float ggx_G2_from_t(float iz, float oz, float ti, float to)
 {
-    return (iz > 0.0f && oz > 0.0f) ? 2.0f * iz * oz / (ti * oz + to * iz) : 0.0f;
+    return (iz > 0.0f && oz > 0.0f) ? 2.0f * iz * oz / GGX_FMA(ti, oz, to * iz) : 0.0f;
 }
 
 GGX_INLINE float ggx_G2(ggx_vec3 i, ggx_vec3 o, float ax, float ay)

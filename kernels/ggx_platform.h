@@ -11,6 +11,7 @@
 //   GGX_FLT_MAX            the largest finite float
 //   ggx_sqrt, ggx_rsqrt, ggx_fabs, ggx_fmin, ggx_fmax, ggx_rint, ggx_copysign,
 //   ggx_fma, ggx_clamp     float functions with OpenCL C's meaning
+//   GGX_FMA                a fused multiply-add where the hardware has one
 //   ggx_as_uint            the bits of a float
 //
 // In OpenCL C they are the built-ins themselves, so the kernels compile to
@@ -127,6 +128,19 @@ GGX_INLINE ggx_uint ggx_as_uint(float x)
 
 #else
 #error "ggx_platform.h: compile the ggxcl device headers as OpenCL C, C++ (C++17) or CUDA"
+#endif
+
+// GGX_FMA(a, b, c): a * b + c fused (ggx_fma) where the device has hardware
+// fma, a multiply and an add where GGX_NO_FMA is 1 (C++ without fma, above;
+// OpenCL devices without it, set by the runtime: a software fma is slow).
+// Either way the same on every program of one device.
+#ifndef GGX_NO_FMA
+#define GGX_NO_FMA 0
+#endif
+#if GGX_NO_FMA
+#define GGX_FMA(a, b, c) ((a) * (b) + (c))
+#else
+#define GGX_FMA(a, b, c) ggx_fma((a), (b), (c))
 #endif
 
 // fmin(fmax(x, lo), hi), OpenCL C's clamp.

@@ -21,15 +21,6 @@
 
 #include "ggx_common.h"
 
-#ifndef GGX_NO_FMA
-#define GGX_NO_FMA 0
-#endif
-#if GGX_NO_FMA
-#define GGX_FMA(a, b, c) ((a) * (b) + (c))
-#else
-#define GGX_FMA(a, b, c) ggx_fma((a), (b), (c))
-#endif
-
 // sin((pi/2) f) and cos((pi/2) f) for |f| <= 1/2.
 GGX_INLINE void ggx_sincos_quarter(float f, float* s, float* c)
 {

@@ -8,7 +8,7 @@
 //  - the kernel of examples/cuda compiles to PTX the same way; where nvcc is installed, the file
 //    above and the whole example (host code too) compile with it;
 //  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check.
-// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h) are OpenCL C alone.
+// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h, ggx_histogram_bin.h) are OpenCL C alone.
 // ggx_user_sampler.h declares what a user sampler's file defines after it: it compiles
 // with the test samplers of tests/user_samplers (one of whole samples, one of m alone) and the
 // worked example of examples/user_sampler after it.
@@ -31,7 +31,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h"};
+const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h", "ggx_histogram_bin.h"};
 
 struct Result {
     int status;

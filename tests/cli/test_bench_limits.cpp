@@ -3,7 +3,8 @@
 // count), the roofline arithmetic on given numbers, every bench kernel's IR
 // free of unknown operations, the peak probe's kernels counted as the probe
 // assumes (nothing folded away) and measured on the device, and the report
-// without a compiler.
+// without a compiler.  The cases that compile kernels to IR need clang 15
+// (clang-15 on PATH, or GGXCL_CLANG): skipped without it (skip.hpp).
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -22,18 +23,13 @@
 #include "kernel_ir.hpp"
 #include "op_counts.hpp"
 #include "roofline.hpp"
+#include "skip.hpp"
 
 using namespace ggxapp;
 using ggxtest::read_all;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path scratch()
-{
-    static const fs::path dir = ggxtest::scratch_dir("bench-limits");
-    return dir;
-}
 
 const char* const hand_written_ll = R"LL(
 ; ModuleID = 'probe.cl'
@@ -175,7 +171,8 @@ TEST_CASE("a row's limit is the tighter of compute and bandwidth, and its percen
 TEST_CASE("the peak probe's kernels do the operations the probe divides by: nothing folded away")
 {
     const ClangTool clang = find_clang();
-    REQUIRE_MESSAGE(!clang.path.empty(), clang.unavailable);
+    if (!ggxtest::skip_unless(!clang.path.empty(), "needs clang 15 to compile kernels to IR: " + clang.unavailable))
+        return;
     const std::string ll = compile_to_ir(clang, {{peak_probe_source(), "-cl-fp32-correctly-rounded-divide-sqrt"}}, 1)[0];
     for (OpClass c : all_op_classes) {
         CAPTURE(std::string(op_class_name(c)));
@@ -232,13 +229,13 @@ TEST_CASE("a child past its time limit is stopped and named; the peak rates trav
 
 TEST_CASE("`ggx peak-probe`, the bench's child, prints every class's rate")
 {
-    const ChildOutput child = run_child(GGX_BINARY, {"peak-probe"}, 120);
+    const ChildOutput child = run_child(ggxtest::ggx_binary(), {"peak-probe"}, 120);
     CAPTURE(child.err);
     REQUIRE(exited_ok(child.status));
     const PeakRates peaks = parse_peak_rates(child.out);
     for (OpClass c : all_op_classes)
         CHECK(peaks[c] > 1e6);
-    const ChildOutput help = run_child(GGX_BINARY, {"--help"}, 60);
+    const ChildOutput help = run_child(ggxtest::ggx_binary(), {"--help"}, 60);
     CHECK(help.out.find("bench") != std::string::npos);
     CHECK(help.out.find("peak-probe") == std::string::npos);  // internal: not listed
 }
@@ -246,7 +243,8 @@ TEST_CASE("`ggx peak-probe`, the bench's child, prints every class's rate")
 TEST_CASE("every bench kernel (method x write, furnace x precision) has only operations of known classes")
 {
     const ClangTool clang = find_clang();
-    REQUIRE_MESSAGE(!clang.path.empty(), clang.unavailable);
+    if (!ggxtest::skip_unless(!clang.path.empty(), "needs clang 15 to compile kernels to IR: " + clang.unavailable))
+        return;
     ggxcl::Sampler sampler;
     std::vector<IrRequest> requests;
     std::vector<ggxcl::benchmark::ProgramText> programs;
@@ -289,9 +287,8 @@ TEST_CASE("the peak probe measures positive finite rates on the device")
 
 TEST_CASE("ggx bench without a compiler reports the compute limit unavailable, why, and the rest as before")
 {
-    fs::path dir = scratch() / "no-clang";
-    fs::create_directories(dir);
-    ggxtest::Run run = ggxtest::run_ggx("GGXCL_CLANG=" + (dir / "no-clang").string() + " " + GGX_BINARY +
+    const ggxtest::ScratchFolder dir("bench-limits");
+    ggxtest::Run run = ggxtest::run_ggx("GGXCL_CLANG=" + (dir / "no-clang").string() + " " + ggxtest::ggx_binary() +
                                             " bench --methods caps --precisions precise --jobs write,furnace -n 2^14 "
                                             "--repeats 5 --no-native --no-accuracy --no-startup --sequences philox --csv " +
                                             (dir / "b.csv").string() + " --markdown " + (dir / "B.md").string(),
@@ -304,5 +301,4 @@ TEST_CASE("ggx bench without a compiler reports the compute limit unavailable, w
     CHECK(md.find("| caps | write |") != std::string::npos);  // against the bandwidth limit alone
     CHECK(md.find("every method within 2x of its limit") == std::string::npos);  // no compute limit, no target
     CHECK(read_all(dir / "b.csv").find(",percent_of_limit") != std::string::npos);
-    fs::remove_all(dir);
 }

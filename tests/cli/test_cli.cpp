@@ -1,7 +1,9 @@
 // test_cli.cpp - the `ggx` tool end to end: `sample` writes a .npy of the
 // requested columns and a JSON sidecar that read back correctly, `demo`
 // writes every method (with --eta, a dielectric's), and bad input exits 2 with a one-line message naming
-// the flag and leaves no file behind.
+// the flag and leaves no file behind.  Each case works in a folder of its own; the demo's page
+// needs three.js, bench's charts a Python with matplotlib and its limits clang, the symbol check
+// nm: without them those cases are skipped (prerequisites.hpp, skip.hpp).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -17,7 +19,10 @@
 
 #include "cli_runner.hpp"
 #include "ggx_reference.hpp"
+#include "kernel_ir.hpp"
 #include "npy_file.hpp"
+#include "prerequisites.hpp"
+#include "skip.hpp"
 
 namespace fs = std::filesystem;
 
@@ -27,10 +32,10 @@ using ggxtest::csv_cell;
 using ggxtest::read_all;
 using ggxtest::Run;
 
-fs::path scratch()
+// The running case's own folder (each case makes one).
+const fs::path& scratch()
 {
-    static fs::path dir = ggxtest::scratch_dir("cli");
-    return dir;
+    return ggxtest::ScratchFolder::current();
 }
 
 Run ggx(const std::string& args)
@@ -62,6 +67,7 @@ std::string bad_uniforms(const std::string& name, std::size_t rows, std::size_t 
 
 TEST_CASE("ggx sample writes the requested columns and a sidecar")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     fs::path out = scratch() / "s.npy";
     Run run = ggx("sample --method bounded --alpha 0.2,0.4 --theta 70 --phi 15 -n 2^12 --seed 11 --first 5 "
                   "--fields o,pdf_o,m --out " + out.string());
@@ -93,6 +99,7 @@ TEST_CASE("ggx sample writes the requested columns and a sidecar")
 
 TEST_CASE("ggx sample --uniforms draws from the caller's uniforms; --sequence sobol is recorded")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     const std::uint64_t n = 3000, seed = 4;
     fs::path dir = scratch() / "uniforms";
     fs::create_directories(dir);
@@ -133,6 +140,9 @@ TEST_CASE("ggx sample --uniforms draws from the caller's uniforms; --sequence so
 
 TEST_CASE("ggx demo writes clouds, histograms and a summary page for every method")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
+    if (!ggxtest::skip_unless(ggxtest::three_js_present(), ggxtest::three_js_reason))
+        return;
     fs::path dir = scratch() / "demo";
     REQUIRE(ggx("demo -n 1000 --histogram-n 1e5 --no-png --out " + dir.string()).status == 0);
     std::string page = read_all(dir / "index.md");
@@ -154,6 +164,9 @@ TEST_CASE("ggx demo writes clouds, histograms and a summary page for every metho
 
 TEST_CASE("ggx demo --eta writes a rough dielectric's clouds and whole-sphere histograms for every method but bounded")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
+    if (!ggxtest::skip_unless(ggxtest::three_js_present(), ggxtest::three_js_reason))
+        return;
     fs::path dir = scratch() / "demo-eta";
     REQUIRE(ggx("demo --eta 1.5 --transport importance -n 1000 --histogram-n 1e5 --no-png --out " + dir.string())
                 .status == 0);
@@ -185,6 +198,7 @@ TEST_CASE("ggx demo --eta writes a rough dielectric's clouds and whole-sphere hi
 
 TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     const std::string out = " --out " + (scratch() / "bad.npy").string();
     struct Case {
         std::string args, flag;
@@ -255,10 +269,10 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"converge --csv /no/such/folder/c.csv", "--csv"},
         {"devices --verbose", "--verbose"},
         {"histogram --method caps --out /no/such/folder/h", "--out"},
-        {"demo -n 0 --out " + (scratch() / "d").string(), "-n"},
-        {"demo --alpha -1 --out " + (scratch() / "d").string(), "--alpha"},
-        {"demo --eta 1 --out " + (scratch() / "d").string(), "--eta"},
-        {"demo --eta 1.5 --transport sideways --out " + (scratch() / "d").string(), "--transport"},
+        {"demo -n 0 --no-html --out " + (scratch() / "d").string(), "-n"},  // no page: three.js not needed
+        {"demo --alpha -1 --no-html --out " + (scratch() / "d").string(), "--alpha"},
+        {"demo --eta 1 --no-html --out " + (scratch() / "d").string(), "--eta"},
+        {"demo --eta 1.5 --transport sideways --no-html --out " + (scratch() / "d").string(), "--transport"},
         {"merge --out " + (scratch() / "m.txt").string() + " a.npy", "--out"},
         {"merge --out " + (scratch() / "m.npy").string() + " missing.npy", "SHARD"},
     };
@@ -276,6 +290,11 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
 TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown report that answers first; "
           "bench/check_targets.py checks the project's targets on its CSV")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
+    const ggxapp::ClangTool clang = ggxapp::find_clang();  // for the limits' op counts
+    if (!ggxtest::skip_unless(ggxtest::plotting_python_present(), ggxtest::plotting_python_reason) ||
+        !ggxtest::skip_unless(!clang.path.empty(), "needs clang for the limits' op counts: " + clang.unavailable))
+        return;
     fs::path dir = scratch() / "bench";
     fs::create_directories(dir);
     Run run = ggx("bench --methods caps,heitz --precisions precise --jobs write,furnace,world -n 2^16 "
@@ -320,9 +339,9 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
     CHECK(md.find("Targets") == std::string::npos);  // the project's targets are bench/check_targets.py's
     CHECK(md.find("e+0") == std::string::npos);      // numbers for people, not 7.87954e+07
     // The project's targets from the same CSV, written into a copy of the report.
-    Run targets = ggxtest::run_ggx("python3 " GGX_CHECK_TARGETS " " + (dir / "b.csv").string() + " --into " +
-                              (dir / "B.md").string() + " > " + (dir / "targets.md").string(),
-                          dir / "targets.err", false);
+    Run targets = ggxtest::run_ggx("python3 " + ggxtest::check_targets_script() + " " + (dir / "b.csv").string() +
+                                       " --into " + (dir / "B.md").string() + " > " + (dir / "targets.md").string(),
+                                   dir / "targets.err", false);
     CAPTURE(targets.err);
     REQUIRE(targets.status == 0);
     const std::string with_targets = read_all(dir / "B.md");
@@ -347,6 +366,7 @@ TEST_CASE("ggx bench writes a CSV of every row, two PNG charts and a Markdown re
 TEST_CASE("ggx merge refuses a damaged shard: a sidecar without its fields, a .npy shorter than its shape or of "
           "other columns")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     fs::path dir = scratch() / "damaged";
     fs::create_directories(dir);
     for (const char* name : {"a", "b"})
@@ -385,6 +405,7 @@ TEST_CASE("ggx merge refuses a damaged shard: a sidecar without its fields, a .n
 
 TEST_CASE("ggx sample writes .csv with a header and .ply point clouds")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     fs::path csv = scratch() / "c.csv", ply = scratch() / "c.ply";
     REQUIRE(ggx("sample --method caps -n 300 --fields o,pdf_o --out " + csv.string()).status == 0);
     std::istringstream lines(read_all(csv));
@@ -422,6 +443,7 @@ TEST_CASE("ggx sample writes .csv with a header and .ply point clouds")
 
 TEST_CASE("a job split across devices writes the same bytes as one device")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     fs::path one = scratch() / "one.npy", split = scratch() / "split.npy";
     const std::string common = "sample --method caps-iso --alpha 0.4 --normal 0.2,0.1,1 --theta 40 -n 2500000 --seed 9 ";
     REQUIRE(ggx(common + "--out " + one.string()).status == 0);
@@ -437,6 +459,7 @@ TEST_CASE("a job split across devices writes the same bytes as one device")
 
 TEST_CASE("shards with consecutive --first ranges merge to exactly the one-run file")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     for (const std::string ext : {".npy", ".csv"}) {
         fs::path a = scratch() / ("a" + ext), b = scratch() / ("b" + ext), whole = scratch() / ("w" + ext),
                  merged = scratch() / ("m" + ext);
@@ -460,6 +483,7 @@ TEST_CASE("shards with consecutive --first ranges merge to exactly the one-run f
 
 TEST_CASE("ggx merge --manifest lists the shards in order, checked like a merge, and copies nothing")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     fs::path dir = scratch() / "manifest";
     fs::create_directories(dir / "parts");
     const std::string common = "sample --method caps --alpha 0.2 --theta 70 --seed 3 -n 5000 ";
@@ -507,10 +531,11 @@ TEST_CASE("ggx merge --manifest lists the shards in order, checked like a merge,
 
 TEST_CASE("ggx bench without its native baseline still finishes and says the baseline is not available")
 {
+    const ggxtest::ScratchFolder case_folder("cli");
     fs::path dir = scratch() / "no-native";
     fs::create_directories(dir);
     const fs::path missing = dir / "nowhere" / "ggx-native";
-    Run run = ggxtest::run_ggx("GGX_NATIVE=" + missing.string() + " " + GGX_BINARY +
+    Run run = ggxtest::run_ggx("GGX_NATIVE=" + missing.string() + " " + ggxtest::ggx_binary() +
                                    " bench --methods caps --precisions precise --jobs write,furnace -n 2^12 --repeats 5 "
                                    "--no-accuracy --no-startup --csv " + (dir / "b.csv").string() + " --markdown " +
                                    (dir / "B.md").string(),
@@ -528,10 +553,14 @@ TEST_CASE("ggx bench without its native baseline still finishes and says the bas
 
 TEST_CASE("ggx links no -march=native code: its baseline is the separate program ggx-native beside it")
 {
-    const fs::path native = fs::path(GGX_BINARY).parent_path() / "ggx-native";
+    const ggxtest::ScratchFolder case_folder("cli");
+    const fs::path native = fs::path(ggxtest::ggx_binary()).parent_path() / "ggx-native";
     REQUIRE(fs::is_regular_file(native));
+    if (!ggxtest::skip_unless(ggxtest::program_on_path("nm"),
+                              "needs nm to list ggx's symbols (apt-get install binutils)"))
+        return;
     fs::path symbols = scratch() / "nm.txt";
-    Run nm = ggxtest::run_ggx("{ nm -C " + std::string(GGX_BINARY) + " >" + symbols.string() + "; }",
+    Run nm = ggxtest::run_ggx("{ nm -C " + ggxtest::ggx_binary() + " >" + symbols.string() + "; }",
                               scratch() / "stderr.txt", false);
     CAPTURE(nm.err);
     REQUIRE(nm.status == 0);
@@ -543,7 +572,8 @@ TEST_CASE("ggx links no -march=native code: its baseline is the separate program
 
 TEST_CASE("ggx-native prints one timing per repeat and refuses a bad argument with status 2")
 {
-    const std::string native = (fs::path(GGX_BINARY).parent_path() / "ggx-native").string();
+    const ggxtest::ScratchFolder case_folder("cli");
+    const std::string native = (fs::path(ggxtest::ggx_binary()).parent_path() / "ggx-native").string();
     fs::path out = scratch() / "native.txt";
     Run run = ggxtest::run_ggx("{ " + native + " time caps-iso furnace_sum 4096 2 5 0.3 0.5 0 0.866025388 >" +
                                    out.string() + "; }",

@@ -1,7 +1,8 @@
 // test_histogram_cli.cpp - `ggx histogram` end to end: the chi-square test
 // passes for every method at the default configuration, fails for a wrong
 // pdf (negative control, exit 1 under --check), and the figure decodes as a
-// PNG of the expected size.
+// PNG of the expected size (skipped without a Python with matplotlib:
+// prerequisites.hpp).  Each case works in a folder of its own.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -14,15 +15,17 @@
 #include <stb/stb_image.h>
 
 #include "cli_runner.hpp"
+#include "prerequisites.hpp"
+#include "skip.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch()
+// The running case's own folder (each case makes one).
+const fs::path& scratch()
 {
-    static fs::path dir = ggxtest::scratch_dir("hist");
-    return dir;
+    return ggxtest::ScratchFolder::current();
 }
 
 int ggx(const std::string& args)
@@ -40,6 +43,7 @@ nlohmann::json summary(const fs::path& prefix)
 
 TEST_CASE("histogram: every method passes its own chi-square test at the default configuration")
 {
+    const ggxtest::ScratchFolder case_folder("hist");
     for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
         CAPTURE(method);
         fs::path prefix = scratch() / method;
@@ -58,6 +62,7 @@ TEST_CASE("histogram: every method passes its own chi-square test at the default
 
 TEST_CASE("histogram of m: every method passes against its pdf of m, and NDF normals fail the VNDF's")
 {
+    const ggxtest::ScratchFolder case_folder("hist");
     for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
         CAPTURE(method);
         fs::path prefix = scratch() / (std::string("m-") + method);
@@ -71,6 +76,7 @@ TEST_CASE("histogram of m: every method passes against its pdf of m, and NDF nor
 
 TEST_CASE("histogram: a wrong pdf is rejected and --check turns it into exit status 1")
 {
+    const ggxtest::ScratchFolder case_folder("hist");
     fs::path prefix = scratch() / "wrong";
     CHECK(ggx("histogram --method ndf --against caps -n 1e6 --check 0.01 --no-png --out " + prefix.string()) == 1);
     CHECK(summary(prefix)["p_value"].get<double>() < 1e-6);
@@ -78,6 +84,9 @@ TEST_CASE("histogram: a wrong pdf is rejected and --check turns it into exit sta
 
 TEST_CASE("histogram: the figure decodes as a 1280 x 400 PNG")
 {
+    const ggxtest::ScratchFolder case_folder("hist");
+    if (!ggxtest::skip_unless(ggxtest::plotting_python_present(), ggxtest::plotting_python_reason))
+        return;
     fs::path prefix = scratch() / "figure";
     REQUIRE(ggx("histogram --method bounded --alpha 0.2,0.5 --theta 70 -n 2e5 --out " + prefix.string()) == 0);
     int width = 0, height = 0, channels = 0;
@@ -87,12 +96,11 @@ TEST_CASE("histogram: the figure decodes as a 1280 x 400 PNG")
     CHECK(height == 400);
     CHECK(channels >= 3);
     stbi_image_free(pixels);
-    fs::remove_all(scratch());
 }
 
 TEST_CASE("histogram and sample of a rough dielectric (--eta): both lobes pass, bounded and eta 1 are refused")
 {
-    fs::create_directories(scratch());  // the figure's case removes the folder when it ends
+    const ggxtest::ScratchFolder case_folder("hist");
     const fs::path prefix = scratch() / "glass";
     const ggxtest::Run glass = ggxtest::run_ggx("histogram --method heitz --eta 1.5 --theta 130 -n 4e5 --check 0.001 "
                                                 "--no-png --out " + prefix.string(),

@@ -192,7 +192,7 @@ TEST_CASE("ggx stress offers and accepts exactly the library's precision modes")
     CHECK(fast.err.find("fast", fast.err.find("allowed is")) == std::string::npos);  // not among the allowed
     // The help (on stdout, sent to the captured stderr here).
     ggxtest::Run help =
-        ggxtest::run_ggx("{ " + std::string(GGX_BINARY) + " stress --help 1>&2; }", dir / "help.txt", false);
+        ggxtest::run_ggx("{ " + ggxtest::ggx_binary() + " stress --help 1>&2; }", dir / "help.txt", false);
     CAPTURE(help.err);
     CHECK(help.status == 0);
     const std::size_t line = help.err.find("--precision");
@@ -410,7 +410,7 @@ TEST_CASE("ggx stress --eta writes one row per method, side, index and cell; bou
     ggxtest::fs::path dir = ggxtest::scratch_dir("stress-eta");
     const std::string prefix = (dir / "map").string();
     ggxtest::Run run = ggxtest::run_ggx(
-        "{ " + std::string(GGX_BINARY) + " stress --eta 1.5,0.9999 --methods caps,bounded --no-png --out " + prefix +
+        "{ " + ggxtest::ggx_binary() + " stress --eta 1.5,0.9999 --methods caps,bounded --no-png --out " + prefix +
             " 1>&2; }",
         dir / "out.txt", false);
     CAPTURE(run.err);
@@ -456,7 +456,7 @@ TEST_CASE("ggx stress: a bad --eta exits 2 naming the flag and the allowed range
 TEST_CASE("ggx stress without --eta is the conductor's map, as before")
 {
     ggxtest::fs::path dir = ggxtest::scratch_dir("stress-default");
-    ggxtest::Run run = ggxtest::run_ggx("{ " + std::string(GGX_BINARY) + " stress --methods caps --no-png --out " +
+    ggxtest::Run run = ggxtest::run_ggx("{ " + ggxtest::ggx_binary() + " stress --methods caps --no-png --out " +
                                             (dir / "map").string() + " 1>&2; }",
                                         dir / "out.txt", false);
     CAPTURE(run.err);

@@ -4,6 +4,8 @@
 // axes: both chi-square tests; a pdf off by 2: the pdf from (i, o) and its
 // integral), naming them, with exit 1 under --check; a file that does not
 // compile exits 1 naming its file and line; bad flags exit 2 naming the flag.
+// `ggx demo --sampler` is skipped without three.js for its page
+// (prerequisites.hpp).  Each case works in a folder of its own.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -15,21 +17,22 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "prerequisites.hpp"
+#include "skip.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch()
+// The running case's own folder (each case makes one).
+const fs::path& scratch()
 {
-    static fs::path dir = ggxtest::scratch_dir("user-cli");
-    fs::create_directories(dir);
-    return dir;
+    return ggxtest::ScratchFolder::current();
 }
 
 std::string sampler_file(const std::string& name)
 {
-    return std::string(GGX_USER_SAMPLERS_DIR) + "/" + name;
+    return ggxtest::user_samplers_dir() + "/" + name;
 }
 
 ggxtest::Run ggx(const std::string& args)
@@ -52,6 +55,7 @@ std::map<std::string, bool> verdicts(const fs::path& prefix)
 
 TEST_CASE("ggx sample --sampler: a copy of caps writes caps' samples, named for its file")
 {
+    const ggxtest::ScratchFolder case_folder("user-cli");
     const fs::path mine = scratch() / "mine.npy", caps = scratch() / "caps.npy";
     const std::string common = " --alpha 0.2,0.5 --theta 75 --sequence sobol -n 3000 --fields m,o,pdf_o,weight,u ";
     REQUIRE(ggx("sample --sampler " + sampler_file("caps_copy.h") + common + "--out " + mine.string()).status == 0);
@@ -65,6 +69,7 @@ TEST_CASE("ggx sample --sampler: a copy of caps writes caps' samples, named for 
 
 TEST_CASE("ggx histogram --sampler: every check passes for a copy of caps, a sampler of m alone too")
 {
+    const ggxtest::ScratchFolder case_folder("user-cli");
     for (const std::string file : {"caps_copy.h", "heitz_normal_only.h"}) {
         CAPTURE(file);
         const fs::path prefix = scratch() / "good";
@@ -83,6 +88,7 @@ TEST_CASE("ggx histogram --sampler: every check passes for a copy of caps, a sam
 
 TEST_CASE("ggx histogram --sampler: the negative controls fail the checks they must, by name")
 {
+    const ggxtest::ScratchFolder case_folder("user-cli");
     struct Control {
         const char* file;
         std::vector<std::string> failing, passing;
@@ -113,6 +119,7 @@ TEST_CASE("ggx histogram --sampler: the negative controls fail the checks they m
 
 TEST_CASE("ggx --sampler: a file that does not compile exits 1 naming its file and line; bad flags exit 2")
 {
+    const ggxtest::ScratchFolder case_folder("user-cli");
     const ggxtest::Run broken = ggx("sample --sampler " + sampler_file("syntax_error.h") + " -n 10 --out " +
                                     (scratch() / "broken.npy").string());
     CHECK(broken.status == 1);
@@ -139,6 +146,7 @@ TEST_CASE("ggx --sampler: a file that does not compile exits 1 naming its file a
 
 TEST_CASE("ggx stress --sampler: a user sampler's device map beside the methods'; NaN where it divides by zero only")
 {
+    const ggxtest::ScratchFolder case_folder("user-cli");
     const fs::path prefix = scratch() / "stress";
     const ggxtest::Run run = ggx("stress --methods caps --sampler " + sampler_file("divides_by_zero.h") +
                                  " --sampler " + sampler_file("caps_copy.h") + " --no-png --out " + prefix.string());
@@ -169,6 +177,7 @@ TEST_CASE("ggx stress --sampler: a user sampler's device map beside the methods'
 
 TEST_CASE("ggx bench --sampler: a copy of caps gets caps' accuracy; the pdf self-consistency catches a pdf off by 2")
 {
+    const ggxtest::ScratchFolder case_folder("user-cli");
     const fs::path csv_path = scratch() / "bench.csv";
     const ggxtest::Run run =
         ggx("bench --methods caps --precisions precise --jobs write,furnace --sequences philox -n 2^14 --repeats 5 "
@@ -202,6 +211,7 @@ TEST_CASE("ggx bench --sampler: a copy of caps gets caps' accuracy; the pdf self
 
 TEST_CASE("ggx converge --sampler: a copy of caps converges as caps, with philox and sobol")
 {
+    const ggxtest::ScratchFolder case_folder("user-cli");
     const fs::path csv_path = scratch() / "converge.csv";
     const ggxtest::Run run = ggx("converge --methods caps --sampler " + sampler_file("caps_copy.h") +
                                  " --integrands albedo,disk --alphas 0.3 --thetas 45 --max-n 2^10 --randomizations 8 "
@@ -220,6 +230,9 @@ TEST_CASE("ggx converge --sampler: a copy of caps converges as caps, with philox
 
 TEST_CASE("ggx demo --sampler: the user sampler's cloud, histogram and row beside the methods'")
 {
+    const ggxtest::ScratchFolder case_folder("user-cli");
+    if (!ggxtest::skip_unless(ggxtest::three_js_present(), ggxtest::three_js_reason))
+        return;
     const fs::path out = scratch() / "demo";
     const ggxtest::Run run = ggx("demo -n 300 --histogram-n 2e4 --no-png --sampler " + sampler_file("caps_copy.h") +
                                  " --sampler-name mine --out " + out.string());

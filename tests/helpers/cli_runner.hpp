@@ -1,7 +1,8 @@
-// cli_runner.hpp - what the tests of the `ggx` tool share: a scratch
-// folder per test process (removed at exit; scratch.hpp), running the tool (GGX_BINARY,
-// set by CMake) with its exit status and stderr, reading a file back whole,
-// the rows of a `ggx bench` CSV and a cell of a CSV by its column's name.
+// cli_runner.hpp - what the tests of the `ggx` tool share: scratch folders
+// and reading a file back whole (scratch.hpp), running the tool (GGX_BINARY,
+// set by CMake or the environment: test_paths.hpp) with its exit status and
+// stderr, the rows of a `ggx bench` CSV and a cell of a CSV by its column's
+// name.
 #pragma once
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "scratch.hpp"
+#include "test_paths.hpp"
 
 namespace ggxtest {
 
@@ -28,7 +30,7 @@ struct Run {
 // stdout discarded; stderr goes through `err_file`.
 inline Run run_ggx(const std::string& args, const fs::path& err_file, bool prefix_binary = true)
 {
-    std::string command = (prefix_binary ? std::string(GGX_BINARY) + " " : std::string()) + args + " >/dev/null 2>" +
+    std::string command = (prefix_binary ? ggxtest::ggx_binary() + " " : std::string()) + args + " >/dev/null 2>" +
                           err_file.string();
     int raw = std::system(command.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_all(err_file)};

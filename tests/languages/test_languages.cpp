@@ -8,10 +8,12 @@
 //  - the kernel of examples/cuda compiles to PTX the same way; where nvcc is installed, the file
 //    above and the whole example (host code too) compile with it;
 //  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check.
-// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h) are OpenCL C alone.
+// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h, ggx_histogram_bin.h) are OpenCL C alone.
 // ggx_user_sampler.h declares what a user sampler's file defines after it: it compiles
 // with the test samplers of tests/user_samplers (one of whole samples, one of m alone) and the
 // worked example of examples/user_sampler after it.
+// The compilers and folders are CMake's, each overridable by the environment (test_paths.hpp);
+// each case works in a folder of its own.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -26,12 +28,13 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "scratch.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h"};
+const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h", "ggx_histogram_bin.h"};
 
 struct Result {
     int status;
@@ -56,7 +59,7 @@ Result run(const std::string& command)
 std::vector<std::string> public_headers()
 {
     std::vector<std::string> names;
-    for (const fs::directory_entry& e : fs::directory_iterator(GGX_KERNEL_DIR))
+    for (const fs::directory_entry& e : fs::directory_iterator(ggxtest::kernel_dir()))
         if (e.path().extension() == ".h" &&
             std::find(kernel_only.begin(), kernel_only.end(), e.path().filename().string()) == kernel_only.end())
             names.push_back(e.path().filename().string());
@@ -65,26 +68,27 @@ std::vector<std::string> public_headers()
 }
 
 const std::string cxx_warnings = " -Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow -Werror";
-const std::string kernels = std::string(" -I") + GGX_KERNEL_DIR;
+const std::string kernels = " -I" + ggxtest::kernel_dir();
 
 // The commands that compile `source` (a file) in each language.
 std::string gcc_cxx(const std::string& source)
 {
-    return std::string(GGX_GXX) + " -std=c++17 -fsyntax-only" + cxx_warnings + kernels + " -x c++ " + source;
+    return ggxtest::gxx() + " -std=c++17 -fsyntax-only" + cxx_warnings + kernels + " -x c++ " + source;
 }
 std::string clang_cxx(const std::string& source)
 {
-    return std::string(GGX_CLANGXX) + " -std=c++17 -fsyntax-only" + cxx_warnings + kernels + " -x c++ " + source;
+    return ggxtest::clangxx() + " -std=c++17 -fsyntax-only" + cxx_warnings + kernels + " -x c++ " + source;
 }
 std::string clang_cuda(const std::string& source, const std::string& output = "")
 {
-    return std::string(GGX_CLANGXX) + " -x cuda --cuda-device-only -nocudainc -nocudalib --cuda-gpu-arch=sm_80" +
-           " -Wno-unknown-cuda-version -Wall -Wextra -Werror -O2 -include cuda_shim.h -I" + GGX_CUDA_DIR + kernels +
+    return ggxtest::clangxx() + " -x cuda --cuda-device-only -nocudainc -nocudalib --cuda-gpu-arch=sm_80" +
+           " -Wno-unknown-cuda-version -Wall -Wextra -Werror -O2 -include cuda_shim.h -I" + ggxtest::cuda_dir() +
+           kernels +
            (output.empty() ? " -fsyntax-only " : " -S -o " + output + " ") + source;
 }
 std::string clang_opencl(const std::string& source)
 {
-    return std::string(GGX_CLANG) + " -x cl -cl-std=CL1.2 -Xclang -finclude-default-header -fsyntax-only -Wall" +
+    return ggxtest::clang() + " -x cl -cl-std=CL1.2 -Xclang -finclude-default-header -fsyntax-only -Wall" +
            " -Werror" + kernels + " " + source;
 }
 
@@ -137,7 +141,7 @@ std::string identifier_of(ggxcl::Method method)
 
 TEST_CASE("the compilers are installed (scripts/install-deps.sh: clang-15)")
 {
-    for (const std::string path : {GGX_CLANGXX, GGX_CLANG}) {
+    for (const std::string path : {ggxtest::clangxx(), ggxtest::clang()}) {
         INFO("clang-15 not found (", path, "): apt-get install clang-15");
         CHECK(path.find("NOTFOUND") == std::string::npos);
     }
@@ -145,7 +149,7 @@ TEST_CASE("the compilers are installed (scripts/install-deps.sh: clang-15)")
 
 TEST_CASE("every public device header compiles alone as C++17 (GCC, Clang), CUDA and OpenCL C 1.2")
 {
-    const fs::path dir = ggxtest::scratch_dir("languages");
+    const ggxtest::ScratchFolder dir("languages");
     const std::vector<std::string> headers = public_headers();
     REQUIRE(headers.size() >= 15);
     for (const std::string& header : headers) {
@@ -159,10 +163,10 @@ TEST_CASE("every public device header compiles alone as C++17 (GCC, Clang), CUDA
 
 TEST_CASE("a user sampler's file after ggx_user_sampler.h compiles as C++17, CUDA and OpenCL C 1.2")
 {
-    const fs::path dir = ggxtest::scratch_dir("languages");
-    const std::string tests = std::string(GGX_USER_SAMPLERS_DIR) + "/";
+    const ggxtest::ScratchFolder dir("languages");
+    const std::string tests = ggxtest::user_samplers_dir() + "/";
     for (const std::string path : {tests + "caps_copy.h", tests + "heitz_normal_only.h",
-                                   std::string(GGX_EXAMPLES_DIR) + "/user_sampler/caps_native_sincos.h"}) {
+                                   ggxtest::examples_dir() + "/user_sampler/caps_native_sincos.h"}) {
         CAPTURE(path);
         const std::string file = fs::path(path).filename().string();
         const std::string samples_m = file == "heitz_normal_only.h" ? "1" : "0";
@@ -174,7 +178,7 @@ TEST_CASE("a user sampler's file after ggx_user_sampler.h compiles as C++17, CUD
 
 TEST_CASE("control: float math outside ggx_platform.h, promoted to double, fails the C++ check")
 {
-    const fs::path dir = ggxtest::scratch_dir("languages");
+    const ggxtest::ScratchFolder dir("languages");
     const std::string bad = write_file(dir / "promotes.cpp", "#include <cmath>\n"
                                                              "inline float half_length(float x) { return sqrt(x) / 2; }\n")
                                 .string();
@@ -184,9 +188,9 @@ TEST_CASE("control: float math outside ggx_platform.h, promoted to double, fails
 
 TEST_CASE("every sampler and pdf called from CUDA: PTX with an entry point per method and no local memory")
 {
-    const fs::path dir = ggxtest::scratch_dir("languages");
+    const ggxtest::ScratchFolder dir("languages");
     const std::string ptx_path = (dir / "ggx_cuda_all.ptx").string();
-    const std::string source = std::string(GGX_CUDA_DIR) + "/ggx_cuda_all.cu";
+    const std::string source = ggxtest::cuda_dir() + "/ggx_cuda_all.cu";
     check_compiles("clang++ -x cuda -S", clang_cuda(source, ptx_path));
     const std::string ptx = ggxtest::read_all(ptx_path);
     const std::vector<std::string> entries = entries_of(ptx);
@@ -204,11 +208,11 @@ TEST_CASE("every sampler and pdf called from CUDA: PTX with an entry point per m
 
 TEST_CASE("the CUDA example's kernel compiles to PTX with clang alone")
 {
-    const fs::path dir = ggxtest::scratch_dir("languages");
+    const ggxtest::ScratchFolder dir("languages");
     const std::string unit = write_file(dir / "example.cu", "#include \"ggx_cuda_furnace.cuh\"\n").string();
     const std::string ptx_path = (dir / "example.ptx").string();
     check_compiles("clang++ -x cuda -S (example)",
-                   clang_cuda("-I" + std::string(GGX_EXAMPLES_DIR) + "/cuda " + unit, ptx_path));
+                   clang_cuda("-I" + ggxtest::examples_dir() + "/cuda " + unit, ptx_path));
     const std::vector<std::string> entries = entries_of(ggxtest::read_all(ptx_path));
     REQUIRE(entries.size() == 1);
     CHECK(entries[0].find("ggx_furnace_kernel") != std::string::npos);
@@ -216,14 +220,14 @@ TEST_CASE("the CUDA example's kernel compiles to PTX with clang alone")
 
 TEST_CASE("with nvcc, where installed: the same file and examples/cuda compile without a warning")
 {
-    if (std::string(GGX_NVCC).empty() || std::string(GGX_NVCC).find("NOTFOUND") != std::string::npos) {
+    if (ggxtest::nvcc().empty() || ggxtest::nvcc().find("NOTFOUND") != std::string::npos) {
         MESSAGE("nvcc not found: the clang CUDA checks above stand for it");
         return;
     }
-    const fs::path dir = ggxtest::scratch_dir("languages");
-    const std::string nvcc = std::string(GGX_NVCC) + " -std=c++17 -arch=sm_80 -Werror all-warnings" + kernels;
-    check_compiles("nvcc -ptx", nvcc + " -ptx -o " + (dir / "nvcc.ptx").string() + " " + GGX_CUDA_DIR +
+    const ggxtest::ScratchFolder dir("languages");
+    const std::string nvcc = ggxtest::nvcc() + " -std=c++17 -arch=sm_80 -Werror all-warnings" + kernels;
+    check_compiles("nvcc -ptx", nvcc + " -ptx -o " + (dir / "nvcc.ptx").string() + " " + ggxtest::cuda_dir() +
                                     "/ggx_cuda_all.cu");
-    check_compiles("nvcc example", nvcc + " -o " + (dir / "cuda_sample").string() + " " + GGX_EXAMPLES_DIR +
+    check_compiles("nvcc example", nvcc + " -o " + (dir / "cuda_sample").string() + " " + ggxtest::examples_dir() +
                                        "/cuda/cuda_sample.cu");
 }

@@ -70,6 +70,7 @@
 #include <nlohmann/json.hpp>
 
 #include "npy_file.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -279,7 +280,7 @@ TEST_SUITE("controls")
 {
 TEST_CASE("oclgrind is installed and is the only platform of the programs it runs")
 {
-    Run run = run_under_oclgrind(GGX_BINARY, {"devices"});
+    Run run = run_under_oclgrind(ggxtest::ggx_binary(), {"devices"});
     check_clean(run);
     CHECK(run.out.find("Oclgrind") != std::string::npos);
     CHECK(run.out.find("1:") == std::string::npos);  // one device only
@@ -295,14 +296,14 @@ TEST_CASE("the detector reports every deliberately bad kernel, and nothing for a
                              Control{"uninit", "Uninitialized value written to global memory"},
                              Control{"race", "Write-write data race at global memory address"},
                              Control{"api", "Oclgrind - OpenCL runtime error detected"}}) {
-        Run run = run_under_oclgrind(OCLGRIND_PROBE, {c.mode});
+        Run run = run_under_oclgrind(ggxtest::oclgrind_probe(), {c.mode});
         INFO("mode " << c.mode << "\nstdout: " << run.out << "\nreports:\n" << joined(run.reports));
         CHECK(run.status == 0);  // the probe itself succeeded: only the detector sees the fault
         CHECK(run.out.find(std::string("probe ") + c.mode) != std::string::npos);
         CHECK_FALSE(run.reports.empty());
         CHECK(any_contains(run.reports, c.header));
     }
-    check_clean(run_under_oclgrind(OCLGRIND_PROBE, {"clean"}));
+    check_clean(run_under_oclgrind(ggxtest::oclgrind_probe(), {"clean"}));
     // The detector on synthetic text: an indented detail line alone, or any stray text, still counts.
     CHECK(oclgrind_reports("", "").empty());
     CHECK(oclgrind_reports("\n\n", " \n").empty());
@@ -312,13 +313,13 @@ TEST_CASE("the detector reports every deliberately bad kernel, and nothing for a
 
 TEST_CASE("Oclgrind's bug: atomic_add to a buffer zeroed by clEnqueueFillBuffer is reported, to a written one not")
 {
-    Run filled = run_under_oclgrind(OCLGRIND_PROBE, {"fill"});
+    Run filled = run_under_oclgrind(ggxtest::oclgrind_probe(), {"fill"});
     INFO("fill stdout: " << filled.out << "\nreports:\n" << joined(filled.reports));
     CHECK(filled.status == 0);
     CHECK(filled.out.find("counts 16 16 16 16") != std::string::npos);  // fill did zero the buffer
     CHECK(any_contains(filled.reports, "Uninitialized value written to global memory"));
 
-    Run written = run_under_oclgrind(OCLGRIND_PROBE, {"write"});
+    Run written = run_under_oclgrind(ggxtest::oclgrind_probe(), {"write"});
     CHECK(written.out.find("counts 16 16 16 16") != std::string::npos);
     check_clean(written);
 }
@@ -358,7 +359,7 @@ TEST_CASE("ggx sample under Oclgrind: every method, precise and relaxed, every f
         std::vector<std::string> args = {"sample", "-n", std::to_string(r.count), "--seed", "3",
                                          "--fields", "m,o,pdf_m,pdf_o,weight", "--out", out.string()};
         args.insert(args.end(), r.args.begin(), r.args.end());
-        Run run = run_under_oclgrind(GGX_BINARY, args);
+        Run run = run_under_oclgrind(ggxtest::ggx_binary(), args);
         check_clean(run);
         if (run.status == 0) {
             INFO(run.command);
@@ -376,7 +377,7 @@ TEST_CASE("ggx histogram --no-png under Oclgrind: o and m, two work-groups")
         std::vector<std::string> args = {"histogram", "-n", "20000", "--bins-z", "16", "--bins-phi", "32",
                                          "--no-png", "--out", prefix.string()};
         args.insert(args.end(), extra.begin(), extra.end());
-        Run run = run_under_oclgrind(GGX_BINARY, args);
+        Run run = run_under_oclgrind(ggxtest::ggx_binary(), args);
         check_clean(run);
         if (run.status != 0)
             continue;
@@ -393,7 +394,7 @@ TEST_SUITE("user sampler")
 {
 TEST_CASE("ggx sample and histogram --sampler under Oclgrind: a copy of caps, clean, with caps' bits")
 {
-    const std::string file = std::string(GGX_USER_SAMPLERS_DIR) + "/caps_copy.h";
+    const std::string file = ggxtest::user_samplers_dir() + "/caps_copy.h";
     std::string npy[2];
     int k = 0;
     for (const std::vector<std::string> chosen : {std::vector<std::string>{"--sampler", file},
@@ -402,7 +403,7 @@ TEST_CASE("ggx sample and histogram --sampler under Oclgrind: a copy of caps, cl
         std::vector<std::string> args = {"sample", "-n", "1000", "--seed", "5", "--alpha", "0.2,0.4",
                                          "--fields", "m,o,pdf_m,pdf_o,weight", "--out", out.string()};
         args.insert(args.end(), chosen.begin(), chosen.end());
-        Run run = run_under_oclgrind(GGX_BINARY, args);
+        Run run = run_under_oclgrind(ggxtest::ggx_binary(), args);
         check_clean(run);
         if (run.status == 0)
             npy[k] = read_all(out);
@@ -411,8 +412,9 @@ TEST_CASE("ggx sample and histogram --sampler under Oclgrind: a copy of caps, cl
     CHECK_FALSE(npy[0].empty());
     CHECK(npy[0] == npy[1]);
     const fs::path prefix = scratch() / "user-histogram";
-    Run run = run_under_oclgrind(GGX_BINARY, {"histogram", "--sampler", file, "-n", "20000", "--bins-z", "16",
-                                              "--bins-phi", "32", "--no-png", "--out", prefix.string()});
+    Run run = run_under_oclgrind(ggxtest::ggx_binary(),
+                                 {"histogram", "--sampler", file, "-n", "20000", "--bins-z", "16", "--bins-phi", "32",
+                                  "--no-png", "--out", prefix.string()});
     check_clean(run);
     CHECK(sum_f64_npy(prefix.string() + ".observed.npy") == 20000.0);
 }
@@ -423,7 +425,8 @@ TEST_SUITE("stress")
 TEST_CASE("ggx stress under Oclgrind: every method, precise, the whole grid")
 {
     const fs::path prefix = scratch() / "stress";
-    Run run = run_under_oclgrind(GGX_BINARY, {"stress", "--methods", "all", "--no-png", "--out", prefix.string()});
+    Run run = run_under_oclgrind(ggxtest::ggx_binary(),
+                                 {"stress", "--methods", "all", "--no-png", "--out", prefix.string()});
     check_clean(run);
     // The totals table: a device and a host row per method, no NaN or Inf on the device.
     int device_rows = 0;
@@ -449,7 +452,7 @@ TEST_SUITE("library")
 // oclgrind_driver CASE [COUNT]: exit 0, an "ok" line per group, nothing reported.
 void check_driver(const std::string& what, const std::string& count, int groups)
 {
-    Run run = run_under_oclgrind(OCLGRIND_DRIVER, {what, count});
+    Run run = run_under_oclgrind(ggxtest::oclgrind_driver(), {what, count});
     check_clean(run);
     INFO(run.command << "\n" << run.out);
     CHECK(run.out.find("device: Oclgrind Simulator") != std::string::npos);

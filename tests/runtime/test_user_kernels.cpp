@@ -137,18 +137,19 @@ TEST_CASE("each device header compiles alone, and all of them together")
 {
     auto& sampler = ggxtest::sampler();
     const std::string probe = "\n__kernel void probe(__global float* x) { x[0] = 1.0f; }\n";
+    const std::string options = "-DGGX_METHOD=3 -DGGX_BINS_Z=4 -DGGX_BINS_PHI=8";
     std::string all;
     for (const std::string& file : ggxcl::kernel_files()) {
         if (file.size() < 2 || file.substr(file.size() - 2) != ".h")
             continue;
         INFO(file);
         const std::string include = "#include \"" + file + "\"\n";
-        // ggx_bulk_params.h is the bulk kernels' header: it needs the method id.
-        CHECK_NOTHROW(
-            ggxcl::build_user_program(sampler.context(), sampler.device(), include + probe, "-DGGX_METHOD=3"));
+        // ggx_bulk_params.h is the bulk kernels' header: it needs the method id; ggx_histogram_bin.h
+        // the histogram's bin counts.
+        CHECK_NOTHROW(ggxcl::build_user_program(sampler.context(), sampler.device(), include + probe, options));
         all += include;
     }
-    CHECK_NOTHROW(ggxcl::build_user_program(sampler.context(), sampler.device(), all + probe, "-DGGX_METHOD=3"));
+    CHECK_NOTHROW(ggxcl::build_user_program(sampler.context(), sampler.device(), all + probe, options));
 }
 
 TEST_CASE("a failed user build throws BuildError with the options and the log")

@@ -18,6 +18,8 @@
 #include <ggxcl/ggxcl.hpp>
 #include <ggxcl/opencl.hpp>
 
+#include "test_paths.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -28,7 +30,7 @@ std::string remarks_of_run(const std::string& ggx_arguments, const fs::path& cac
                            const std::string& environment = "", const std::string& self_arguments = "")
 {
     fs::path log = dir / "remarks.txt";
-    const std::string program = self_arguments.empty() ? std::string(GGX_BINARY) + " " + ggx_arguments
+    const std::string program = self_arguments.empty() ? ggxtest::ggx_binary() + " " + ggx_arguments
                                                        : "/proc/" + std::to_string(::getpid()) + "/exe" + self_arguments;
     // GGXCL_PROGRAM_CACHE=off: a binary from an earlier run would skip the compile whose remarks are read.
     std::string command = environment + "GGXCL_PROGRAM_CACHE=off POCL_VECTORIZER_REMARKS=1 POCL_CACHE_DIR=" +

@@ -1,4 +1,4 @@
-// test_histogram_bins.cpp - the histogram's binning (kernels/ggx_histogram.cl)
+// test_histogram_bins.cpp - the histogram's binning (kernels/ggx_histogram_bin.h)
 // without atan2: the phi bin from a polynomial angle and the side of the
 // edge nearest to it.  Over 1e8 caps directions it gives the bin of the
 // atan2 formula it replaces for every direction not within 1e-6 rad of a
@@ -7,6 +7,9 @@
 // all; directions exactly on the quarter-turn edges, the pole and -0 fall
 // where atan2 puts them; and the two counting strategies (local atomics,
 // for GPUs; bin indices then counted, for CPUs) give the same counts.
+// The comparisons build the binning header and their own kernels alone: the
+// histogram kernels' local counters at 24 x 2^16 bins (6 MB) would exceed
+// every GPU's local memory.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -19,6 +22,9 @@
 namespace {
 
 const char* compare_kernel = R"CL(
+#include "ggx_samplers.h"
+#include "ggx_histogram_bin.h"
+
 // The bin of the atan2 formula the library used before.
 uint atan2_bin(ggx_vec3 d)
 {
@@ -55,12 +61,12 @@ __kernel void bins_of(__global const float* d, __global uint* bins)
 }
 )CL";
 
+// The comparison kernels with nz x nphi bins: the samplers, the binning header and nothing else.
 cl::Program compare_program(int nz, int nphi)
 {
     auto& s = ggxtest::sampler();
-    std::string options = "-DGGX_METHOD=3 -DGGX_BINS_Z=" + std::to_string(nz) + " -DGGX_BINS_PHI=" + std::to_string(nphi);
-    return ggxcl::build_user_program(s.context(), s.device(), ggxcl::kernel_source("ggx_histogram.cl") + compare_kernel,
-                                     options);
+    std::string options = "-DGGX_BINS_Z=" + std::to_string(nz) + " -DGGX_BINS_PHI=" + std::to_string(nphi);
+    return ggxcl::build_user_program(s.context(), s.device(), compare_kernel, options);
 }
 
 // Angular distance of (x, y) from the nearest of nphi edges, in double.
@@ -116,6 +122,13 @@ TEST_CASE("1e8 caps directions: the new phi bin is atan2's except within 1e-6 ra
     }
 }
 
+TEST_CASE("the comparison program at 24 x 2^16 bins holds its two kernels alone: no histogram kernel")
+{
+    const std::string names = compare_program(24, 65536).getInfo<CL_PROGRAM_KERNEL_NAMES>();
+    CAPTURE(names);
+    CHECK((names == "compare_bins;bins_of" || names == "bins_of;compare_bins"));
+}
+
 TEST_CASE("directions on the quarter-turn edges, the pole and -0 fall where atan2 puts them")
 {
     auto& s = ggxtest::sampler();
@@ -161,6 +174,10 @@ TEST_CASE("both counting strategies give the same counts: local atomics and bin 
     cl::Kernel k(program, "ggx_histogram");
     const ggxcl::Vec3 v = ggxcl::normalized(p).view;
     const std::uint32_t per_item = 64, group = 64;
+    // The kernel's counters live in local memory: nz x nphi is small enough for any device.
+    const cl_ulong local_bytes = (nz * nphi + 2) * sizeof(cl_uint);
+    REQUIRE(local_bytes <= s.device().getInfo<CL_DEVICE_LOCAL_MEM_SIZE>());
+    REQUIRE(group <= k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(s.device()));
     cl::Buffer counts(s.context(), CL_MEM_READ_WRITE, (nz * nphi + 1) * 4);
     std::vector<cl_uint> host(nz * nphi + 1, 0);
     s.queue().enqueueWriteBuffer(counts, CL_TRUE, 0, host.size() * 4, host.data());

@@ -65,7 +65,7 @@ Result ggx(const std::string& args, const Variables& variables = {})
     for (const auto& [name, value] : variables)
         command += " '" + name + "=" + value + "'";
     const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
-    command += " " + std::string(GGX_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+    command += " " + ggxtest::ggx_binary() + " " + args + " >" + out.string() + " 2>" + err.string();
     int raw = std::system(command.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_all(out), read_all(err)};
 }

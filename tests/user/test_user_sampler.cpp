@@ -17,6 +17,7 @@
 
 #include "bit_compare.hpp"
 #include "device_fixture.hpp"
+#include "test_paths.hpp"
 
 namespace fs = std::filesystem;
 
@@ -26,7 +27,7 @@ using ggxtest::same_bits;
 
 std::string sampler_file(const std::string& name)
 {
-    return std::string(GGX_USER_SAMPLERS_DIR) + "/" + name;
+    return ggxtest::user_samplers_dir() + "/" + name;
 }
 
 ggxcl::SampleParams user_params(const std::string& file, float ax = 0.2f, float ay = 0.5f)

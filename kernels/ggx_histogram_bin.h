@@ -1,0 +1,69 @@
+// ggx_histogram_bin.h - the histogram's bin of a direction (OpenCL C only),
+// apart from the kernels of ggx_histogram.cl so that a program that bins
+// directions builds nothing else (no kernel, no local memory).
+// Build options: GGX_BINS_Z, GGX_BINS_PHI.
+// Bin of a unit d: z bin floor((dz + 1)/2 nz), phi bin k for phi in
+// [2 pi k/nphi, 2 pi (k+1)/nphi), phi the angle of (dx, dy) in [0, 2 pi)
+// (atan2's, with -0 as 0); index z_bin * nphi + phi_bin.  A direction that
+// is not finite gets index GGX_BINS, the first after the bins.
+#ifndef GGX_HISTOGRAM_BIN_H
+#define GGX_HISTOGRAM_BIN_H
+
+#include "ggx_common.h"
+#include "ggx_sincos.h"
+
+#if !defined(GGX_BINS_Z) || !defined(GGX_BINS_PHI)
+#error "build with -DGGX_BINS_Z and -DGGX_BINS_PHI"
+#endif
+#define GGX_BINS (GGX_BINS_Z * GGX_BINS_PHI)
+
+// The angle of (x, y) in [0, 2 pi) within 1e-5 rad: atan of min/max on
+// [0, 1] by a polynomial, then the octant.  No call: it vectorizes.
+GGX_INLINE float ggx_rough_angle(float x, float y)
+{
+    // |y| by a select, |x| by fabs: two identical fabs let LLVM's SLP
+    // vectorizer pair them, which then stops PoCL's loop vectorizer.
+    float ax = fabs(x), ay = y < 0.0f ? -y : y;
+    float big = fmax(ax, ay), small = fmin(ax, ay);
+    float a = big > 0.0f ? small / big : 0.0f;
+    float s = a * a;
+    float t = -1.172120e-2f;
+    t = t * s + 5.265332e-2f;
+    t = t * s - 1.1643287e-1f;
+    t = t * s + 1.9354346e-1f;
+    t = t * s - 3.3262347e-1f;
+    t = t * s + 9.9997726e-1f;
+    t *= a;
+    t = ay > ax ? 0.5f * GGX_PI - t : t;
+    t = x < 0.0f ? GGX_PI - t : t;
+    return y < 0.0f ? GGX_TWO_PI - t : t;
+}
+
+// The phi bin: the edge nearest to the rough angle decides it.  Edge e is
+// the direction (cos, sin) of 2 pi e / nphi from ggx_sincos_2pi (exact at the
+// quarter turns, within an ulp elsewhere; computed, not loaded from a table,
+// so that the code vectorizes); (x, y) on or counterclockwise of it lies in
+// bin e, clockwise of it in bin e - 1 (the sign of edge x d).  Exact while
+// the rough angle's error stays under half a bin (the host allows at most
+// 2^16 phi bins: half a bin is 4.8e-5 rad).  The pole (0, 0) gets angle 0:
+// bin 0.
+GGX_INLINE int ggx_phi_bin(float x, float y)
+{
+    int e = (int)rint(ggx_rough_angle(x, y) * (GGX_BINS_PHI / GGX_TWO_PI));  // 0 .. nphi
+    float s, c;
+    ggx_sincos_2pi((float)e / (float)GGX_BINS_PHI, &s, &c);
+    int b = c * y - s * x < 0.0f ? e - 1 : e;
+    return b < 0 ? b + GGX_BINS_PHI : (b >= GGX_BINS_PHI ? b - GGX_BINS_PHI : b);
+}
+
+// A direction that is not finite is binned as (1, 0, 0) first, then counted apart.
+GGX_INLINE uint ggx_bin_of(ggx_vec3 d)
+{
+    int finite = isfinite(d.x) && isfinite(d.y) && isfinite(d.z);
+    float x = finite ? d.x : 1.0f, y = finite ? d.y : 0.0f, z = finite ? d.z : 0.0f;
+    int zb = clamp((int)floor(0.5f * (z + 1.0f) * GGX_BINS_Z), 0, GGX_BINS_Z - 1);
+    int pb = ggx_phi_bin(x, y);
+    return finite ? (uint)(zb * GGX_BINS_PHI + pb) : (uint)GGX_BINS;
+}
+
+#endif // GGX_HISTOGRAM_BIN_H

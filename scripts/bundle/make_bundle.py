@@ -128,7 +128,10 @@ def ctest_file(trees, tests):
              "execute_process(COMMAND pwd OUTPUT_VARIABLE GGX_BUNDLE OUTPUT_STRIP_TRAILING_WHITESPACE)", ""]
     for test in tests:
         name = test["name"]
-        lines.append(f"add_test({name} " + " ".join(property_value(trees, w) for w in test["command"]) + ")")
+        command = list(test["command"])
+        if not trees.relative(command[0]):  # an interpreter (/usr/bin/sh): by name, from the node's PATH
+            command[0] = os.path.basename(command[0])
+        lines.append(f"add_test({name} " + " ".join(property_value(trees, w) for w in command) + ")")
         props = {p["name"]: p["value"] for p in test.get("properties", [])}
         env = [e for e in props.pop("ENVIRONMENT", []) if e.split("=", 1)[0] not in COMPILED_PATHS] + environment
         labels = list(props.pop("LABELS", [])) + (["quick"] if name in QUICK else [])

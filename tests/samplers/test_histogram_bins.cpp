@@ -173,11 +173,12 @@ TEST_CASE("both counting strategies give the same counts: local atomics and bin 
         ggxcl::build_user_program(s.context(), s.device(), ggxcl::kernel_source("ggx_histogram.cl"), options);
     cl::Kernel k(program, "ggx_histogram");
     const ggxcl::Vec3 v = ggxcl::normalized(p).view;
-    const std::uint32_t per_item = 64, group = 64;
+    // Work-groups of 64, or of what the device allows this kernel (rusticl on llvmpipe: 32).
+    const std::uint32_t per_item = 64,
+                        group = std::uint32_t(std::min<std::size_t>(64, k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(s.device())));
     // The kernel's counters live in local memory: nz x nphi is small enough for any device.
     const cl_ulong local_bytes = (nz * nphi + 2) * sizeof(cl_uint);
     REQUIRE(local_bytes <= s.device().getInfo<CL_DEVICE_LOCAL_MEM_SIZE>());
-    REQUIRE(group <= k.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(s.device()));
     cl::Buffer counts(s.context(), CL_MEM_READ_WRITE, (nz * nphi + 1) * 4);
     std::vector<cl_uint> host(nz * nphi + 1, 0);
     s.queue().enqueueWriteBuffer(counts, CL_TRUE, 0, host.size() * 4, host.data());

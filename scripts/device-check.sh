@@ -44,21 +44,11 @@ if command -v nvidia-smi >/dev/null 2>&1; then
 else
   say "nvidia-smi not found: looking for the OpenCL driver anyway"
 fi
-nvidia_cl=""
-for candidate in $(ldconfig -p 2>/dev/null | awk '/libnvidia-opencl\.so\.1/ {print $NF}') \
-    /usr/lib/x86_64-linux-gnu/libnvidia-opencl.so.1 /usr/lib64/libnvidia-opencl.so.1 /usr/lib/libnvidia-opencl.so.1 \
-    /usr/local/nvidia/lib64/libnvidia-opencl.so.1; do
-  [ -e "$candidate" ] && { nvidia_cl="$candidate"; break; }
-done
-if ! grep -qs nvidia /etc/OpenCL/vendors/*.icd 2>/dev/null; then
-  [ -n "$nvidia_cl" ] || fail "no NVIDIA OpenCL driver: no ICD file names it and libnvidia-opencl.so.1 is not installed"
-  vendors="$out/icd-vendors"
-  mkdir -p "$vendors"
-  echo "$nvidia_cl" >"$vendors/nvidia.icd"
-  cp /etc/OpenCL/vendors/*.icd "$vendors/" 2>/dev/null || true
-  export OCL_ICD_VENDORS="$vendors"
-  say "ICD: wrote $vendors/nvidia.icd -> $nvidia_cl (OCL_ICD_VENDORS)"
-fi
+. scripts/bundle/nvidia_icd.sh
+# (into a file, not a subshell: the function exports OCL_ICD_VENDORS)
+nvidia_icd "$out" >"$out/icd.txt" ||
+  fail "no NVIDIA OpenCL driver: no ICD file names it and libnvidia-opencl.so.1 is not installed"
+tee -a "$summary" <"$out/icd.txt"
 
 # 2. Build tools and build.
 missing=""

@@ -220,7 +220,8 @@ def make_bundle(build, source, out):
     write_text(os.path.join(out, "CTestTestfile.cmake"), ctest_file(trees, tests))
     versions = symbol_versions(out)
     write_text(os.path.join(out, "requirements.txt"), f"GLIBC {versions['GLIBC']}\nGLIBCXX {versions['GLIBCXX']}\n")
-    shutil.copy2(os.path.join(source, "scripts", "bundle", "run.sh"), os.path.join(out, "run.sh"))
+    for script in ("run.sh", "nvidia_icd.sh"):
+        shutil.copy2(os.path.join(source, "scripts", "bundle", script), os.path.join(out, script))
     commit = subprocess.run(["git", "-C", source, "describe", "--always", "--dirty"], capture_output=True,
                             text=True).stdout.strip() or "unknown"
     write_text(os.path.join(out, "ABOUT.txt"),

@@ -56,21 +56,10 @@ fi
 say "runtimes: glibc $have_glibc (needs $need_glibc), $libstdcxx has GLIBCXX_$need_glibcxx"
 
 # 2. The OpenCL driver: NVIDIA's, named by an ICD file of our own when the system has none.
-if ! grep -qs nvidia /etc/OpenCL/vendors/*.icd 2>/dev/null && [ -z "${OCL_ICD_VENDORS:-}" ]; then
-  nvidia_cl=""
-  for candidate in $(ldconfig -p 2>/dev/null | awk '/libnvidia-opencl\.so\.1/ {print $NF}') \
-      /usr/lib/x86_64-linux-gnu/libnvidia-opencl.so.1 /usr/lib64/libnvidia-opencl.so.1 /usr/local/nvidia/lib64/libnvidia-opencl.so.1; do
-    [ -e "$candidate" ] && { nvidia_cl="$candidate"; break; }
-  done
-  if [ -n "$nvidia_cl" ]; then
-    vendors="$out/icd-vendors"
-    mkdir -p "$vendors"
-    cp /etc/OpenCL/vendors/*.icd "$vendors/" 2>/dev/null || true
-    echo "$nvidia_cl" >"$vendors/nvidia.icd"
-    export OCL_ICD_VENDORS="$vendors"
-    say "ICD: $vendors/nvidia.icd -> $nvidia_cl (OCL_ICD_VENDORS)"
-  fi
-fi
+. "$here/nvidia_icd.sh"
+# (into a file, not a pipe: the function exports OCL_ICD_VENDORS); no NVIDIA driver: the system's devices
+nvidia_icd "$out" >"$out/icd.txt" || true
+tee -a "$summary" <"$out/icd.txt"
 if ! timeout 60 "$ggx" devices >"$out/devices.txt" 2>&1; then
   cat "$out/devices.txt" | tee -a "$summary"
   say "run.sh: FAILED: ggx devices (no OpenCL device usable: see devices.txt)"

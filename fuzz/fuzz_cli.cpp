@@ -54,7 +54,8 @@ void check_batch(const ggxapp::Batch& batch)
         __builtin_trap();
     }
     check(unit(p.view) && unit(p.normal));
-    check(p.alpha_x >= 1e-30f && p.alpha_x <= 1e30f && p.alpha_y >= 1e-30f && p.alpha_y <= 1e30f);
+    check(p.alpha_x >= ggxcl::min_alpha && p.alpha_x <= ggxcl::max_alpha && p.alpha_y >= ggxcl::min_alpha &&
+          p.alpha_y <= ggxcl::max_alpha);
 }
 
 void parse_and_prepare(const std::vector<std::string>& tokens)

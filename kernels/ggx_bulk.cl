@@ -9,7 +9,8 @@
 //   GGX_ISOTROPIC, GGX_BELOW_HORIZON, GGX_WORLD_SPACE, GGX_NORMAL_IS_Z=0|1   what the request needs
 //   GGX_DIELECTRIC, GGX_IMPORTANCE=0|1  a rough dielectric of index eta, its transport (ggx_bulk_params.h)
 //   GGX_EVAL=0|1                     the pdf kernels write the BSDF value f |cos| of o instead
-// Arrays are planar: component c of sample j is at [c * stride + j].
+// Arrays are planar: component c of sample j is at [offset + c * stride + j],
+// each buffer with its own offset in floats (ulong arguments after the buffers).
 // One sample per work-item.  Each kernel comes in two forms: the main one
 // for whole work-groups, whose loads and stores go to consecutive addresses
 // (PoCL vectorizes them as plain vector moves), and a `_tail` one for the
@@ -69,16 +70,19 @@ GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GG
 #endif
 }
 
+// The outputs follow the parameters, then each output's offset (ggx_contract.h).
 #define GGX_SAMPLE_ARGS                                                                                 \
-    ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS, __global float *GGX_RESTRICT m_out,    \
+    ulong seed, ulong first, uint count, uint stride, GGX_PARAM_KERNEL_ARGS, __global float *GGX_RESTRICT m_out, \
         __global float *GGX_RESTRICT o_out, __global float *GGX_RESTRICT pdf_m_out, __global float *GGX_RESTRICT pdf_o_out, \
-        __global float *GGX_RESTRICT weight_out, __global float *GGX_RESTRICT u_out
-#define GGX_SAMPLE_OUTPUTS m_out, o_out, pdf_m_out, pdf_o_out, weight_out, u_out
+        __global float *GGX_RESTRICT weight_out, __global float *GGX_RESTRICT u_out, ulong m_at, ulong o_at,         \
+        ulong pdf_m_at, ulong pdf_o_at, ulong weight_at, ulong u_at
+#define GGX_SAMPLE_OUTPUTS_AT                                                                                  \
+    m_out + m_at, o_out + o_at, pdf_m_out + pdf_m_at, pdf_o_out + pdf_o_at, weight_out + weight_at, u_out + u_at
 
 // Whole work-groups of samples: every work-item is sample get_global_id(0) < count.
 __kernel void ggx_sample_bulk(GGX_SAMPLE_ARGS)
 {
-    ggx_sample_into(seed, first, (uint)get_global_id(0), stride, GGX_PARAM_VALUES, GGX_SAMPLE_OUTPUTS);
+    ggx_sample_into(seed, first, (uint)get_global_id(0), stride, GGX_PARAM_VALUES_AT, GGX_SAMPLE_OUTPUTS_AT);
 }
 
 // The last partial work-group (launched with a global offset): work-items
@@ -86,7 +90,7 @@ __kernel void ggx_sample_bulk(GGX_SAMPLE_ARGS)
 __kernel void ggx_sample_bulk_tail(GGX_SAMPLE_ARGS)
 {
     uint j = min((uint)get_global_id(0), count - 1u);
-    ggx_sample_into(seed, first, j, stride, GGX_PARAM_VALUES, GGX_SAMPLE_OUTPUTS);
+    ggx_sample_into(seed, first, j, stride, GGX_PARAM_VALUES_AT, GGX_SAMPLE_OUTPUTS_AT);
 }
 
 // pdf of each given direction o (planar, `stride`) for the method's sampler, or with GGX_EVAL its
@@ -102,14 +106,16 @@ GGX_INLINE void ggx_pdf_into(uint j, uint stride, GGX_PARAM_ARGS, __global const
 #endif
 }
 
-__kernel void ggx_pdf_bulk(uint count, uint stride, GGX_PARAM_ARGS, __global const float* GGX_RESTRICT o_in,
-                           __global float* GGX_RESTRICT pdf_out)
+#define GGX_PDF_ARGS                                                                                      \
+    uint count, uint stride, GGX_PARAM_KERNEL_ARGS, __global const float *GGX_RESTRICT o_in,                \
+        __global float *GGX_RESTRICT pdf_out, ulong o_at, ulong pdf_at
+
+__kernel void ggx_pdf_bulk(GGX_PDF_ARGS)
 {
-    ggx_pdf_into((uint)get_global_id(0), stride, GGX_PARAM_VALUES, o_in, pdf_out);
+    ggx_pdf_into((uint)get_global_id(0), stride, GGX_PARAM_VALUES_AT, o_in + o_at, pdf_out + pdf_at);
 }
 
-__kernel void ggx_pdf_bulk_tail(uint count, uint stride, GGX_PARAM_ARGS, __global const float* GGX_RESTRICT o_in,
-                                __global float* GGX_RESTRICT pdf_out)
+__kernel void ggx_pdf_bulk_tail(GGX_PDF_ARGS)
 {
-    ggx_pdf_into(min((uint)get_global_id(0), count - 1u), stride, GGX_PARAM_VALUES, o_in, pdf_out);
+    ggx_pdf_into(min((uint)get_global_id(0), count - 1u), stride, GGX_PARAM_VALUES_AT, o_in + o_at, pdf_out + pdf_at);
 }

@@ -64,7 +64,9 @@ typedef struct {
 } ggx_params;
 
 // The kernel arguments that carry them (GGX_PARAM_ARG_COUNT, at the positions
-// of ggx_contract.h): uniform values, then per-sample buffers.
+// of ggx_contract.h): uniform values, per-sample buffers, then the offset in
+// floats where each buffer's planes begin.  The kernels pass the buffers on
+// from their offsets (GGX_PARAM_VALUES_AT) to what takes GGX_PARAM_ARGS.
 #define GGX_PARAM_ARGS                                                                      \
     float view_x, float view_y, float view_z, float alpha_x, float alpha_y, float normal_x, \
         float normal_y, float normal_z, float eta, __global const float *GGX_RESTRICT view_in,  \
@@ -73,6 +75,11 @@ typedef struct {
 #define GGX_PARAM_VALUES                                                                    \
     view_x, view_y, view_z, alpha_x, alpha_y, normal_x, normal_y, normal_z, eta, view_in, alpha_in, normal_in, \
         uniforms_in
+#define GGX_PARAM_KERNEL_ARGS \
+    GGX_PARAM_ARGS, ulong view_at, ulong alpha_at, ulong normal_at, ulong uniforms_at
+#define GGX_PARAM_VALUES_AT                                                                              \
+    view_x, view_y, view_z, alpha_x, alpha_y, normal_x, normal_y, normal_z, eta, view_in + view_at,      \
+        alpha_in + alpha_at, normal_in + normal_at, uniforms_in + uniforms_at
 
 GGX_INLINE ggx_params ggx_load_params(uint j, uint stride, GGX_PARAM_ARGS)
 {
@@ -142,7 +149,7 @@ GGX_INLINE int ggx_unit_interval(float u)
 // The normal the method works with: world space and caps-iso read it, the others use +z.
 GGX_INLINE ggx_vec3 ggx_bulk_normal(ggx_params p)
 {
-    const int about_normal = GGX_WORLD_SPACE | (GGX_METHOD == GGX_METHOD_CAPS_ISO);
+    const int about_normal = GGX_WORLD_SPACE | ggx_method_world_space(GGX_METHOD);
     return about_normal ? p.normal : ggx_vec3_make(0.0f, 0.0f, 1.0f);
 }
 
@@ -195,7 +202,7 @@ GGX_INLINE int ggx_bulk_reflected(ggx_params p, ggx_sample s)
 // about the normal for caps-iso and in world space.
 GGX_INLINE float ggx_bulk_eval(ggx_params p, ggx_vec3 o)
 {
-    const int about_normal = GGX_WORLD_SPACE | (GGX_METHOD == GGX_METHOD_CAPS_ISO);  // folded: build options
+    const int about_normal = GGX_WORLD_SPACE | ggx_method_world_space(GGX_METHOD);  // folded: build options
 #if GGX_DIELECTRIC
     if (about_normal)
         return ggx_eval_dielectric_world(p.normal, p.view, o, p.ax, p.eta, GGX_RADIANCE);

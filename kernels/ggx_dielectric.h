@@ -159,7 +159,7 @@ GGX_INLINE float ggx_dielectric_pdf_above(int method, ggx_vec3 n, ggx_vec3 i, gg
     const float c = ggx_dot(i, m), om = ggx_dot(o, m);
     const int valid = (on < 0.0f) & (c > 0.0f) & (om < 0.0f);
     const float c_up = ggx_fmax(c, 0.0f), cos_t = ggx_fmax(-om, 0.0f), sum = c + eta * om;
-    const float density = ggx_normal_density(method == GGX_METHOD_NDF, ggx_local_of(i, n, about_n),
+    const float density = ggx_normal_density(ggx_method_ndf_normals(method), ggx_local_of(i, n, about_n),
                                               ggx_local_of(m, n, about_n), c_up, ax, ay);
     const float transmitted = (1.0f - ggx_fresnel_dielectric(c_up, eta)) * density * eta * eta * cos_t / (sum * sum);
     return on > 0.0f ? reflected : (valid ? transmitted : 0.0f);
@@ -169,16 +169,16 @@ GGX_INLINE float ggx_dielectric_pdf_above(int method, ggx_vec3 n, ggx_vec3 i, gg
 GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay, float eta,
                                                    int radiance, float u1, float u2, float u3)
 {
-    const int about_n = GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO);
+    const int about_n = ggx_method_world_space(method);
     const ggx_vec3 up = about_n ? n : ggx_vec3_make(0.0f, 0.0f, 1.0f);
     const int below = ggx_dot(i, up) < 0.0f;
-    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
+    if (!ggx_method_dielectric(method))
         return ggx_fallback_sample(up);
     const ggx_vec3 i_above = ggx_mirror_if(i, up, below);
     const float eta_side = below ? 1.0f / eta : eta;
     ggx_sample s = ggx_sample_method(method, n, i_above, ax, ay, u1, u2);
     s = ggx_dielectric_from_reflection(s, up, i_above, ax, ay, eta_side, radiance, u3,
-                                       GGX_IS_METHOD(method, GGX_METHOD_NDF), about_n);
+                                       ggx_method_ndf_normals(method), about_n);
     s.m = ggx_mirror_if(s.m, up, below);
     s.o = ggx_mirror_if(s.o, up, below);
     return ggx_keep_or_fallback(s, ggx_eta_ok(eta), ggx_mirror_if(up, up, below));
@@ -188,10 +188,10 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_v
 GGX_INLINE float ggx_pdf_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay,
                                            float eta)
 {
-    const int about_n = GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO);
+    const int about_n = ggx_method_world_space(method);
     const ggx_vec3 up = about_n ? n : ggx_vec3_make(0.0f, 0.0f, 1.0f);
     const int below = ggx_dot(i, up) < 0.0f;
-    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
+    if (!ggx_method_dielectric(method))
         return 0.0f;
     const ggx_vec3 i_above = ggx_mirror_if(i, up, below), o_side = ggx_mirror_if(o, up, below);
     const float eta_side = below ? 1.0f / eta : eta;

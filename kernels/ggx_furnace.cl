@@ -22,16 +22,17 @@
 #endif
 #include "ggx_bulk_params.h"
 
-__kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride, GGX_PARAM_ARGS,
-                               __global float* GGX_RESTRICT sums)
+__kernel void ggx_furnace_bulk(ulong seed, ulong first, uint count, uint stride, GGX_PARAM_KERNEL_ARGS,
+                               __global float* GGX_RESTRICT sums_out, ulong sums_at)
 {
+    __global float* GGX_RESTRICT sums = sums_out + sums_at;
     uint item = (uint)get_global_id(0), items = (uint)get_global_size(0);
     float w_total = 0.0f, w2_total = 0.0f, reflected_total = 0.0f;
 #pragma unroll
     for (uint k = 0; k < GGX_FURNACE_PER_ITEM; ++k) {
         uint index = item * GGX_FURNACE_PER_ITEM + k;
         uint j = min(index, count - 1u);  // past `count`: recompute the last sample, then count it as 0
-        ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
+        ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES_AT);
         ggx_sample s = ggx_bulk_sample(seed, first, j, p);
         float w = index < count ? s.weight : 0.0f;
         w_total += w;

@@ -43,7 +43,7 @@ GGX_INLINE uint ggx_sample_bin(ulong seed, ulong first, uint j, uint count, GGX_
 }
 
 // Work-group g counts samples [g * size * per_item, (g + 1) * size * per_item) of the launch.
-__kernel void ggx_histogram(ulong seed, ulong first, uint count, uint per_item, GGX_PARAM_ARGS,
+__kernel void ggx_histogram(ulong seed, ulong first, uint count, uint per_item, GGX_PARAM_KERNEL_ARGS,
                             __global uint* counts)
 {
     __local uint local_counts[GGX_COUNTERS];
@@ -55,7 +55,7 @@ __kernel void ggx_histogram(ulong seed, ulong first, uint count, uint per_item, 
     for (uint k = 0; k < per_item; ++k) {
         uint j = base + k * size + lid;
         if (j < count)
-            atomic_inc(&local_counts[ggx_sample_bin(seed, first, j, count, GGX_PARAM_VALUES)]);
+            atomic_inc(&local_counts[ggx_sample_bin(seed, first, j, count, GGX_PARAM_VALUES_AT)]);
     }
     barrier(CLK_LOCAL_MEM_FENCE);
     for (uint b = lid; b < GGX_COUNTERS; b += size)
@@ -65,18 +65,18 @@ __kernel void ggx_histogram(ulong seed, ulong first, uint count, uint per_item, 
 
 // The bin index of sample j of the launch, for j < count (whole work-groups
 // and a tail launch, as the bulk kernels).
-__kernel void ggx_histogram_bins(ulong seed, ulong first, uint count, uint per_item, GGX_PARAM_ARGS,
+__kernel void ggx_histogram_bins(ulong seed, ulong first, uint count, uint per_item, GGX_PARAM_KERNEL_ARGS,
                                  __global uint* GGX_RESTRICT bins)
 {
     uint j = get_global_id(0);
-    bins[j] = ggx_sample_bin(seed, first, j, count, GGX_PARAM_VALUES);
+    bins[j] = ggx_sample_bin(seed, first, j, count, GGX_PARAM_VALUES_AT);
 }
 
-__kernel void ggx_histogram_bins_tail(ulong seed, ulong first, uint count, uint per_item, GGX_PARAM_ARGS,
+__kernel void ggx_histogram_bins_tail(ulong seed, ulong first, uint count, uint per_item, GGX_PARAM_KERNEL_ARGS,
                                       __global uint* GGX_RESTRICT bins)
 {
     uint j = min((uint)get_global_id(0), count - 1u);  // the last sample again past the end: no branch
-    bins[j] = ggx_sample_bin(seed, first, j, count, GGX_PARAM_VALUES);
+    bins[j] = ggx_sample_bin(seed, first, j, count, GGX_PARAM_VALUES_AT);
 }
 
 // Work-item g (alone in its work-group) counts bins[g * per_item, (g + 1) * per_item) of count.

@@ -26,33 +26,21 @@
 #include "ggx_user_sampler.h"
 #endif
 
-// GGX_ONLY_METHOD=<id>: the program uses that one method (the runtime's bulk
-// kernels set it to GGX_METHOD).  The dispatchers then test constants and
-// the compiler emits the one sampler alone: a driver that translates every
-// branch before it folds the method id (Mesa rusticl) builds 3-4x faster.
-#ifdef GGX_ONLY_METHOD
-#if (GGX_ONLY_METHOD < 0 || GGX_ONLY_METHOD >= GGX_METHOD_COUNT) && \
-    !(defined(GGX_USER_SAMPLER) && GGX_ONLY_METHOD == GGX_METHOD_USER)
-#error "GGX_ONLY_METHOD: not a method id (GGX_METHOD_NDF .. GGX_METHOD_BOUNDED of ggx_contract.h)"
-#endif
-#define GGX_IS_METHOD(method, id) (GGX_ONLY_METHOD == (id))
-#else
-#define GGX_IS_METHOD(method, id) ((method) == (id))
-#endif
+#include "ggx_method_traits.h"
 
 // The dispatchers test each method of GGX_METHOD_LIST (ggx_contract.h) in
 // turn and call its ggx_dispatch_* form (ggx_common.h); with a compile-time
 // constant `method` the chain folds to one sampler.  Only caps-iso reads n
 // (world space); the others work in tangent space.
-#define GGX_SAMPLE_IF_METHOD(ID, identifier, name)  \
+#define GGX_SAMPLE_IF_METHOD(ID, identifier, name, ...)  \
     if (GGX_IS_METHOD(method, GGX_METHOD_##ID))     \
         return ggx_dispatch_sample_##identifier(n, i, ax, ay, u1, u2);
-#define GGX_PDF_IF_METHOD(ID, identifier, name)     \
+#define GGX_PDF_IF_METHOD(ID, identifier, name, ...)     \
     if (GGX_IS_METHOD(method, GGX_METHOD_##ID))     \
         return ggx_dispatch_pdf_##identifier(n, i, o, ax, ay);
 // A program built with a user sampler (ggx_user_sampler.h) dispatches its id too.
 #ifdef GGX_USER_SAMPLER
-#define GGX_USER_METHOD_LINE(X) X(USER, user, "user")
+#define GGX_USER_METHOD_LINE(X) X(USER, user, "user", "your file", "your sampler", TANGENT, ANISOTROPIC, OWN, NO, YES, "")
 #else
 #define GGX_USER_METHOD_LINE(X)
 #endif

@@ -40,8 +40,8 @@ GGX_INLINE ggx_vec3 ggx_from_local(ggx_basis basis, ggx_vec3 v)
 // A sample of `method` for world-space n and i with roughness alpha; m and o in world space.
 GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
 {
-    if (GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO))
-        return ggx_sample_caps_iso(n, i, alpha, u1, u2);
+    if (ggx_method_world_space(method))
+        return ggx_sample_method(method, n, i, alpha, alpha, u1, u2);
     ggx_basis basis = ggx_basis_from_normal(n);
     ggx_sample s = ggx_sample_method(method, n, ggx_to_local(basis, i), alpha, alpha, u1, u2);
     s.m = ggx_from_local(basis, s.m);
@@ -59,8 +59,8 @@ GGX_INLINE float ggx_eval_reflection_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, f
 // The pdf of the world-space direction o for `method` (0 where it never samples o).
 GGX_INLINE float ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
 {
-    if (GGX_IS_METHOD(method, GGX_METHOD_CAPS_ISO))
-        return ggx_pdf_caps_iso(n, i, o, alpha);
+    if (ggx_method_world_space(method))
+        return ggx_pdf_method(method, n, i, o, alpha, alpha);
     ggx_basis basis = ggx_basis_from_normal(n);
     return ggx_pdf_method(method, n, ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha);
 }
@@ -77,12 +77,12 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_ve
                                                   int radiance, float u1, float u2, float u3)
 {
     const int below = ggx_dot(i, n) < 0.0f;
-    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
+    if (!ggx_method_dielectric(method))
         return ggx_fallback_sample(n);
     const ggx_vec3 i_above = ggx_mirror_if(i, n, below);
     ggx_sample s = ggx_sample_world(method, n, i_above, alpha, u1, u2);
     s = ggx_dielectric_from_reflection(s, n, i_above, alpha, alpha, below ? 1.0f / eta : eta, radiance, u3,
-                                       GGX_IS_METHOD(method, GGX_METHOD_NDF), 1);
+                                       ggx_method_ndf_normals(method), 1);
     s.m = ggx_mirror_if(s.m, n, below);
     s.o = ggx_mirror_if(s.o, n, below);
     return ggx_keep_or_fallback(s, ggx_eta_ok(eta), ggx_mirror_if(n, n, below));
@@ -92,7 +92,7 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_ve
 GGX_INLINE float ggx_pdf_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha, float eta)
 {
     const int below = ggx_dot(i, n) < 0.0f;
-    if (GGX_IS_METHOD(method, GGX_METHOD_BOUNDED))
+    if (!ggx_method_dielectric(method))
         return 0.0f;
     const ggx_vec3 i_above = ggx_mirror_if(i, n, below), o_side = ggx_mirror_if(o, n, below);
     const float eta_side = below ? 1.0f / eta : eta;

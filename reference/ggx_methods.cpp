@@ -7,7 +7,7 @@ namespace ggxref {
 const char* method_name(Method method)
 {
     switch (method) {
-#define GGXREF_METHOD_NAME(ID, identifier, name) \
+#define GGXREF_METHOD_NAME(ID, identifier, name, ...) \
     case Method::identifier:                     \
         return name;
         GGX_METHOD_LIST(GGXREF_METHOD_NAME)

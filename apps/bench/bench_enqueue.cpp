@@ -12,6 +12,27 @@ double microseconds_since(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Enqueue + finish into buffers with room for the odd offset, at 0 and at the offset in turn.
+void measure_offsets(ggxcl::Sampler& sampler, cl::CommandQueue& queue, const ggxcl::SampleParams& params,
+                     EnqueueTiming& result)
+{
+    const std::uint64_t count = result.count, at = result.odd_offset;
+    ggxcl::DeviceOutputs out;
+    out.m = cl::Buffer(sampler.context(), CL_MEM_WRITE_ONLY, (3 * count + at) * sizeof(float));
+    out.pdf_m = cl::Buffer(sampler.context(), CL_MEM_WRITE_ONLY, (count + at) * sizeof(float));
+    std::vector<double> at_zero, at_odd;
+    for (int call = 0; call < 2 * result.calls; ++call) {
+        const bool odd = call % 2 == 1;
+        out.m_offset = out.pdf_m_offset = odd ? at : 0;
+        auto start = std::chrono::steady_clock::now();
+        sampler.enqueue(queue, params, {1, std::uint64_t(call) * count, count}, out);
+        queue.finish();
+        (odd ? at_odd : at_zero).push_back(microseconds_since(start));
+    }
+    result.at_zero_us = summarize(at_zero);
+    result.at_odd_offset_us = summarize(at_odd);
+}
+
 } // namespace
 
 EnqueueTiming measure_enqueue(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params)
@@ -37,6 +58,7 @@ EnqueueTiming measure_enqueue(ggxcl::Sampler& sampler, const ggxcl::SampleParams
     second.enqueue(queue, params, {1, 0, count}, out);
     result.second_sampler_first_us = microseconds_since(start);
     queue.finish();
+    measure_offsets(sampler, queue, params, result);
     return result;
 }
 

@@ -2,7 +2,10 @@
 // of 4096 caps samples (m and pdf_m into the caller's buffers) with every
 // cache warm, timed from call to return, the median of 1000 calls; the
 // queue is drained between calls, outside the timing.  Also the first
-// enqueue on a second Sampler of the same context (its programs shared).
+// enqueue on a second Sampler of the same context (its programs shared),
+// and an enqueue and its finish with the buffers at offset 0 and at an odd
+// offset, alternated call by call (what an offset costs: nothing, the
+// kernels take it).
 #pragma once
 
 #include <ggxcl/ggxcl.hpp>

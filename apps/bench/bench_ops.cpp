@@ -14,7 +14,7 @@ namespace ggxapp {
 
 bool counts_ops(const BenchTask& task)
 {
-    return (task.job == BenchJob::write || task.job == BenchJob::furnace) && task.guards &&
+    return (task.job == BenchJob::write || task.job == BenchJob::furnace) && task.params.guards &&
            task.params.method != ggxcl::Method::user &&  // the limits table holds the built-in methods
            task.params.sequence == ggxcl::Sequence::philox && task.params.eta == 0.0f;
 }
@@ -34,12 +34,13 @@ std::vector<std::optional<OpCounts>> count_task_ops(const ggxcl::Sampler& sample
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         if (!counts_ops(tasks[t]))
             continue;
-        const ggxcl::SampleParams& p = tasks[t].params;
         // The programs the timed runs build (bench_speed.cpp): the furnace runs unguarded, as
         // Sampler::furnace does.
+        ggxcl::SampleParams p = tasks[t].params;
+        p.guards = tasks[t].job == BenchJob::write;
         programs.push_back(tasks[t].job == BenchJob::write
                                ? ggxcl::benchmark::enqueue_program(sampler, p, {ggxcl::Field::m, ggxcl::Field::pdf_m})
-                               : ggxcl::benchmark::furnace_program(sampler, p, false));
+                               : ggxcl::benchmark::furnace_program(sampler, p));
         requests.push_back({ggxcl::kernel_source(programs.back().file), programs.back().options});
         counted.push_back(t);
     }

@@ -72,6 +72,7 @@ BenchPlan plan_bench(const BenchCommand& cmd)
     plan.settings.alpha = alpha[0];
     plan.settings.theta = parse_angle("--theta", cmd.theta, 0.0, 89.0);
     plan.base.alpha_x = plan.base.alpha_y = alpha[0];
+    in_option_terms({{"alpha", {"--alpha", cmd.alpha}}}, [&] { ggxcl::validate(plan.base); });
     plan.base.view = ggxcl::view_from_angles(plan.settings.theta, 0.0);
     plan.settings.eta = parse_eta("--eta", cmd.eta);
     try {

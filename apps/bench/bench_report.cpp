@@ -312,9 +312,10 @@ void write_dielectric_section(std::ostream& md, const BenchReport& r)
           "would be left out), for the conductor too; the fused furnace sums the weights and, apart, the "
           "reflected ones. The ratio is what the third uniform and the refraction cost.\n\n";
     write_dielectric_speed(md, r);
-    if (std::any_of(r.rows.begin(), r.rows.end(), [](const BenchRow& row) { return row.method == "bounded"; }))
-        md << "\nbounded: no dielectric rows; it has no exact dielectric sampler (its cap leaves out microfacet "
-              "normals that refract, so some transmitted directions are never drawn).\n";
+    for (const ggxcl::MethodTraits& t : ggxcl::method_table)
+        if (!t.dielectric && std::any_of(r.rows.begin(), r.rows.end(),
+                                         [&](const BenchRow& row) { return row.method == t.name; }))
+            md << "\n" << t.name << ": no dielectric rows; it has no exact dielectric sampler (" << t.limits << ").\n";
     write_dielectric_accuracy(md, r);
 }
 
@@ -395,6 +396,11 @@ std::vector<CsvRow> process_rows(const BenchReport& r)
         rows.push_back({row_of("caps", "host", "enqueue", Timing{us.median * 1e3, us.low * 1e3, us.high * 1e3}),
                         r.enqueue.count});
         rows.push_back({row_of("caps", "host", "enqueue-second-sampler-first", Timing{first, first, first}),
+                        r.enqueue.count});
+        auto ns = [](const Timing& t) { return Timing{t.median * 1e3, t.low * 1e3, t.high * 1e3}; };
+        rows.push_back({row_of("caps", "host", "enqueue-finish", ns(r.enqueue.at_zero_us)), r.enqueue.count});
+        rows.push_back({row_of("caps", "host", "enqueue-finish-offset-" + std::to_string(r.enqueue.odd_offset),
+                               ns(r.enqueue.at_odd_offset_us)),
                         r.enqueue.count});
     }
     return rows;
@@ -516,7 +522,10 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
            << " caps samples (m and pdf_m into the caller's buffers), caches warm, median of " << r.enqueue.calls
            << " calls: " << fixed(r.enqueue.host_us.median, 1) << " us (" << fixed(r.enqueue.host_us.low, 1) << "–"
            << fixed(r.enqueue.host_us.high, 1) << "); the first call of a second Sampler on the same context, whose "
-           << "programs are shared: " << fixed(r.enqueue.second_sampler_first_us, 0) << " us.\n";
+           << "programs are shared: " << fixed(r.enqueue.second_sampler_first_us, 0) << " us. An enqueue and its "
+           << "finish with the buffers at offset 0: " << fixed(r.enqueue.at_zero_us.median, 1) << " us; at offset "
+           << r.enqueue.odd_offset << " (the kernels take the offset: no sub-buffer, no copy), alternated with it: "
+           << fixed(r.enqueue.at_odd_offset_us.median, 1) << " us.\n";
     if (r.apps.measured)
         md << "\n## The commands, whole process\n\nWall clock from process start to exit, ns per sample, caps, files "
               "in "

@@ -47,6 +47,10 @@ struct EnqueueTiming {
     int calls = 1000;
     Timing host_us;               // microseconds per call, warm caches
     double second_sampler_first_us = 0;  // first call of another Sampler on the same context
+    // Enqueue and finish, microseconds, alternated side by side: every buffer at offset 0, and every
+    // buffer at an odd offset (the kernels take offsets: no sub-buffer, no copy).
+    std::uint64_t odd_offset = 37;
+    Timing at_zero_us, at_odd_offset_us;
 };
 
 struct AppTimings {

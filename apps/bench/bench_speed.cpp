@@ -156,13 +156,15 @@ cl::Event DeviceTimer::launch(const BenchTask& task, std::uint64_t seed)
     cl::CommandQueue& queue = sampler_.queue();
     const ggxcl::SampleParams& params = task.params;
     switch (task.job) {
-    case BenchJob::write:
-        return task.guards ? sampler_.enqueue(queue, params, {seed, 0, count_}, write_out_)
-                           : ggxcl::benchmark::enqueue_unguarded(sampler_, queue, params, {seed, 0, count_}, write_out_);
+    case BenchJob::write:  // with or without the guards (params.guards)
+        return sampler_.enqueue(queue, params, {seed, 0, count_}, write_out_);
     case BenchJob::write_o:
         return sampler_.enqueue(queue, params, {seed, 0, count_}, write_o_out_);
-    case BenchJob::furnace:  // as Sampler::furnace runs it: unguarded, rerun with guards only on a NaN sum
-        return ggxcl::benchmark::enqueue_furnace_unguarded(sampler_, queue, params, {seed, 0, count_}, sums_);
+    case BenchJob::furnace: {  // as Sampler::furnace runs it: unguarded, rerun with guards only on a NaN sum
+        ggxcl::SampleParams unguarded = params;
+        unguarded.guards = false;
+        return sampler_.enqueue_furnace(queue, unguarded, {seed, 0, count_}, sums_);
+    }
     case BenchJob::world: {
         ggxcl::SampleParams world = params;
         world.world_space = true;

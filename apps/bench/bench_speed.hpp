@@ -40,8 +40,7 @@ void random_world_inputs(std::uint32_t count, std::vector<float>& normals, std::
 
 struct BenchTask {
     BenchJob job;
-    ggxcl::SampleParams params;
-    bool guards = true;  // false: the write job without the fallbacks (ggxcl/benchmark.hpp)
+    ggxcl::SampleParams params;  // guards = false: the write job without the fallbacks
 };
 
 class DeviceTimer {

@@ -78,8 +78,11 @@ void add_conductor_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
                 p.method = ggxcl::parse_method(name);
                 p.precision = ggxcl::parse_precision(mode);
                 tasks.push_back({job_named(job_text), p});
-                if (mode == "precise" && job_text == "write")  // the guards' cost, side by side
-                    tasks.push_back({BenchJob::write, p, false});
+                if (mode == "precise" && job_text == "write") {  // the guards' cost, side by side
+                    ggxcl::SampleParams unguarded = p;
+                    unguarded.guards = false;
+                    tasks.push_back({BenchJob::write, unguarded});
+                }
                 if (mode == "precise" && (job_text == "write" || job_text == "furnace"))
                     for (const std::string& sequence : plan.sequences) {  // the other sequences, side by side
                         p.sequence = ggxcl::parse_sequence(sequence);
@@ -126,7 +129,7 @@ void add_dielectric_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
             ggxcl::SampleParams conductor = plan.base;
             conductor.method = ggxcl::parse_method(name);
             conductor.precision = ggxcl::parse_precision(mode);
-            if (conductor.method == ggxcl::Method::bounded)  // no exact dielectric sampler
+            if (!ggxcl::method_traits(conductor.method).dielectric)
                 continue;
             ggxcl::SampleParams dielectric = conductor;
             dielectric.eta = plan.settings.eta;
@@ -223,7 +226,7 @@ BenchRow device_row(const BenchTask& task, Timing timing)
     if (task.job == BenchJob::store)
         return row_of("all", "store-only", "write", timing);
     const std::string precision(ggxcl::precision_name(p.precision));
-    BenchRow row = row_of(ggxcl::sampler_name(p), task.guards ? precision : precision + "-unguarded",
+    BenchRow row = row_of(ggxcl::sampler_name(p), task.params.guards ? precision : precision + "-unguarded",
                           job_name(task.job), timing);
     row.sequence = std::string(ggxcl::sequence_name(p.sequence));
     row.eta = p.eta;
@@ -249,7 +252,7 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
         BenchRow row = device_row(tasks[t], timings[t]);
         if (ops[t])
             row.has_ops = true, row.ops = *ops[t];
-        if (!cmd.no_accuracy && tasks[t].guards && tasks[t].job != BenchJob::store)  // unguarded: speed only
+        if (!cmd.no_accuracy && tasks[t].params.guards && tasks[t].job != BenchJob::store)  // unguarded: speed only
             add_accuracy(sampler, tasks[t], report, plan.users, exact, row);
         report.rows.push_back(row);
     }
@@ -361,7 +364,7 @@ std::vector<Batch> timed_batches(const BenchPlan& plan)
             p.method = ggxcl::parse_method(name);
             p.precision = ggxcl::parse_precision(mode);
             batches.push_back({p, {0, 0, plan.settings.count}});
-            if (plan.settings.eta == 0.0f || p.method == ggxcl::Method::bounded)
+            if (plan.settings.eta == 0.0f || !ggxcl::method_traits(p.method).dielectric)
                 continue;
             p.eta = plan.settings.eta;
             p.transport = plan.transport;

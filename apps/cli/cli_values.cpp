@@ -9,6 +9,10 @@
 #include <sstream>
 #include <vector>
 
+#include <ggxcl/params.hpp>
+
+#include "library_errors.hpp"
+
 namespace ggxapp {
 
 namespace {
@@ -43,15 +47,23 @@ bool to_double(const std::string& text, double& value)
 
 std::array<float, 2> parse_alpha(const std::string& flag, const std::string& text)
 {
-    const std::string allowed = "one or two numbers from 1e-30 to 1e30, as AX or AX,AY";
+    const std::string allowed = std::string("one or two numbers, as AX or AX,AY, each ") + ggxcl::alpha_range;
     std::vector<std::string> parts = split(text, ',');
     if (parts.empty() || parts.size() > 2)
         throw UsageError(flag, text, allowed);
     double values[2];
-    for (std::size_t k = 0; k < parts.size(); ++k)  // (1e-30: 9e-69 would round to a float 0; fuzz/fuzz_values)
-        if (!to_double(parts[k], values[k]) || !(values[k] >= 1e-30) || values[k] > 1e30)
+    for (std::size_t k = 0; k < parts.size(); ++k)
+        if (!to_double(parts[k], values[k]))
             throw UsageError(flag, text, allowed);
-    return {float(values[0]), float(values[parts.size() - 1])};
+    return {float(values[0]), float(values[parts.size() - 1])};  // the library checks the range
+}
+
+double parse_number(const std::string& flag, const std::string& text)
+{
+    double value;
+    if (!to_double(text, value))
+        throw UsageError(flag, text, "a number");
+    return value;
 }
 
 std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text)
@@ -155,12 +167,10 @@ void check_writable_folder(const std::string& flag, const std::string& path)
 
 float parse_eta(const std::string& flag, const std::string& text)
 {
-    double value;
-    const float eta = to_double(text, value) ? float(value) : -1.0f;
-    if (!(eta == 0.0f || (eta > 0.0f && std::isfinite(eta) && eta != 1.0f)))
-        throw UsageError(flag, text,
-                         "0 (a conductor, Fresnel 1) or a relative index of refraction, finite, > 0 and != 1 "
-                         "(index below the surface over index above, e.g. 1.5 for glass in air)");
+    const float eta = float(parse_number(flag, text));
+    ggxcl::SampleParams conductor;  // a method with a dielectric sampler: the library's rule for eta alone
+    conductor.eta = eta;
+    in_option_terms({{"eta", {flag, text}}}, [&] { ggxcl::validate(conductor); });
     return eta;
 }
 

@@ -26,7 +26,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// One or two numbers "AX[,AY]"; the library checks their range (ggxcl::alpha_range).
 std::array<float, 2> parse_alpha(const std::string& flag, const std::string& text);
+// A finite number.
+double parse_number(const std::string& flag, const std::string& text);
 std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text);  // returned unit length
 std::uint64_t parse_count(const std::string& flag, const std::string& text);
 std::uint64_t parse_uint64(const std::string& flag, const std::string& text);
@@ -41,7 +44,8 @@ double parse_angle(const std::string& flag, const std::string& text, double low,
 std::vector<std::string> parse_name_list(const std::string& flag, const std::string& text,
                                          const std::vector<std::string>& allowed);
 
-// A relative index of refraction: 0 (none: a conductor) or finite, > 0 and != 1.
+// A relative index of refraction as the library takes it (0: a conductor), its rule
+// reported for `flag`.
 float parse_eta(const std::string& flag, const std::string& text);
 
 // A significance level strictly between 0 and 1.

@@ -34,6 +34,7 @@ struct Work {
 using Prepare = std::function<std::optional<Work>()>;
 
 Prepare add_devices_command(CLI::App& app);
+Prepare add_methods_command(CLI::App& app);
 Prepare add_sample_command(CLI::App& app);
 Prepare add_demo_command(CLI::App& app);
 Prepare add_merge_command(CLI::App& app);

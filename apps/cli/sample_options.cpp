@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "cli_values.hpp"
+#include "library_errors.hpp"
 
 namespace ggxapp {
 
@@ -157,15 +158,21 @@ ggxcl::SampleRange SampleOptions::parsed_range(const std::string& first, const s
     return range;
 }
 
-double SampleOptions::parsed_theta() const { return parse_angle("--theta", theta, 0.0, 180.0); }
-double SampleOptions::parsed_phi() const { return parse_angle("--phi", phi, -360.0, 360.0); }
+double SampleOptions::parsed_theta() const { return parse_number("--theta", theta); }
+double SampleOptions::parsed_phi() const { return parse_number("--phi", phi); }
 
 SampleOptions SampleOptions::for_method(ggxcl::Method method) const
 {
     SampleOptions options = *this;
-    if (method == ggxcl::Method::caps_iso)
+    if (ggxcl::method_traits(method).isotropic_only)
         options.alpha = alpha.substr(0, alpha.find(','));
     return options;
+}
+
+OptionsOfParameters SampleOptions::option_of_parameter() const
+{
+    return {{"alpha", {"--alpha", alpha}}, {"theta", {"--theta", theta}}, {"phi", {"--phi", phi}},
+            {"eta", {"--eta", eta}},       {"normal", {"--normal", normal}}};
 }
 
 ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m, std::shared_ptr<const ggxcl::UserSampler> user) const
@@ -173,12 +180,9 @@ ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m, std::shared_ptr<c
     ggxcl::SampleParams p;
     p.method = m;
     p.user_sampler = std::move(user);
-    std::array<float, 2> a = parse_alpha("--alpha", alpha);
-    if (m == ggxcl::Method::caps_iso && a[0] != a[1])
-        throw UsageError("--alpha", alpha, "one value for caps-iso, which is isotropic");
+    const std::array<float, 2> a = parse_alpha("--alpha", alpha);
     p.alpha_x = a[0];
     p.alpha_y = a[1];
-    p.view = ggxcl::view_from_angles(parsed_theta(), parsed_phi());
     try {
         p.precision = ggxcl::parse_precision(precision);
     } catch (const ggxcl::InvalidArgument&) {
@@ -187,19 +191,18 @@ ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m, std::shared_ptr<c
     p.sequence = parsed_sequence();
     p.eta = parsed_eta();
     p.transport = parsed_transport();
-    if (p.eta != 0.0f && m == ggxcl::Method::user)
-        throw UsageError("--eta", eta, "0 with --sampler: a user sampler runs on conductors only");
-    if (p.eta != 0.0f && m == ggxcl::Method::bounded)
-        throw UsageError("--eta", eta,
-                         "0 with --method bounded: its cap leaves out microfacet normals that refract, so it cannot "
-                         "sample every transmitted direction (use caps or heitz for dielectrics)");
     if (!normal.empty()) {
-        if (m != ggxcl::Method::caps_iso)
-            throw UsageError("--normal", normal, "only with --method caps-iso (the others work in tangent space)");
+        if (ggxcl::method_traits(m).space != ggxcl::Space::world)
+            throw UsageError("--normal", normal,
+                             "only with a method that works in world space (caps-iso); the others work in tangent space");
         std::array<float, 3> n = parse_vec3("--normal", normal);
         p.normal = {n[0], n[1], n[2]};
     }
-    return ggxcl::normalized(p);
+    const double theta_degrees = parsed_theta(), phi_degrees = parsed_phi();
+    return in_option_terms(option_of_parameter(), [&] {
+        p.view = ggxcl::view_from_angles(theta_degrees, phi_degrees);
+        return ggxcl::normalized(p);
+    });
 }
 
 } // namespace ggxapp

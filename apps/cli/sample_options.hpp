@@ -9,6 +9,8 @@
 #include <CLI/CLI.hpp>
 #include <ggxcl/ggxcl.hpp>
 
+#include "library_errors.hpp"
+
 namespace ggxapp {
 
 // The method names in ggxcl::all_methods order, for lists of methods.
@@ -75,8 +77,10 @@ struct SampleOptions {
     ggxcl::Transport parsed_transport() const;
     // --seed, --first and -n; the range must end before index 2^64.
     ggxcl::SampleRange parsed_range(const std::string& first, const std::string& count) const;
-    double parsed_theta() const;
+    double parsed_theta() const;  // numbers; params_for checks them (the library's rule)
     double parsed_phi() const;
+    // The options that set the library's parameters, for its messages (library_errors.hpp).
+    OptionsOfParameters option_of_parameter() const;
 };
 
 } // namespace ggxapp

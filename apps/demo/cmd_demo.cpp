@@ -54,17 +54,18 @@ SampleJob cloud_job(const SampleOptions& options, const SamplerChoice& method, s
     return job;
 }
 
-// The methods the demo runs: all, or for a dielectric all but bounded (no exact dielectric sampler),
-// then the user samplers (conductors only).
+// The methods the demo runs: all, or for a dielectric those with a dielectric sampler (all but
+// bounded), then the user samplers (conductors only).
 std::vector<SamplerChoice> demo_methods(const DemoCommand& demo)
 {
     std::vector<ggxcl::Method> methods;
     const bool dielectric = demo.options.parsed_eta() != 0.0f;
     for (ggxcl::Method method : ggxcl::all_methods)
-        if (!dielectric || method != ggxcl::Method::bounded)
+        if (!dielectric || ggxcl::method_traits(method).dielectric)
             methods.push_back(method);
     if (dielectric && !demo.user.files.empty())
-        throw UsageError("--eta", demo.options.eta, "0 with --sampler: a user sampler runs on conductors only");
+        throw UsageError("--eta", demo.options.eta,
+                         "0 with --sampler: " + std::string(ggxcl::method_traits(ggxcl::Method::user).limits));
     return sampler_choices(methods, demo.user.load());
 }
 
@@ -121,8 +122,9 @@ std::string summary_table(const DemoCommand& demo, const std::vector<MethodResul
            << " | " << name << ".npy, " << name << ".ply, " << name << ".hist.* |\n";
     }
     if (demo.options.parsed_eta() != 0.0f)
-        md << "\nbounded is left out: it has no exact dielectric sampler (its cap leaves out microfacet normals "
-              "that refract, so some transmitted directions are never drawn).\n";
+        for (const ggxcl::MethodTraits& t : ggxcl::method_table)
+            if (!t.dielectric)
+                md << "\n" << t.name << " is left out: it has no exact dielectric sampler (" << t.limits << ").\n";
     return md.str();
 }
 

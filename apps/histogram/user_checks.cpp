@@ -73,8 +73,8 @@ std::vector<HistogramCheck> pdf_checks(ggxcl::Sampler& sampler, const ggxcl::Sam
     for (std::size_t k = 0; k < agreements.size(); ++k) {
         const PdfAgreement& a = agreements[k];
         HistogramCheck check;
-        check.name = k == 0 ? "pdf from (i, o)"
-                            : std::string("pdf of the claimed ") + (*claimed == ggxcl::Method::ndf ? "ndf" : "vndf");
+        const std::string_view claim = ggxcl::distribution_name(ggxcl::method_traits(*claimed).normals);
+        check.name = k == 0 ? "pdf from (i, o)" : "pdf of the claimed " + std::string(claim);
         check.passed = a.with_density > 0 && double(a.disagree) <= 1e-3 * double(a.with_density);
         check.summary = check.name + ": " + std::to_string(a.disagree) + " of " + std::to_string(a.with_density) +
                         " samples with a density differ by more than 1e-3 (relative), the largest by " +

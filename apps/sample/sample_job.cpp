@@ -91,8 +91,9 @@ nlohmann::json describe_sampling(const ggxcl::SampleParams& p, double theta_degr
     doc["theta_degrees"] = theta_degrees;
     doc["phi_degrees"] = phi_degrees;
     doc["view"] = {p.view.x, p.view.y, p.view.z};
-    doc["view_space"] = p.method == ggxcl::Method::caps_iso ? "world" : "tangent";
-    if (p.method == ggxcl::Method::caps_iso)
+    const bool about_normal = ggxcl::uses_normal(p);
+    doc["view_space"] = about_normal ? "world" : "tangent";
+    if (about_normal)
         doc["normal"] = {p.normal.x, p.normal.y, p.normal.z};
     doc["seed"] = range.seed;
     doc["first"] = range.first;

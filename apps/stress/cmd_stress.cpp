@@ -146,7 +146,8 @@ StressPlan plan_stress(const StressCommand& cmd)
         plan.etas = parse_etas(cmd.eta);
     plan.users = cmd.user.load();
     if (!plan.users.empty() && !plan.etas.empty())
-        throw UsageError("--eta", cmd.eta, "no --eta with --sampler: a user sampler runs on conductors only");
+        throw UsageError("--eta", cmd.eta,
+                         "no --eta with --sampler: " + std::string(ggxcl::method_traits(ggxcl::Method::user).limits));
     return plan;
 }
 
@@ -232,8 +233,8 @@ void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggx
     std::vector<DielectricMaps> runs;
     for (ggxcl::Method method : plan.methods) {
         std::string name(ggxcl::method_name(method));
-        if (method == ggxcl::Method::bounded) {
-            out << "| " << name << " | refused: no exact dielectric sampler |\n";
+        if (!ggxcl::method_traits(method).dielectric) {
+            out << "| " << name << " | refused: " << ggxcl::method_traits(method).limits << " |\n";
             continue;
         }
         std::vector<StressCase> cases = dielectric_cases(method, axes);
@@ -271,7 +272,7 @@ std::string stress_markdown(const StressCommand& cmd, const StressPlan& plan, co
        << totals;
     std::vector<std::string> charts;
     for (ggxcl::Method method : plan.methods)
-        if (plan.etas.empty() || method != ggxcl::Method::bounded)
+        if (plan.etas.empty() || ggxcl::method_traits(method).dielectric)
             charts.emplace_back(ggxcl::method_name(method));
     for (const auto& user : plan.users)
         charts.push_back(user->name());

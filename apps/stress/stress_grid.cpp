@@ -29,14 +29,14 @@ ggxcl::Vec3 view_about(const ggxref::Vec3& n, double c)
 std::vector<std::array<float, 2>> roughness_pairs(ggxcl::Method method, double a)
 {
     float f = float(a), tiny = float(a * 1e-3);
-    if (method == ggxcl::Method::caps_iso)
+    if (ggxcl::method_traits(method).isotropic_only)
         return {{f, f}};
     return {{f, f}, {f, tiny}, {tiny, f}, {0.0f, f}, {f, 0.0f}};
 }
 
 std::vector<ggxref::Vec3> normals_for(ggxcl::Method method)
 {
-    if (method != ggxcl::Method::caps_iso)
+    if (ggxcl::method_traits(method).space != ggxcl::Space::world)
         return {{0, 0, 1}};
     return {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, ggxref::normalize({1, 1, 1}), ggxref::normalize({0.3, -0.2, -0.93})};
 }
@@ -66,7 +66,7 @@ std::array<float, 2> rim_pair(ggxcl::Method method, const std::array<float, 2>& 
 {
     const ggxref::Vec3 i{view.x, view.y, view.z};
     ggxref::Vec3 c{-alpha[0] * i.x, -alpha[1] * i.y, -i.z};
-    if (method == ggxcl::Method::caps_iso && n.z > -1.0) {
+    if (ggxcl::method_traits(method).space == ggxcl::Space::world && n.z > -1.0) {
         const ggxref::Vec3 w = n + ggxref::Vec3{0.0, 0.0, 1.0};
         const double iz = ggxref::dot(i, n);
         const ggxref::Vec3 minus_v = -(alpha[0] * (i - iz * n) + iz * n);

@@ -43,7 +43,7 @@ RangeJob job_of(Job job)
 RangeJob pick_job(int method, Job job)
 {
     switch (method) {
-#define GGXNATIVE_JOB_OF(ID, identifier, name) \
+#define GGXNATIVE_JOB_OF(ID, identifier, name, ...) \
     case GGX_METHOD_##ID:                      \
         return job_of<GGX_METHOD_##ID>(job);
         GGX_METHOD_LIST(GGXNATIVE_JOB_OF)
@@ -63,7 +63,7 @@ Range thread_range(std::uint64_t count, int t, int threads)
 }
 
 const char* const method_names[] = {
-#define GGXNATIVE_NAME(ID, identifier, name) name,
+#define GGXNATIVE_NAME(ID, identifier, name, ...) name,
     GGX_METHOD_LIST(GGXNATIVE_NAME)
 #undef GGXNATIVE_NAME
 };

@@ -28,7 +28,7 @@ using BlockSum = double (*)(const Setup&, std::uint64_t, std::uint64_t);
 BlockSum pick_block_sum(int method)
 {
     switch (method) {
-#define GGXNATIVE_BLOCK_SUM(ID, identifier, name) \
+#define GGXNATIVE_BLOCK_SUM(ID, identifier, name, ...) \
     case GGX_METHOD_##ID:                         \
         return block_sum<GGX_METHOD_##ID>;
         GGX_METHOD_LIST(GGXNATIVE_BLOCK_SUM)

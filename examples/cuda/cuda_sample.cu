@@ -24,7 +24,7 @@ bool ok(cudaError_t status, const char* what)
 }
 
 const char* const method_names[] = {
-#define GGX_NAME(ID, identifier, name) name,
+#define GGX_NAME(ID, identifier, name, ...) name,
     GGX_METHOD_LIST(GGX_NAME)
 #undef GGX_NAME
 };

@@ -1,5 +1,4 @@
-// benchmark.cpp - the unguarded launches of ggxcl/benchmark.hpp, and the
-// programs the bench jobs build.
+// benchmark.cpp - the programs the bench jobs build (ggxcl/benchmark.hpp).
 #include "ggxcl/benchmark.hpp"
 
 #include "device_contract.hpp"
@@ -10,38 +9,26 @@
 
 namespace ggxcl::benchmark {
 
-cl::Event enqueue_unguarded(Sampler& sampler, cl::CommandQueue& queue, const SampleParams& params,
-                            const SampleRange& range, const DeviceOutputs& outputs)
-{
-    return sampler.enqueue_variant(queue, params, range, outputs, 0, {}, nullptr, false);
-}
-
-cl::Event enqueue_furnace_unguarded(Sampler& sampler, cl::CommandQueue& queue, const SampleParams& params,
-                                    const SampleRange& range, const cl::Buffer& sums)
-{
-    return sampler.enqueue_furnace_variant(queue, params, range, sums, {}, nullptr, false);
-}
-
 // Both make the launch's ProgramVariant and its options as the Sampler's launches do; the
 // device's quirk options are what build_program appends.
-ProgramText enqueue_program(const Sampler& sampler, const SampleParams& params, FieldSet fields, bool guards)
+ProgramText enqueue_program(const Sampler& sampler, const SampleParams& params, FieldSet fields)
 {
     const detail::ValidatedParams valid = detail::validated(params);
     if (fields.empty())
         throw InvalidArgument("fields", "none", "at least one field (" + field_list() + ")");
     const cl::Device& device = sampler.device();
     const detail::ProgramVariant variant =
-        detail::variant_of(detail::ProgramKind::bulk, *valid, detail::write_mask(fields), {}, guards);
+        detail::variant_of(detail::ProgramKind::bulk, *valid, detail::write_mask(fields));
     return {detail::program_file(variant.kind), "ggx_sample_bulk",
             detail::build_options(device, variant) + detail::device_quirk_options(device)};
 }
 
-ProgramText furnace_program(const Sampler& sampler, const SampleParams& params, bool guards)
+ProgramText furnace_program(const Sampler& sampler, const SampleParams& params)
 {
     const detail::ValidatedParams valid = detail::validated(params);
     const cl::Device& device = sampler.device();
     const detail::ProgramVariant variant =
-        detail::variant_of(detail::ProgramKind::furnace, *valid, detail::write_mask({Field::weight}), {}, guards);
+        detail::variant_of(detail::ProgramKind::furnace, *valid, detail::write_mask({Field::weight}));
     return {detail::program_file(variant.kind), "ggx_furnace_bulk",
             detail::build_options(device, variant) + detail::device_quirk_options(device)};
 }

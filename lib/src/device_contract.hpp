@@ -23,7 +23,8 @@ static_assert(static_cast<int>(Field::pdf_o) == GGX_FIELD_PDF_O);
 static_assert(static_cast<int>(Field::weight) == GGX_FIELD_WEIGHT);
 static_assert(static_cast<int>(Field::u) == GGX_FIELD_U);
 static_assert(all_fields.size() == GGX_FIELD_COUNT, "every kernel field id has its ggxcl::Field");
-static_assert(GGX_PARAM_ARG_COUNT == GGX_PARAM_UNIFORM_COUNT + 4, "the uniform floats, then four buffers");
+static_assert(GGX_PARAM_ARG_COUNT == GGX_PARAM_UNIFORM_COUNT + 2 * GGX_PARAM_BUFFER_COUNT,
+              "the uniform floats, then four buffers, then their offsets");
 
 static_assert(static_cast<int>(Sequence::philox) == GGX_SEQUENCE_PHILOX);
 static_assert(static_cast<int>(Sequence::sobol) == GGX_SEQUENCE_SOBOL);
@@ -46,9 +47,12 @@ inline unsigned write_mask(FieldSet fields) { return fields.bits(); }
 constexpr cl_uint arg_seed = GGX_ARG_SEED, arg_first = GGX_ARG_FIRST, arg_count = GGX_ARG_COUNT,
                   arg_stride = GGX_ARG_STRIDE, arg_params = GGX_ARG_PARAMS, arg_outputs = GGX_ARG_OUTPUTS;
 constexpr cl_uint arg_output(Field field) { return GGX_ARG_OUTPUTS + static_cast<cl_uint>(field); }
+constexpr cl_uint arg_output_offset(Field field) { return GGX_ARG_OUTPUT_OFFSETS + static_cast<cl_uint>(field); }
+constexpr cl_uint arg_sums_offset = GGX_ARG_SUMS_OFFSET;
 constexpr cl_uint pdf_arg_count = GGX_PDF_ARG_COUNT, pdf_arg_stride = GGX_PDF_ARG_STRIDE,
                   pdf_arg_params = GGX_PDF_ARG_PARAMS, pdf_arg_directions = GGX_PDF_ARG_DIRECTIONS,
-                  pdf_arg_pdfs = GGX_PDF_ARG_PDFS;
+                  pdf_arg_pdfs = GGX_PDF_ARG_PDFS, pdf_arg_directions_offset = GGX_PDF_ARG_DIRECTIONS_OFFSET,
+                  pdf_arg_pdfs_offset = GGX_PDF_ARG_PDFS_OFFSET;
 constexpr cl_uint count_arg_bins = GGX_COUNT_ARG_BINS, count_arg_count = GGX_COUNT_ARG_COUNT,
                   count_arg_per_item = GGX_COUNT_ARG_PER_ITEM, count_arg_counts = GGX_COUNT_ARG_COUNTS;
 

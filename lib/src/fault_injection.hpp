@@ -23,6 +23,8 @@ struct InjectedFault {
 // The value is parsed when it changes; a malformed one is refused
 // (InvalidArgument naming the forms allowed) on every call.  While the
 // variable has never been set, a call costs one getenv and no lock.
-InjectedFault injected_fault(bool count_launch, std::uint64_t& launches_before);
+// Hidden: not exported by libggxcl (the variable is the interface).
+__attribute__((visibility("hidden"))) InjectedFault injected_fault(bool count_launch,
+                                                                   std::uint64_t& launches_before);
 
 } // namespace ggxcl::detail

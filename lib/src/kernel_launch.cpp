@@ -20,12 +20,6 @@ std::string build_options(const cl::Device& device, const ProgramVariant& varian
     return variant_defines(variant) + precision_options(device, variant.precision);
 }
 
-std::string build_options(const cl::Device& device, const SampleParams& params, unsigned write_mask,
-                          const DeviceInputs& inputs, bool guards)
-{
-    return build_options(device, variant_of(ProgramKind::bulk, params, write_mask, inputs, guards));
-}
-
 void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in)
 {
     const float values[GGX_PARAM_UNIFORM_COUNT] = {p.view.x,   p.view.y,   p.view.z,   p.alpha_x, p.alpha_y,
@@ -33,9 +27,12 @@ void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p
     for (cl_uint k = 0; k < GGX_PARAM_UNIFORM_COUNT; ++k)
         kernel.setArg(first_arg + k, values[k]);
     const cl::Buffer* buffers[] = {&in.view, &in.alpha, &in.normal, &in.uniforms};
-    static_assert(GGX_PARAM_UNIFORM_COUNT + std::size(buffers) == GGX_PARAM_ARG_COUNT);
-    for (cl_uint k = 0; k < std::size(buffers); ++k)
+    const std::uint64_t offsets[] = {in.view_offset, in.alpha_offset, in.normal_offset, in.uniforms_offset};
+    static_assert(std::size(buffers) == GGX_PARAM_BUFFER_COUNT);
+    for (cl_uint k = 0; k < std::size(buffers); ++k) {
         kernel.setArg(first_arg + GGX_PARAM_UNIFORM_COUNT + k, *buffers[k]);
+        kernel.setArg(first_arg + GGX_PARAM_UNIFORM_COUNT + GGX_PARAM_BUFFER_COUNT + k, cl_ulong(offsets[k]));
+    }
 }
 
 void check_launch_count(std::uint64_t count, std::uint32_t stride)
@@ -46,16 +43,18 @@ void check_launch_count(std::uint64_t count, std::uint32_t stride)
         throw InvalidArgument("stride", std::to_string(stride), "0 (= count) or at least count");
 }
 
-void check_buffer_size(const cl::Buffer& buffer, const std::string& name, int planes, std::uint64_t stride)
+void check_buffer_size(const DeviceArray& array, const std::string& name, int planes, std::uint64_t stride)
 {
-    if (buffer() == nullptr)
+    if (array.buffer() == nullptr)
         return;
-    const std::uint64_t needed = std::uint64_t(planes) * stride * sizeof(float);
-    const std::uint64_t size = buffer.getInfo<CL_MEM_SIZE>();
-    if (size < needed)
-        throw InvalidArgument(name, std::to_string(size) + " bytes",
-                              "at least " + std::to_string(needed) + " bytes (" + std::to_string(planes) +
-                                  " planes of stride " + std::to_string(stride) + " floats)");
+    const std::uint64_t floats = array.buffer.getInfo<CL_MEM_SIZE>() / sizeof(float);
+    const std::uint64_t needed = std::uint64_t(planes) * stride;
+    if (array.offset > floats || floats - array.offset < needed)
+        throw InvalidArgument(name, "a buffer of " + std::to_string(floats) + " floats with offset " +
+                                        std::to_string(array.offset),
+                              "offset + " + std::to_string(needed) + " floats (" + std::to_string(planes) +
+                                  (planes == 1 ? " plane" : " planes") + " of stride " + std::to_string(stride) +
+                                  ") within the buffer");
 }
 
 void check_buffer_sizes(const DeviceOutputs* outputs, const DeviceInputs& inputs, const SampleParams& params,
@@ -64,12 +63,13 @@ void check_buffer_sizes(const DeviceOutputs* outputs, const DeviceInputs& inputs
     const bool dielectric = params.eta != 0.0f;
     if (outputs)
         for (Field f : all_fields)
-            check_buffer_size(outputs->of(f), "outputs." + std::string(field_name(f)), field_columns(f, dielectric),
-                              stride);
-    check_buffer_size(inputs.view, "inputs.view", 3, stride);
-    check_buffer_size(inputs.alpha, "inputs.alpha", is_isotropic(params, inputs) ? 1 : 2, stride);
-    check_buffer_size(inputs.normal, "inputs.normal", 3, stride);
-    check_buffer_size(inputs.uniforms, "inputs.uniforms", dielectric ? 3 : 2, stride);
+            check_buffer_size({outputs->of(f), outputs->offset_of(f)}, "outputs." + std::string(field_name(f)),
+                              field_columns(f, dielectric), stride);
+    check_buffer_size({inputs.view, inputs.view_offset}, "inputs.view", 3, stride);
+    check_buffer_size({inputs.alpha, inputs.alpha_offset}, "inputs.alpha", is_isotropic(params, inputs) ? 1 : 2,
+                      stride);
+    check_buffer_size({inputs.normal, inputs.normal_offset}, "inputs.normal", 3, stride);
+    check_buffer_size({inputs.uniforms, inputs.uniforms_offset}, "inputs.uniforms", dielectric ? 3 : 2, stride);
 }
 
 std::size_t group_size(std::size_t device_max, std::size_t requested)

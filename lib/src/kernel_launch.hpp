@@ -19,22 +19,17 @@ constexpr std::size_t preferred_group_size = 256;
 // A variant's options on `device`: its -D options (variant_defines) and the precision mode's
 // options there (precision_options, ggxcl/user_kernels.hpp).
 std::string build_options(const cl::Device& device, const ProgramVariant& variant);
-// Those of the bulk or furnace program of a request: the method, the written fields, the sequence,
-// per-sample inputs and what the request needs (isotropic, views below the horizon, world space).
-// guards = false (benchmarks only) drops the fallbacks of docs/STABILITY.md.
-std::string build_options(const cl::Device& device, const SampleParams& params, unsigned write_mask,
-                          const DeviceInputs& inputs, bool guards = true);
 
 // Arguments first_arg.. of every kernel: the GGX_PARAM_ARG_COUNT parameter
-// arguments of ggx_contract.h (the uniform floats, then the per-sample view,
-// alpha, normal and uniforms buffers).
+// arguments of ggx_contract.h (the uniform floats, the per-sample view,
+// alpha, normal and uniforms buffers, then their offsets).
 void set_param_args(cl::Kernel& kernel, cl_uint first_arg, const SampleParams& p, const DeviceInputs& in);
 
 void check_launch_count(std::uint64_t count, std::uint32_t stride);
 
-// Throws InvalidArgument naming `name` when `buffer` (if set) holds fewer
-// than planes x stride floats.
-void check_buffer_size(const cl::Buffer& buffer, const std::string& name, int planes, std::uint64_t stride);
+// Throws InvalidArgument naming `name` when `array` (if its buffer is set)
+// holds fewer than planes x stride floats after its offset.
+void check_buffer_size(const DeviceArray& array, const std::string& name, int planes, std::uint64_t stride);
 // The same for every buffer of a launch of `stride` (outputs and per-sample
 // inputs; alpha has one plane where the program is isotropic).
 void check_buffer_sizes(const DeviceOutputs* outputs, const DeviceInputs& inputs, const SampleParams& params,

@@ -1,6 +1,7 @@
 // multi_device.cpp - generate_split: parallel producers, one in-order
-// consumer.  The request is validated once, before the producers start;
-// they draw their chunks through Sampler::generate_validated.
+// consumer.  The request is validated before the producers start, so that a
+// bad one throws before any thread runs; they draw their chunks through the
+// public Sampler::generate.
 #include "ggxcl/multi_device.hpp"
 
 #include <algorithm>
@@ -77,7 +78,7 @@ void generate_split(const std::vector<Sampler*>& samplers, const SampleParams& p
         throw InvalidArgument("samplers", "none", "at least one sampler");
     if (chunk_size == 0)
         throw InvalidArgument("chunk size", "0", "at least 1 sample");
-    const detail::ValidatedParams valid = detail::validated_request(params, range, fields, {});
+    detail::validated_request(params, range, fields, {});
     const std::uint64_t chunks = (range.count + chunk_size - 1) / chunk_size;
     ChunkQueue queue(2 * samplers.size());
     std::vector<std::thread> producers;
@@ -87,7 +88,7 @@ void generate_split(const std::vector<Sampler*>& samplers, const SampleParams& p
                 for (std::uint64_t k = s; k < chunks && queue.wait_for_room(k); k += samplers.size()) {
                     std::uint64_t start = k * chunk_size, n = std::min(chunk_size, range.count - start);
                     const SampleRange chunk{range.seed, range.first + start, n};
-                    queue.put(k, samplers[s]->generate_validated(valid, chunk, fields, {}));
+                    queue.put(k, samplers[s]->generate(params, chunk, fields));
                 }
             } catch (...) {
                 queue.fail(std::current_exception());

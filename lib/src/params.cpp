@@ -1,14 +1,12 @@
 // params.cpp - validation of sampling parameters; every message names the
 // parameter, the bad value and what is allowed.  Also the validated form
-// the Sampler's internal paths take, and the count of validations that
-// tests read (validated_params.hpp).
+// the Sampler's internal paths take (validated_params.hpp).
 #include "ggxcl/params.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
-#include <sstream>
+#include <charconv>
 
 #include "ggxcl/error.hpp"
 #include "named_values.hpp"
@@ -18,14 +16,14 @@ namespace ggxcl {
 
 namespace {
 
-std::atomic<std::uint64_t> params_validated{0};  // validate(SampleParams) calls, for detail::params_validations
-
-std::string text(double value)
+// The shortest text that reads back as `value` (std::to_chars): what a user
+// typed for it, in most cases ("1e-35", "0.3", "200"), not its rounding.
+template <class Number>
+std::string text(Number value)
 {
-    std::ostringstream out;
-    out.precision(9);
-    out << value;
-    return out.str();
+    char digits[64];
+    const std::to_chars_result end = std::to_chars(digits, digits + sizeof digits, value);
+    return std::string(digits, end.ptr);
 }
 
 std::string text(const Vec3& v)
@@ -35,8 +33,14 @@ std::string text(const Vec3& v)
 
 void check_alpha(const char* name, float alpha)
 {
-    if (!(alpha > 0.0f) || !std::isfinite(alpha))
-        throw InvalidArgument(name, text(alpha), "a finite number > 0");
+    if (!(alpha >= min_alpha && alpha <= max_alpha))  // NaN fails the compares
+        throw InvalidArgument(name, text(alpha), alpha_range);
+}
+
+void check_angle(const char* name, double degrees, double low, double high)
+{
+    if (!(degrees >= low && degrees <= high))
+        throw InvalidArgument(name, text(degrees), "degrees from " + text(low) + " to " + text(high));
 }
 
 void check_direction(const char* name, const Vec3& v)
@@ -50,9 +54,11 @@ void check_isotropic(const SampleParams& params, float alpha_x, float alpha_y)
 {
     if (alpha_x == alpha_y)
         return;
-    if (params.method == Method::caps_iso)
+    const MethodTraits& traits = method_traits(params.method);
+    if (traits.isotropic_only)
         throw InvalidArgument("alpha", text(alpha_x) + "," + text(alpha_y),
-                              "one value (alpha_x == alpha_y) for caps-iso, which is isotropic");
+                              "one value (alpha_x == alpha_y) for " + std::string(traits.name) + ": " +
+                                  std::string(traits.limits));
     if (params.world_space)
         throw InvalidArgument("alpha", text(alpha_x) + "," + text(alpha_y),
                               "one value (alpha_x == alpha_y) in world space, where the normal fixes no tangent");
@@ -66,7 +72,7 @@ void check_uniforms(std::size_t index, const std::array<float, 2>& u)
                               "two numbers in [0, 1)");
 }
 
-// eta: 0 (no dielectric) or a relative index; bounded has no exact dielectric sampler.
+// eta: 0 (no dielectric) or a relative index, for a method with a dielectric sampler.
 void check_eta(const SampleParams& params)
 {
     const float eta = params.eta;
@@ -75,11 +81,9 @@ void check_eta(const SampleParams& params)
     if (!(eta > 0.0f) || !std::isfinite(eta) || eta == 1.0f)
         throw InvalidArgument("eta", text(eta),
                               "0 (a conductor, Fresnel 1) or a relative index of refraction: finite, > 0 and != 1");
-    if (params.method == Method::bounded)
-        throw InvalidArgument("eta", text(eta),
-                              "0 for bounded: its cap leaves out microfacet normals whose reflection leaves the "
-                              "surface but which refract, so it cannot sample every transmitted direction; use caps "
-                              "(or heitz) for dielectrics");
+    const MethodTraits& traits = method_traits(params.method);
+    if (!traits.dielectric)
+        throw InvalidArgument("eta", text(eta), "0 for " + sampler_name(params) + ": " + std::string(traits.limits));
     const int transport = static_cast<int>(params.transport);
     if (transport < 0 || transport >= int(all_transports.size()))
         throw InvalidArgument("transport", std::to_string(transport), "radiance or importance");
@@ -94,10 +98,6 @@ void check_user_sampler(const SampleParams& params)
     if (!user && params.user_sampler)
         throw InvalidArgument("method", std::string(method_name(params.method)),
                               "user when user_sampler is set (" + params.user_sampler->name() + ")");
-    if (user && params.eta != 0.0f)
-        throw InvalidArgument("eta", text(params.eta),
-                              "0 for a user sampler (" + params.user_sampler->name() +
-                                  "): its reflection sampler is run on conductors only");
     if (user && params.world_space)
         throw InvalidArgument("world_space", "true",
                               "false for a user sampler (" + params.user_sampler->name() + "): tangent space only");
@@ -191,6 +191,8 @@ Vec3 unit_vector(const Vec3& v)
 
 Vec3 view_from_angles(double theta_degrees, double phi_degrees)
 {
+    check_angle("theta", theta_degrees, 0.0, 180.0);
+    check_angle("phi", phi_degrees, -360.0, 360.0);
     const double to_radians = 3.14159265358979323846 / 180.0;
     double t = theta_degrees * to_radians, p = phi_degrees * to_radians;
     return {float(std::sin(t) * std::cos(p)), float(std::sin(t) * std::sin(p)), float(std::cos(t))};
@@ -205,7 +207,7 @@ std::string sampler_name(const SampleParams& params)
 
 bool uses_normal(const SampleParams& params)
 {
-    return params.method == Method::caps_iso || params.world_space;
+    return method_traits(params.method).space == Space::world || params.world_space;
 }
 
 bool view_above_horizon(const Vec3& view, const Vec3& normal, bool against_normal)
@@ -241,7 +243,6 @@ bool all_isotropic(const PerSampleInputs& inputs, const SampleParams& params)
 
 void validate(const SampleParams& params)
 {
-    params_validated.fetch_add(1, std::memory_order_relaxed);
     check_alpha("alpha_x", params.alpha_x);
     check_alpha("alpha_y", params.alpha_y);
     check_isotropic(params, params.alpha_x, params.alpha_y);
@@ -263,11 +264,6 @@ ValidatedParams validated(const SampleParams& params)
 {
     validate(params);
     return ValidatedParams(with_unit_vectors(params));
-}
-
-std::uint64_t params_validations()
-{
-    return params_validated.load(std::memory_order_relaxed);
 }
 
 } // namespace detail

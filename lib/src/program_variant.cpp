@@ -32,7 +32,7 @@ const char* program_kind_name(ProgramKind kind)
 
 bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs)
 {
-    if (params.method == Method::caps_iso || params.world_space)
+    if (method_traits(params.method).isotropic_only || params.world_space)
         return true;  // validated isotropic
     return inputs.alpha() != nullptr ? inputs.isotropic : params.alpha_x == params.alpha_y;
 }
@@ -46,7 +46,7 @@ bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs)
 }
 
 ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
-                          const DeviceInputs& inputs, bool guards)
+                          const DeviceInputs& inputs)
 {
     ProgramVariant v;
     v.kind = kind;
@@ -61,13 +61,13 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
     v.isotropic = is_isotropic(params, inputs);
     v.below_horizon = !is_above_horizon(params, inputs);
     v.world_space = params.world_space;
-    v.guards = guards;
+    v.guards = params.guards;
     v.normal_is_z = inputs.normal() == nullptr && params.normal.x == 0.0f && params.normal.y == 0.0f &&
                     params.normal.z == 1.0f;
     v.dielectric = params.eta != 0.0f;
     v.importance = v.dielectric && params.transport == Transport::importance;
     v.user = params.user_sampler;
-    return v;
+    return with_kind_fixed(v);
 }
 
 std::string variant_defines(const ProgramVariant& v)
@@ -110,11 +110,12 @@ std::string variant_key(const ProgramVariant& v)
 
 bool variant_is_reachable(const ProgramVariant& v)
 {
-    if ((v.method == Method::caps_iso || v.world_space) && !v.isotropic)
+    const MethodTraits& traits = method_traits(v.method);
+    if ((traits.isotropic_only || v.world_space) && !v.isotropic)
         return false;
     if (v.per_sample_normal && v.normal_is_z)
         return false;
-    if ((v.importance && !v.dielectric) || (v.dielectric && v.method == Method::bounded))
+    if ((v.importance && !v.dielectric) || (v.dielectric && !traits.dielectric))
         return false;
     if ((v.method == Method::user) != bool(v.user) || (v.user && (v.dielectric || v.world_space)))
         return false;

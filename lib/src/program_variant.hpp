@@ -1,7 +1,7 @@
 // program_variant.hpp - a program the runtime builds, as plain values: the
 // kernel file and every specialization its -D options select.  The runtime
 // makes one from each request (variant_of) and writes its options from it
-// (variant_defines); program_variants.hpp enumerates them without a device,
+// (variant_defines); tests/support/program_variants.hpp enumerates them without a device,
 // for the offline GPU compilers (tests/gpu_compilers).
 #pragma once
 
@@ -60,10 +60,11 @@ struct ProgramVariant {
 bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs);
 bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
 
-// The variant a request builds: its method, precision and sequence, the fields written, the per-sample
-// inputs set, and what the request needs (isotropic, views below the horizon, world space, n = z).
+// The variant a request builds: its method, precision, sequence and guards, the fields written, the
+// per-sample inputs set, and what the request needs (isotropic, views below the horizon, world space,
+// n = z).  The bulk program's pdf kernels evaluate the BSDF instead with eval = true (set by the caller).
 ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
-                          const DeviceInputs& inputs, bool guards);
+                          const DeviceInputs& inputs = {});
 
 // The -D options of a variant, the same on every device (the precision mode's options and the
 // device's quirks are added by the caller: precision_options, device_quirk_options).
@@ -75,8 +76,8 @@ std::string variant_defines(const ProgramVariant& variant);
 ProgramVariant with_kind_fixed(ProgramVariant variant);
 
 // Whether variant_of can give this variant for some valid request (caps-iso and world space are
-// isotropic; a per-sample normal is never promised to be z; importance transport and every method
-// but bounded with a dielectric only; what with_kind_fixed fixes).
+// isotropic; a per-sample normal is never promised to be z; importance transport with a dielectric
+// only, and a dielectric only for the methods that have its sampler; what with_kind_fixed fixes).
 bool variant_is_reachable(const ProgramVariant& variant);
 
 // What tells two variants apart: the kind, the precision and the -D options.

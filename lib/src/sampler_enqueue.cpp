@@ -1,9 +1,10 @@
 // sampler_enqueue.cpp - the Sampler's construction and settings, and its
-// launches into the caller's buffers: enqueue, warm_up, enqueue_pdf, each
-// validating its arguments once and then launching through
-// enqueue_validated or enqueue_pdf_validated, which the host-memory front
-// ends (sampler_generate.cpp) call per chunk.  The histogram and the fused
-// estimator are in sampler_histogram.cpp and sampler_furnace.cpp.
+// launches into the caller's buffers at their offsets: enqueue, warm_up,
+// enqueue_pdf and enqueue_eval, each validating its arguments once and then
+// launching through launch_samples or launch_directions, which the
+// host-memory front ends (sampler_generate.cpp) call per chunk.  The
+// histogram and the fused estimator are in sampler_histogram.cpp and
+// sampler_furnace.cpp.
 #include "ggxcl/sampler.hpp"
 
 #include <algorithm>
@@ -47,6 +48,18 @@ cl::Buffer& DeviceOutputs::of(Field field)
 const cl::Buffer& DeviceOutputs::of(Field field) const
 {
     return const_cast<DeviceOutputs*>(this)->of(field);
+}
+
+std::uint64_t& DeviceOutputs::offset_of(Field field)
+{
+    std::uint64_t* offsets[] = {&m_offset, &o_offset, &pdf_m_offset, &pdf_o_offset, &weight_offset, &u_offset};
+    static_assert(std::size(offsets) == all_fields.size());
+    return *offsets[static_cast<int>(field)];
+}
+
+std::uint64_t DeviceOutputs::offset_of(Field field) const
+{
+    return const_cast<DeviceOutputs*>(this)->offset_of(field);
 }
 
 std::vector<float>& SampleSet::column_source(Field field)
@@ -124,13 +137,6 @@ cl::Event Sampler::enqueue(cl::CommandQueue& queue, const SampleParams& params, 
                            const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
                            const std::vector<cl::Event>* wait)
 {
-    return enqueue_variant(queue, params, range, outputs, stride, inputs, wait, true);
-}
-
-cl::Event Sampler::enqueue_variant(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
-                                   const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
-                                   const std::vector<cl::Event>* wait, bool guards)
-{
     const ValidatedParams valid = validated(params);
     validate(range);
     check_launch_count(range.count, stride);
@@ -138,15 +144,16 @@ cl::Event Sampler::enqueue_variant(cl::CommandQueue& queue, const SampleParams& 
         throw InvalidArgument("outputs", "none", "at least one output buffer (" + field_list() + ")");
     return translate_cl_errors([&] {
         check_buffer_sizes(&outputs, inputs, *valid, stride ? stride : range.count);
-        return enqueue_validated(queue, valid, range, outputs, stride, inputs, wait, guards);
+        const ProgramVariant variant = variant_of(ProgramKind::bulk, *valid, write_mask_of(outputs), inputs);
+        return launch_samples(queue, variant, valid, range, outputs, stride, inputs, wait);
     });
 }
 
-cl::Event Sampler::enqueue_validated(cl::CommandQueue& queue, const ValidatedParams& params, const SampleRange& range,
-                                     const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
-                                     const std::vector<cl::Event>* wait, bool guards)
+cl::Event Sampler::launch_samples(cl::CommandQueue& queue, const ProgramVariant& variant, const ValidatedParams& params,
+                                  const SampleRange& range, const DeviceOutputs& outputs, std::uint32_t stride,
+                                  const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
 {
-    std::string options = build_options(device_, *params, write_mask_of(outputs), inputs, guards);
+    const std::string options = build_options(device_, variant);
     auto make = [&](const std::string& name) {
         KernelLease lease = kernel(bulk_file, name, options);
         cl::Kernel& k = *lease;
@@ -155,8 +162,10 @@ cl::Event Sampler::enqueue_validated(cl::CommandQueue& queue, const ValidatedPar
         k.setArg(arg_count, cl_uint(range.count));
         k.setArg(arg_stride, cl_uint(stride ? stride : range.count));
         set_param_args(k, arg_params, *params, inputs);
-        for (Field f : all_fields)
+        for (Field f : all_fields) {
             k.setArg(arg_output(f), outputs.of(f));
+            k.setArg(arg_output_offset(f), cl_ulong(outputs.offset_of(f)));
+        }
         return lease;
     };
     return launch_split(queue, work_group_size(), make, "ggx_sample_bulk", cl_uint(range.count), wait);
@@ -178,7 +187,9 @@ void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceI
         };
         const float unit_z[] = {0.0f, 0.0f, 1.0f}, half[] = {0.5f, 0.5f, 0.5f}, zero[] = {0.0f, 0.0f, 0.0f};
         const bool dielectric = (*valid).eta != 0.0f;
-        DeviceInputs scratch_inputs = inputs;
+        DeviceInputs scratch_inputs = inputs;  // the same kinds of inputs, at offset 0
+        scratch_inputs.view_offset = scratch_inputs.alpha_offset = scratch_inputs.normal_offset =
+            scratch_inputs.uniforms_offset = 0;
         if (inputs.view() != nullptr) scratch_inputs.view = floats(3, unit_z);
         if (inputs.alpha() != nullptr) scratch_inputs.alpha = floats(2, half);
         if (inputs.normal() != nullptr) scratch_inputs.normal = floats(3, unit_z);
@@ -187,28 +198,20 @@ void Sampler::warm_up(const SampleParams& params, FieldSet fields, const DeviceI
         for (Field f : all_fields)
             if (fields.has(f))
                 outputs.of(f) = floats(field_columns(f, dielectric), zero);
-        enqueue_validated(queue_, valid, {0, 0, count}, outputs, 0, scratch_inputs, nullptr, true).wait();
+        const ProgramVariant variant = variant_of(ProgramKind::bulk, *valid, write_mask(fields), scratch_inputs);
+        launch_samples(queue_, variant, valid, {0, 0, count}, outputs, 0, scratch_inputs, nullptr).wait();
         return 0;
     });
 }
 
-cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
-                               const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride,
-                               const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
-{
-    return enqueue_directions(queue, params, count, directions, pdf_out, stride, inputs, wait, false);
-}
+namespace {
 
-cl::Event Sampler::enqueue_eval(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
-                                const cl::Buffer& directions, const cl::Buffer& values, std::uint32_t stride,
-                                const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
-{
-    return enqueue_directions(queue, params, count, directions, values, stride, inputs, wait, true);
-}
-
-cl::Event Sampler::enqueue_directions(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
-                                      const cl::Buffer& directions, const cl::Buffer& out, std::uint32_t stride,
-                                      const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool eval)
+// enqueue_pdf and enqueue_eval: the arguments checked, then the pdf kernels of the request's variant,
+// computing the pdf or (eval) the BSDF value.
+template <class Launch>
+cl::Event checked_directions(const SampleParams& params, std::uint32_t count, const DeviceArray& directions,
+                             const DeviceArray& out, const char* out_name, std::uint32_t stride,
+                             const DeviceInputs& inputs, bool eval, Launch&& launch)
 {
     const ValidatedParams valid = validated(params);
     check_launch_count(count, stride);
@@ -216,17 +219,42 @@ cl::Event Sampler::enqueue_directions(cl::CommandQueue& queue, const SampleParam
         const std::uint64_t planes_stride = stride ? stride : count;
         check_buffer_sizes(nullptr, inputs, *valid, planes_stride);
         check_buffer_size(directions, "directions", 3, planes_stride);
-        check_buffer_size(out, eval ? "values" : "pdf_out", 1, planes_stride);
-        return enqueue_pdf_validated(queue, valid, count, directions, out, stride, inputs, wait, eval);
+        check_buffer_size(out, out_name, 1, planes_stride);
+        ProgramVariant variant = variant_of(ProgramKind::bulk, *valid, 0, inputs);
+        variant.eval = eval;
+        return launch(variant, valid);
     });
 }
 
-cl::Event Sampler::enqueue_pdf_validated(cl::CommandQueue& queue, const ValidatedParams& params, std::uint32_t count,
-                                         const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride,
-                                         const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool eval)
+} // namespace
+
+cl::Event Sampler::enqueue_pdf(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
+                               const DeviceArray& directions, const DeviceArray& pdf_out, std::uint32_t stride,
+                               const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
 {
-    ProgramVariant variant = variant_of(ProgramKind::bulk, *params, 0, inputs, true);
-    variant.eval = eval;
+    return checked_directions(params, count, directions, pdf_out, "pdf_out", stride, inputs, false,
+                              [&](const ProgramVariant& variant, const ValidatedParams& valid) {
+                                  return launch_directions(queue, variant, valid, count, directions, pdf_out, stride,
+                                                           inputs, wait);
+                              });
+}
+
+cl::Event Sampler::enqueue_eval(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
+                                const DeviceArray& directions, const DeviceArray& values, std::uint32_t stride,
+                                const DeviceInputs& inputs, const std::vector<cl::Event>* wait)
+{
+    return checked_directions(params, count, directions, values, "values", stride, inputs, true,
+                              [&](const ProgramVariant& variant, const ValidatedParams& valid) {
+                                  return launch_directions(queue, variant, valid, count, directions, values, stride,
+                                                           inputs, wait);
+                              });
+}
+
+cl::Event Sampler::launch_directions(cl::CommandQueue& queue, const ProgramVariant& variant,
+                                     const ValidatedParams& params, std::uint32_t count, const DeviceArray& directions,
+                                     const DeviceArray& out, std::uint32_t stride, const DeviceInputs& inputs,
+                                     const std::vector<cl::Event>* wait)
+{
     const std::string options = build_options(device_, variant);
     auto make = [&](const std::string& name) {
         KernelLease lease = kernel(bulk_file, name, options);
@@ -234,8 +262,10 @@ cl::Event Sampler::enqueue_pdf_validated(cl::CommandQueue& queue, const Validate
         k.setArg(pdf_arg_count, cl_uint(count));
         k.setArg(pdf_arg_stride, cl_uint(stride ? stride : count));
         set_param_args(k, pdf_arg_params, *params, inputs);
-        k.setArg(pdf_arg_directions, directions);
-        k.setArg(pdf_arg_pdfs, pdf_out);
+        k.setArg(pdf_arg_directions, directions.buffer);
+        k.setArg(pdf_arg_pdfs, out.buffer);
+        k.setArg(pdf_arg_directions_offset, cl_ulong(directions.offset));
+        k.setArg(pdf_arg_pdfs_offset, cl_ulong(out.offset));
         return lease;
     };
     return launch_split(queue, work_group_size(), make, "ggx_pdf_bulk", count, wait);

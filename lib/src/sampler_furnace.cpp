@@ -1,8 +1,9 @@
 // sampler_furnace.cpp - Sampler::furnace and enqueue_furnace: the fused
 // white-furnace estimator, which sums the estimator weights per work-item
 // on the device (kernels/ggx_furnace.cl) and adds those partial sums in
-// double on the host.  Both validate once; furnace's launches go through
-// enqueue_furnace_validated.
+// double on the host.  Both validate once; their launches go through
+// launch_furnace.  furnace() draws each launch without the guards first and
+// again with them only when a partial sum is not finite.
 #include <algorithm>
 #include <cmath>
 
@@ -21,6 +22,12 @@ namespace {
 
 constexpr std::uint64_t samples_per_launch = 1u << 26;  // a multiple of samples_per_item
 constexpr std::uint64_t samples_per_item = detail::furnace_per_item;
+
+// The program of the estimator: it sums weights (its kernel ignores the write mask).
+detail::ProgramVariant furnace_variant(const SampleParams& params, const DeviceInputs& inputs)
+{
+    return detail::variant_of(detail::ProgramKind::furnace, params, detail::write_mask({Field::weight}), inputs);
+}
 
 // The planes of partial sums a launch writes: weights, squares, and a dielectric's reflected weights.
 std::size_t sum_planes(const SampleParams& params)
@@ -81,16 +88,8 @@ std::size_t Sampler::furnace_items(std::uint64_t count) const
 }
 
 cl::Event Sampler::enqueue_furnace(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
-                                   const cl::Buffer& sums, const DeviceInputs& inputs,
+                                   const DeviceArray& sums, const DeviceInputs& inputs,
                                    const std::vector<cl::Event>* wait)
-{
-    return enqueue_furnace_variant(queue, params, range, sums, inputs, wait, true);
-}
-
-cl::Event Sampler::enqueue_furnace_variant(cl::CommandQueue& queue, const SampleParams& params,
-                                           const SampleRange& range, const cl::Buffer& sums,
-                                           const DeviceInputs& inputs, const std::vector<cl::Event>* wait,
-                                           bool guards)
 {
     const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
@@ -100,27 +99,25 @@ cl::Event Sampler::enqueue_furnace_variant(cl::CommandQueue& queue, const Sample
     return detail::translate_cl_errors([&] {
         detail::check_buffer_sizes(nullptr, inputs, *valid, range.count);
         detail::check_buffer_size(sums, "sums", int(sum_planes(params)), furnace_items(range.count));
-        return enqueue_furnace_validated(queue, valid, range, sums, inputs, wait, guards);
+        return launch_furnace(queue, furnace_variant(*valid, inputs), valid, range, sums, inputs, wait);
     });
 }
 
-cl::Event Sampler::enqueue_furnace_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
-                                             const SampleRange& range, const cl::Buffer& sums,
-                                             const DeviceInputs& inputs, const std::vector<cl::Event>* wait,
-                                             bool guards)
+cl::Event Sampler::launch_furnace(cl::CommandQueue& queue, const detail::ProgramVariant& variant,
+                                  const detail::ValidatedParams& params, const SampleRange& range,
+                                  const DeviceArray& sums, const DeviceInputs& inputs,
+                                  const std::vector<cl::Event>* wait)
 {
-    // The estimator sums weights (its kernel ignores the write mask).
-    const unsigned mask = detail::write_mask({Field::weight});
-    KernelLease lease =
-        kernel(detail::program_file(detail::ProgramKind::furnace), "ggx_furnace_bulk",
-               detail::build_options(device_, detail::variant_of(detail::ProgramKind::furnace, *params, mask, inputs, guards)));
+    KernelLease lease = kernel(detail::program_file(detail::ProgramKind::furnace), "ggx_furnace_bulk",
+                               detail::build_options(device_, variant));
     cl::Kernel& k = *lease;
     k.setArg(detail::arg_seed, cl_ulong(range.seed));
     k.setArg(detail::arg_first, cl_ulong(range.first));
     k.setArg(detail::arg_count, cl_uint(range.count));
     k.setArg(detail::arg_stride, cl_uint(range.count));
     detail::set_param_args(k, detail::arg_params, *params, inputs);
-    k.setArg(detail::arg_outputs, sums);
+    k.setArg(detail::arg_outputs, sums.buffer);
+    k.setArg(detail::arg_sums_offset, cl_ulong(sums.offset));
     cl::Event event;
     detail::before_launch();
     queue.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(furnace_items(range.count)),
@@ -134,11 +131,14 @@ void Sampler::add_furnace_launch(const detail::ValidatedParams& params, const Sa
                                  const cl::Buffer& sums, std::vector<float>& host, FurnaceSums& total)
 {
     const std::size_t used = furnace_items(range.count), planes = sum_planes(*params);
-    for (bool guarded : {false, true}) {
-        enqueue_furnace_validated(queue_, params, range, sums, {}, nullptr, guarded);
+    SampleParams unguarded = *params, guarded = *params;
+    unguarded.guards = false;
+    guarded.guards = true;
+    for (const detail::ProgramVariant& variant : {furnace_variant(unguarded, {}), furnace_variant(guarded, {})}) {
+        launch_furnace(queue_, variant, params, range, sums, {}, nullptr);
         detail::read_and_wait(queue_, sums, 0, planes * used * sizeof(float), host.data());
         // One order of additions, whatever the launches; the guarded pass counts even if not finite.
-        if (add_partial_sums(host, used, planes, total, guarded) || guarded)
+        if (add_partial_sums(host, used, planes, total, variant.guards) || variant.guards)
             return;
     }
 }

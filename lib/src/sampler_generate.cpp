@@ -2,12 +2,16 @@
 // host-memory front end that runs the bulk kernels chunk by chunk through
 // device buffers of bounded size, halving the chunk when the device runs
 // out of memory.  Each call validates its request once at its start; the
-// chunks launch through enqueue_validated and enqueue_pdf_validated.
+// chunks launch through launch_samples and launch_directions.  Chunks are
+// mapped where the device shares host memory, read into host vectors
+// elsewhere.
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 
 #include "cl_call.hpp"
+#include "device_contract.hpp"
+#include "kernel_launch.hpp"
 #include "queue_waits.hpp"
 #include "device_faults.hpp"
 #include "validated_params.hpp"
@@ -229,8 +233,9 @@ SampleView view_of(const SampleSet& set)
 }
 
 void Sampler::run_chunks(const detail::ValidatedParams& params, const SampleRange& range, FieldSet fields,
-                         const PerSampleInputs& per_sample, bool map, const ChunkDelivery& deliver)
+                         const PerSampleInputs& per_sample, const ChunkDelivery& deliver)
 {
+    const bool map = host_unified_;
     translate_cl_errors([&] {
         std::uint64_t start = 0, chunk = fitted_capacity(max_alloc_, chunk_size_, range.count, 3);
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
@@ -239,6 +244,8 @@ void Sampler::run_chunks(const detail::ValidatedParams& params, const SampleRang
             ChunkSlot slots[2] = {ChunkSlot(context_, fields, capacity, map, dielectric),
                                   ChunkSlot(context_, fields, capacity, map, dielectric)};
             ChunkInputs inputs(context_, per_sample, *params, capacity);
+            const detail::ProgramVariant variant = detail::variant_of(
+                detail::ProgramKind::bulk, *params, detail::write_mask(fields), inputs.buffers);
             QueueDrain drain{queue_};      // before the slots go, whatever ends the pass
             std::uint64_t next = start;    // the first sample not yet enqueued
             ChunkSlot* pending = nullptr;  // enqueued, not yet delivered
@@ -256,8 +263,8 @@ void Sampler::run_chunks(const detail::ValidatedParams& params, const SampleRang
                     try {
                         // Blocking, on the in-order queue: after the previous chunk's kernel has read them.
                         inputs.upload(queue_, per_sample, next, n, capacity);
-                        enqueue_validated(queue_, params, {range.seed, range.first + next, n}, slot->outputs(),
-                                          std::uint32_t(capacity), inputs.buffers, nullptr, true);
+                        launch_samples(queue_, variant, params, {range.seed, range.first + next, n},
+                                       slot->outputs(), std::uint32_t(capacity), inputs.buffers, nullptr);
                     } catch (...) {
                         // The chunk drawn before this one may be whole: it reaches the sink first.
                         if (pending)
@@ -298,31 +305,49 @@ ValidatedParams validated_request(const SampleParams& params, const SampleRange&
 void Sampler::generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
                                    const ChunkViewSink& sink, const PerSampleInputs& per_sample)
 {
-    run_chunks(detail::validated_request(params, range, fields, per_sample), range, fields, per_sample, host_unified_,
+    run_chunks(detail::validated_request(params, range, fields, per_sample), range, fields, per_sample,
                [&](const SampleView& view, const SampleSet*, std::uint64_t offset) { sink(view, offset); });
 }
+
+namespace {
+
+// A chunk's view as a SampleSet: its planes packed at stride count.
+SampleSet copy_of(const SampleView& view, FieldSet fields, bool dielectric)
+{
+    SampleSet set;
+    set.count = view.count;
+    for (Field f : all_fields) {
+        if (!fields.has(f))
+            continue;
+        const int columns = field_columns(f, dielectric);
+        std::vector<float>& planes = set.column_source(f);
+        planes.resize(columns * view.count);
+        for (int c = 0; c < columns; ++c)
+            std::copy_n(view.column_source(f) + c * view.stride, view.count, planes.data() + c * view.count);
+    }
+    return set;
+}
+
+} // namespace
 
 void Sampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
                               const ChunkSink& sink, const PerSampleInputs& per_sample)
 {
-    run_chunks(detail::validated_request(params, range, fields, per_sample), range, fields, per_sample, false,
-               [&](const SampleView&, const SampleSet* copy, std::uint64_t offset) { sink(*copy, offset); });
+    const bool dielectric = params.eta != 0.0f;
+    run_chunks(detail::validated_request(params, range, fields, per_sample), range, fields, per_sample,
+               [&](const SampleView& view, const SampleSet* copy, std::uint64_t offset) {
+                   sink(copy ? *copy : copy_of(view, fields, dielectric), offset);
+               });
 }
 
 SampleSet Sampler::generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
                             const PerSampleInputs& per_sample)
 {
-    return generate_validated(detail::validated_request(params, range, fields, per_sample), range, fields,
-                              per_sample);
-}
-
-SampleSet Sampler::generate_validated(const detail::ValidatedParams& params, const SampleRange& range,
-                                      FieldSet fields, const PerSampleInputs& per_sample)
-{
+    const detail::ValidatedParams valid = detail::validated_request(params, range, fields, per_sample);
     SampleSet all;
     all.count = range.count;
-    const bool dielectric = (*params).eta != 0.0f;
-    auto copy_chunk = [&](const SampleView&, const SampleSet* chunk, std::uint64_t offset) {
+    const bool dielectric = (*valid).eta != 0.0f;
+    auto copy_chunk = [&](const SampleView& chunk, const SampleSet*, std::uint64_t offset) {
         for (Field f : all_fields) {
             if (!fields.has(f))
                 continue;
@@ -331,34 +356,38 @@ SampleSet Sampler::generate_validated(const detail::ValidatedParams& params, con
             if (whole.empty())  // the first chunk: the whole arrays are allocated once a chunk arrives
                 whole.resize(columns * range.count);
             for (int c = 0; c < columns; ++c)
-                std::copy_n(chunk->column_source(f).data() + c * chunk->count, chunk->count,
+                std::copy_n(chunk.column_source(f) + c * chunk.stride, chunk.count,
                             whole.data() + c * range.count + offset);
         }
     };
-    run_chunks(params, range, fields, per_sample, false, copy_chunk);
+    run_chunks(valid, range, fields, per_sample, copy_chunk);
     return all;
 }
 
 std::vector<float> Sampler::pdf(const SampleParams& params, const std::vector<Vec3>& directions,
                                 const PerSampleInputs& per_sample)
 {
-    return of_directions(params, directions, per_sample, false);
+    const detail::ValidatedParams valid = detail::validated(params);
+    return directions_on_host(detail::variant_of(detail::ProgramKind::bulk, *valid, 0), valid, directions, per_sample);
 }
 
 std::vector<float> Sampler::eval(const SampleParams& params, const std::vector<Vec3>& directions,
                                  const PerSampleInputs& per_sample)
 {
-    return of_directions(params, directions, per_sample, true);
+    const detail::ValidatedParams valid = detail::validated(params);
+    detail::ProgramVariant variant = detail::variant_of(detail::ProgramKind::bulk, *valid, 0);
+    variant.eval = true;
+    return directions_on_host(variant, valid, directions, per_sample);
 }
 
-std::vector<float> Sampler::of_directions(const SampleParams& params, const std::vector<Vec3>& directions,
-                                          const PerSampleInputs& per_sample, bool eval)
+std::vector<float> Sampler::directions_on_host(const detail::ProgramVariant& variant,
+                                               const detail::ValidatedParams& valid,
+                                               const std::vector<Vec3>& directions, const PerSampleInputs& per_sample)
 {
-    const detail::ValidatedParams valid = detail::validated(params);
     const std::uint64_t count = directions.size();
     if (count == 0)
         throw InvalidArgument("directions", "0 entries", "at least one direction");
-    validate(per_sample, params, count);
+    validate(per_sample, *valid, count);
     std::vector<float> result(count);
     translate_cl_errors([&] {
         std::uint64_t start = 0, chunk = fitted_capacity(max_alloc_, chunk_size_, count, 3);
@@ -366,12 +395,16 @@ std::vector<float> Sampler::of_directions(const SampleParams& params, const std:
             cl::Buffer dirs = detail::device_buffer(context_, CL_MEM_READ_ONLY, bytes(3 * capacity));
             cl::Buffer pdfs = detail::device_buffer(context_, CL_MEM_WRITE_ONLY, bytes(capacity));
             ChunkInputs inputs(context_, per_sample, *valid, capacity);
+            // The per-sample inputs' kinds and promises select the program, as in enqueue_pdf.
+            detail::ProgramVariant chunk_variant =
+                detail::variant_of(detail::ProgramKind::bulk, *valid, 0, inputs.buffers);
+            chunk_variant.eval = variant.eval;
             while (start < count) {  // start: the first direction whose pdf is not read back
                 std::uint64_t n = std::min(capacity, count - start);
                 inputs.upload(queue_, per_sample, start, n, capacity);
                 ChunkInputs::write(queue_, dirs, planar_units(directions, start, n, capacity));
-                enqueue_pdf_validated(queue_, valid, std::uint32_t(n), dirs, pdfs, std::uint32_t(capacity),
-                                      inputs.buffers, nullptr, eval);
+                launch_directions(queue_, chunk_variant, valid, std::uint32_t(n), dirs, pdfs,
+                                  std::uint32_t(capacity), inputs.buffers, nullptr);
                 detail::read_and_wait(queue_, pdfs, 0, bytes(n), result.data() + start);
                 start += n;
             }

@@ -26,7 +26,7 @@ constexpr std::uint64_t smallest_pass = 1024;  // samples; out of memory below i
 std::string histogram_options(const cl::Device& device, const SampleParams& params, int bins_z, int bins_phi,
                               Field direction)
 {
-    detail::ProgramVariant variant = detail::variant_of(detail::ProgramKind::histogram, params, 0, {}, true);
+    detail::ProgramVariant variant = detail::variant_of(detail::ProgramKind::histogram, params, 0);
     variant.bins = {bins_z, bins_phi, direction == Field::m};
     return detail::build_options(device, variant);
 }

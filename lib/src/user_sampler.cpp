@@ -144,16 +144,6 @@ std::map<std::string, std::string>& user_parts()  // by key: what follows the ke
 
 } // namespace
 
-std::string_view distribution_name(Distribution distribution)
-{
-    switch (distribution) {
-    case Distribution::vndf: return "vndf";
-    case Distribution::ndf: return "ndf";
-    case Distribution::own: return "own";
-    }
-    return "unknown";
-}
-
 std::shared_ptr<const UserSampler> UserSampler::load(const std::string& path, const std::string& name)
 {
     Expansion expansion;

@@ -34,9 +34,4 @@ ValidatedParams validated(const SampleParams& params);
 ValidatedParams validated_request(const SampleParams& params, const SampleRange& range, FieldSet fields,
                                   const PerSampleInputs& per_sample);
 
-// How many times validate(const SampleParams&) has run in this process
-// (validated() and normalized() included): the tests' check that a call
-// validates once.
-std::uint64_t params_validations();
-
 } // namespace ggxcl::detail

@@ -5,7 +5,9 @@
     d = s.sample("caps", 1 << 20, alpha=0.3, theta=60, seed=1)
     d["o"].shape, d["pdf_o"].shape          # (1048576, 3) float32, (1048576,) float32
 
-Methods: ndf, heitz, heitz2017, caps, caps-iso, bounded, or a sampler of your
+Methods: ndf, heitz, heitz2017, caps, caps-iso, bounded (ggxcl.method_traits
+holds what each is: its space, isotropic only, the distribution of its normals,
+dielectric, views below the horizon, and why a trait is missing), or a sampler of your
 own in one file: ggxcl.UserSampler("my.h") in place of the name
 (docs/USER-SAMPLERS.md).  Fields: m and o
 (n, 3), pdf_m, pdf_o, weight (n,), u (n, 2): the uniforms a sample used.
@@ -32,8 +34,9 @@ from ._ggxcl import (  # noqa: F401
     UserSampler,
     __version__,
     devices,
+    method_traits,
     methods,
 )
 
-__all__ = ["Sampler", "UserSampler", "devices", "methods", "InvalidArgument", "DeviceError", "BuildError", "DeviceLost",
+__all__ = ["Sampler", "UserSampler", "devices", "methods", "method_traits", "InvalidArgument", "DeviceError", "BuildError", "DeviceLost",
            "__version__"]

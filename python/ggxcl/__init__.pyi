@@ -6,6 +6,9 @@ import numpy.typing as npt
 
 __version__: str
 methods: Tuple[str, ...]
+# Per method name: paper, how, space ("tangent" or "world"), isotropic_only, normals ("vndf", "ndf", "own"),
+# dielectric, views_below (bool each) and limits (why a trait is missing; "" when none is).
+method_traits: Dict[str, Dict[str, Any]]
 
 class InvalidArgument(ValueError):
     parameter: str

@@ -132,8 +132,6 @@ Request make_request(const RequestArgs& args)
     r.params.world_space = args.world_space;
     set_alpha(args, r);
     if (args.view.is_none()) {
-        if (!(args.theta >= 0.0 && args.theta <= 180.0))
-            throw ggxcl::InvalidArgument("theta", std::to_string(args.theta), "0 .. 180 degrees");
         r.params.view = ggxcl::view_from_angles(args.theta, args.phi);
     } else {
         set_vector(args.view, "view", args.count, r.params.view, r.per_sample.views);

@@ -1,6 +1,6 @@
 /* c_consumer.c - a C99 program against ggxcl's C API (ggxcl/ggxcl.h).
  *   c_consumer bits DUMP USER_DIR   its own context, queue and buffers at
- *       offsets (direct, sub-buffer, staged) get the C++ enqueue's bits of
+ *       offsets (0, aligned, odd: the kernels take them) get the C++ enqueue's bits of
  *       every case of c_api_cases.h (DUMP, from cpp_dump) and leave the rest
  *       of each buffer untouched; per-sample inputs from buffers at offsets;
  *       the host calls agree; then every status code that one process can
@@ -125,9 +125,8 @@ static void expect_planes(cl_command_queue queue, cl_mem mem, size_t floats, siz
     free(host);
 }
 
-/* Offsets in floats: o at the device's base address alignment (a sub-buffer), pdf_m at 7
- * and the pdfs at 3 (below any alignment: staged), pdf_o and weight in one buffer at 0 and
- * 2000. */
+/* Offsets in floats: o at the device's base address alignment, pdf_m at 7 and the pdfs at 3
+ * (below any alignment), pdf_o and weight in one buffer at 0 and 2000; the kernels take each. */
 enum { PDF_M_OFFSET = 7, WEIGHT_OFFSET = 2000, PDF_OFFSET = 3 };
 static size_t o_offset = 0;
 
@@ -217,7 +216,7 @@ static void check_case(ggxcl_sampler* sampler, cl_context context, cl_command_qu
     clReleaseMemObject(u), clReleaseMemObject(pdf), clReleaseMemObject(value);
 }
 
-/* Per-sample views (at offset 5: staged) and alphas (at the aligned offset: a sub-buffer),
+/* Per-sample views (at offset 5) and alphas (at the aligned offset),
  * every one the case's own: the samples agree with the uniform request's within float
  * rounding (the host normalizes a uniform view in double; the kernel takes these as they are). */
 static void check_per_sample_inputs(ggxcl_sampler* sampler, cl_context context, cl_command_queue queue)
@@ -329,6 +328,9 @@ static void check_errors(ggxcl_sampler* sampler, cl_command_queue queue, const c
     char path[4096];
     cl_mem small = sentinel_buffer(ggxcl_sampler_context(sampler), queue, 1000);
 
+    params.alpha_x = 1e-35f;  /* the library's rule in the library's words */
+    expect_status(ggxcl_generate(sampler, &params, &range, 0, &(ggxcl_host_outputs){0}), GGXCL_INVALID_ARGUMENT,
+                  "invalid alpha_x '1e-35': allowed is a number from 1e-30 to 1e30", "an alpha of 1e-35");
     params.alpha_x = -1.0f;
     expect_status(ggxcl_generate(sampler, &params, &range, 0, &(ggxcl_host_outputs){0}), GGXCL_INVALID_ARGUMENT,
                   "alpha", "a negative alpha");

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
+#include <ggxcl/ggxcl.hpp>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
@@ -284,6 +285,60 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         CHECK(run.err.find(c.flag) != std::string::npos);
         CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
         CHECK(only_file_is(scratch(), 0));
+    }
+}
+
+// The library's refusal of `p` (its InvalidArgument's "allowed" text).
+std::string library_rule(const ggxcl::SampleParams& p)
+{
+    try {
+        ggxcl::validate(p);
+    } catch (const ggxcl::InvalidArgument& error) {
+        return error.allowed();
+    }
+    return "(accepted)";
+}
+
+TEST_CASE("the CLI reports the library's rules in the library's words, naming the option and quoting its text")
+{
+    const ggxtest::ScratchFolder case_folder("cli");
+    const std::string out = " -n 10 --out " + (scratch() / "rule.npy").string();
+    ggxcl::SampleParams tiny, iso, glass;
+    tiny.alpha_x = tiny.alpha_y = 1e-35f;
+    iso.method = ggxcl::Method::caps_iso;
+    iso.alpha_y = 0.2f;
+    glass.method = ggxcl::Method::bounded;
+    glass.eta = 1.5f;
+    struct Case {
+        std::string args, expected;
+    } cases[] = {
+        {"sample --method caps --alpha 1e-35" + out, "--alpha: invalid value '1e-35': allowed is " + library_rule(tiny)},
+        {"sample --method caps-iso --alpha 0.3,0.2" + out,
+         "--alpha: invalid value '0.3,0.2': allowed is " + library_rule(iso)},
+        {"sample --method bounded --eta 1.5" + out, "--eta: invalid value '1.5': allowed is " + library_rule(glass)},
+        {"sample --method caps --theta 200" + out, "--theta: invalid value '200': allowed is degrees from 0 to 180"},
+    };
+    CHECK(library_rule(tiny) == "a number from 1e-30 to 1e30");
+    for (const Case& c : cases) {
+        CAPTURE(c.args);
+        Run run = ggx(c.args);
+        CHECK(run.status == 2);
+        CHECK(run.err == "ggx: " + c.expected + "\n");
+    }
+}
+
+TEST_CASE("ggx methods prints the table of methods (the README's: test_readme_methods)")
+{
+    const ggxtest::ScratchFolder case_folder("cli");
+    const fs::path table = scratch() / "methods.md";
+    Run run = ggxtest::run_ggx("{ " + ggxtest::ggx_binary() + " methods >" + table.string() + "; }",
+                               scratch() / "stderr.txt", false);
+    REQUIRE(run.status == 0);
+    const std::string out = read_all(table);
+    for (const ggxcl::MethodTraits& t : ggxcl::method_table) {
+        CHECK(out.find("| `" + std::string(t.name) + "` | " + std::string(t.paper)) != std::string::npos);
+        if (!t.limits.empty())
+            CHECK(out.find("- `" + std::string(t.name) + "`: " + std::string(t.limits) + ".") != std::string::npos);
     }
 }
 

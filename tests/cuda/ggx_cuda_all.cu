@@ -23,7 +23,7 @@ __device__ inline ggx_vec3 ggx_cuda_load3(const float* p, unsigned int count, un
 
 // Sample `first + j` of stream `seed` for a view i and normal n (tangent space: n = +z but for
 // caps-iso); its pdf of directions o[j]; world-space samples for per-item normals and views.
-#define GGX_CUDA_KERNELS(ID, identifier, name)                                                                  \
+#define GGX_CUDA_KERNELS(ID, identifier, name, ...)                                                                  \
     extern "C" __global__ void ggx_cuda_sample_##identifier(unsigned int seed, unsigned long long first,         \
                                                             unsigned int count, ggx_vec3 i, ggx_vec3 n, float ax, \
                                                             float ay, float* out)                               \

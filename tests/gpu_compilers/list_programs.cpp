@@ -82,12 +82,14 @@ void print_jobs()
         params.view = ggxcl::view_from_angles(60.0, 0.0);
         const unsigned write = (1u << GGX_FIELD_M) | (1u << GGX_FIELD_PDF_M);
         const std::string name(ggxcl::method_name(m));
-        ProgramVariant v = ggxcl::detail::variant_of(ProgramKind::bulk, params, write, {}, true);
+        ProgramVariant v = ggxcl::detail::variant_of(ProgramKind::bulk, params, write);
         std::cout << program_of(name + ":write", v).dump() << "\n";
-        v = ggxcl::detail::variant_of(ProgramKind::furnace, params, 1u << GGX_FIELD_WEIGHT, {}, false);
+        ggxcl::SampleParams unguarded = params;  // furnace() draws without the guards first
+        unguarded.guards = false;
+        v = ggxcl::detail::variant_of(ProgramKind::furnace, unguarded, 1u << GGX_FIELD_WEIGHT);
         std::cout << program_of(name + ":furnace", v).dump() << "\n";
         params.world_space = true;
-        v = ggxcl::detail::variant_of(ProgramKind::bulk, params, 1u << GGX_FIELD_O, {}, true);
+        v = ggxcl::detail::variant_of(ProgramKind::bulk, params, 1u << GGX_FIELD_O);
         v.per_sample_view = v.per_sample_normal = true;  // the bench's buffers of views and normals
         v.normal_is_z = false;
         std::cout << program_of(name + ":world", v).dump() << "\n";

@@ -227,6 +227,31 @@ def test_bad_input_names_the_argument(sampler, kwargs, parameter):
     assert isinstance(error.value, ValueError)
 
 
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(alpha=1e-35), "invalid alpha_x '1e-35': allowed is a number from 1e-30 to 1e30"),
+    (dict(alpha=1e31), "invalid alpha_x '1e+31': allowed is a number from 1e-30 to 1e30"),
+    (dict(theta=200), "invalid theta '200': allowed is degrees from 0 to 180"),
+    (dict(method="caps-iso", alpha=(0.1, 0.2)),
+     "allowed is one value (alpha_x == alpha_y) for caps-iso: " + ggxcl.method_traits["caps-iso"]["limits"]),
+    (dict(method="bounded", eta=1.5), "allowed is 0 for bounded: " + ggxcl.method_traits["bounded"]["limits"]),
+])
+def test_the_library_rules_in_its_words(sampler, kwargs, message):
+    """The library's rule and message, as C++, the C API and the CLI give them."""
+    args = dict(method="caps", n=5, fields=("m",))
+    args.update(kwargs)
+    with pytest.raises(ggxcl.InvalidArgument) as error:
+        sampler.sample(args.pop("method"), args.pop("n"), **args)
+    assert message in str(error.value)
+
+
+def test_method_traits_name_every_method():
+    assert set(ggxcl.method_traits) == set(ggxcl.methods)
+    assert ggxcl.method_traits["caps-iso"]["space"] == "world" and ggxcl.method_traits["caps-iso"]["isotropic_only"]
+    assert not ggxcl.method_traits["bounded"]["dielectric"] and ggxcl.method_traits["bounded"]["normals"] == "own"
+    assert not ggxcl.method_traits["heitz2017"]["views_below"]
+    assert ggxcl.method_traits["ndf"]["normals"] == "ndf"
+
+
 def test_device_errors_are_runtime_errors():
     with pytest.raises(ggxcl.DeviceError) as error:
         ggxcl.Sampler("no-such-device")

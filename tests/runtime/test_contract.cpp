@@ -47,12 +47,13 @@ std::string mismatches(const std::vector<std::string>& names, const Expected& ex
     return found;
 }
 
-// The parameter arguments of GGX_PARAM_ARGS from `first`.
+// The parameter arguments of GGX_PARAM_KERNEL_ARGS from `first`: the values, the buffers, their offsets.
 Expected param_arguments(int first)
 {
-    const char* names[GGX_PARAM_ARG_COUNT] = {"view_x",   "view_y",   "view_z",  "alpha_x",
-                                              "alpha_y",  "normal_x", "normal_y", "normal_z", "eta",
-                                              "view_in",  "alpha_in", "normal_in", "uniforms_in"};
+    const char* names[GGX_PARAM_ARG_COUNT] = {"view_x",   "view_y",   "view_z",    "alpha_x",     "alpha_y",
+                                              "normal_x", "normal_y", "normal_z",  "eta",         "view_in",
+                                              "alpha_in", "normal_in", "uniforms_in", "view_at",  "alpha_at",
+                                              "normal_at", "uniforms_at"};
     Expected e;
     for (int k = 0; k < GGX_PARAM_ARG_COUNT; ++k)
         e.push_back({first + k, names[k]});
@@ -87,24 +88,33 @@ TEST_CASE("every bulk kernel has the contract's argument at each of its position
                                      {GGX_ARG_OUTPUTS + GGX_FIELD_PDF_M, "pdf_m_out"},
                                      {GGX_ARG_OUTPUTS + GGX_FIELD_PDF_O, "pdf_o_out"},
                                      {GGX_ARG_OUTPUTS + GGX_FIELD_WEIGHT, "weight_out"},
-                                     {GGX_ARG_OUTPUTS + GGX_FIELD_U, "u_out"}};
+                                     {GGX_ARG_OUTPUTS + GGX_FIELD_U, "u_out"},
+                                     {GGX_ARG_OUTPUT_OFFSETS + GGX_FIELD_M, "m_at"},
+                                     {GGX_ARG_OUTPUT_OFFSETS + GGX_FIELD_O, "o_at"},
+                                     {GGX_ARG_OUTPUT_OFFSETS + GGX_FIELD_PDF_M, "pdf_m_at"},
+                                     {GGX_ARG_OUTPUT_OFFSETS + GGX_FIELD_PDF_O, "pdf_o_at"},
+                                     {GGX_ARG_OUTPUT_OFFSETS + GGX_FIELD_WEIGHT, "weight_at"},
+                                     {GGX_ARG_OUTPUT_OFFSETS + GGX_FIELD_U, "u_at"}};
     for (const char* name : {"ggx_sample_bulk", "ggx_sample_bulk_tail"}) {
         CAPTURE(name);
         CHECK(mismatches(argument_names(bulk, method_options, name), with(sampling_head(), sample_outputs),
-                         GGX_ARG_OUTPUTS + GGX_FIELD_COUNT) == "");
+                         GGX_ARG_OUTPUT_OFFSETS + GGX_FIELD_COUNT) == "");
     }
     Expected pdf = {{GGX_PDF_ARG_COUNT, "count"},
                     {GGX_PDF_ARG_STRIDE, "stride"},
                     {GGX_PDF_ARG_DIRECTIONS, "o_in"},
-                    {GGX_PDF_ARG_PDFS, "pdf_out"}};
+                    {GGX_PDF_ARG_PDFS, "pdf_out"},
+                    {GGX_PDF_ARG_DIRECTIONS_OFFSET, "o_at"},
+                    {GGX_PDF_ARG_PDFS_OFFSET, "pdf_at"}};
     for (const char* name : {"ggx_pdf_bulk", "ggx_pdf_bulk_tail"}) {
         CAPTURE(name);
         CHECK(mismatches(argument_names(bulk, method_options, name), with(pdf, param_arguments(GGX_PDF_ARG_PARAMS)),
-                         GGX_PDF_ARG_PDFS + 1) == "");
+                         GGX_PDF_ARG_PDFS_OFFSET + 1) == "");
     }
     CHECK(mismatches(argument_names(ggxcl::kernel_source("ggx_furnace.cl"), method_options, "ggx_furnace_bulk"),
-                     with(sampling_head(), {{GGX_ARG_STRIDE, "stride"}, {GGX_ARG_OUTPUTS, "sums"}}),
-                     GGX_ARG_OUTPUTS + 1) == "");
+                     with(sampling_head(),
+                          {{GGX_ARG_STRIDE, "stride"}, {GGX_ARG_OUTPUTS, "sums_out"}, {GGX_ARG_SUMS_OFFSET, "sums_at"}}),
+                     GGX_ARG_SUMS_OFFSET + 1) == "");
     const std::string histogram = ggxcl::kernel_source("ggx_histogram.cl");
     for (auto [name, output] : {std::pair<const char*, const char*>{"ggx_histogram", "counts"},
                                 {"ggx_histogram_bins", "bins"},
@@ -126,7 +136,7 @@ TEST_CASE("control: a kernel with two arguments swapped breaks the contract, and
 {
     const std::string swapped = "#include \"ggx_bulk_params.h\"\n"
                                 "__kernel void swapped(ulong seed, ulong first, uint stride, uint count, "
-                                "GGX_PARAM_ARGS, __global float* sums) { sums[0] = (float)(count + stride); }\n";
+                                "GGX_PARAM_KERNEL_ARGS, __global float* sums) { sums[0] = (float)(count + stride); }\n";
     std::string found = mismatches(argument_names(swapped, method_options, "swapped"),
                                    with(sampling_head(), {{GGX_ARG_STRIDE, "stride"}, {GGX_ARG_OUTPUTS, "sums"}}),
                                    GGX_ARG_OUTPUTS + 1);

@@ -5,19 +5,15 @@
 // the build options of the precision modes.
 #include <doctest/doctest.h>
 
-#include <iterator>
-
 #include <cstdlib>
 #include <cstring>
-
-#include <ggxcl/benchmark.hpp>
+#include <iterator>
 
 #include "bit_compare.hpp"
 #include "device_fixture.hpp"
 #include "device_quirks.hpp"
 #include "kernel_launch.hpp"
 #include "program_cache.hpp"
-#include "validated_params.hpp"
 
 namespace {
 
@@ -210,7 +206,14 @@ TEST_CASE("bad arguments throw InvalidArgument naming the parameter, value and r
     ggxcl::SampleParams bad = p;
     bad.alpha_x = 0.0f;
     CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(bad); }) ==
-          "invalid alpha_x '0': allowed is a finite number > 0");
+          "invalid alpha_x '0': allowed is a number from 1e-30 to 1e30");
+    bad.alpha_x = 2e30f;
+    CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(bad); }) ==
+          "invalid alpha_x '2e+30': allowed is a number from 1e-30 to 1e30");
+    CHECK(message_of<ggxcl::InvalidArgument>([] { ggxcl::view_from_angles(200.0, 0.0); }) ==
+          "invalid theta '200': allowed is degrees from 0 to 180");
+    CHECK(message_of<ggxcl::InvalidArgument>([] { ggxcl::view_from_angles(0.0, -400.0); }) ==
+          "invalid phi '-400': allowed is degrees from -360 to 360");
     bad = p;
     bad.alpha_y = std::nanf("");
     CHECK(message_of<ggxcl::InvalidArgument>([&] { generate(bad); }).find("alpha_y 'nan'") != std::string::npos);
@@ -346,54 +349,6 @@ TEST_CASE("a range split across several samplers arrives in order with the one-s
                     std::runtime_error);
 }
 
-namespace {
-
-// How many times `call` validated a SampleParams.
-template <class Call>
-std::uint64_t validations_in(Call&& call)
-{
-    const std::uint64_t before = ggxcl::detail::params_validations();
-    call();
-    return ggxcl::detail::params_validations() - before;
-}
-
-} // namespace
-
-TEST_CASE("a call validates its parameters once, however many chunks or launches it takes")
-{
-    ggxcl::Sampler s;
-    s.set_chunk_size(1024);  // 5 chunks of the 5000 samples below
-    const ggxcl::SampleParams p = test_params(ggxcl::Method::caps);
-    const ggxcl::SampleRange range{3, 0, 5000};
-    CHECK(validations_in([&] { ggxcl::validate(p); }) == 1);  // control: the hook counts
-    CHECK(validations_in([&] { ggxcl::normalized(p); }) == 1);
-    CHECK(validations_in([&] { s.generate(p, range, {Field::m}); }) == 1);
-    auto chunk_sink = [](const ggxcl::SampleSet&, std::uint64_t) {};
-    CHECK(validations_in([&] { s.generate_chunks(p, range, {Field::m}, chunk_sink); }) == 1);
-    auto view_sink = [](const ggxcl::SampleView&, std::uint64_t) {};
-    CHECK(validations_in([&] { s.generate_chunk_views(p, range, {Field::m}, view_sink); }) == 1);
-    const std::vector<ggxcl::Vec3> directions(5000, ggxcl::Vec3{0.0f, 0.6f, 0.8f});
-    CHECK(validations_in([&] { s.pdf(p, directions); }) == 1);
-    ggxcl::Sampler other;
-    CHECK(validations_in([&] { ggxcl::generate_split({&s, &other}, p, range, {Field::m}, chunk_sink, 1000); }) ==
-          1);  // 5 chunks over two samplers
-    CHECK(validations_in([&] { s.furnace(p, range); }) == 1);
-    CHECK(validations_in([&] { s.histogram(p, range, 4, 8); }) == 1);
-    CHECK(validations_in([&] { s.warm_up(p, {Field::m}); }) == 1);
-
-    // The launches into the caller's buffers.
-    const std::uint32_t count = 1000;
-    ggxcl::DeviceOutputs out;
-    out.m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * count * sizeof(float));
-    CHECK(validations_in([&] { s.enqueue(s.queue(), p, {3, 0, count}, out).wait(); }) == 1);
-    CHECK(validations_in([&] { ggxcl::benchmark::enqueue_unguarded(s, s.queue(), p, {3, 0, count}, out).wait(); }) ==
-          1);
-    cl::Buffer pdfs(s.context(), CL_MEM_READ_WRITE, count * sizeof(float));
-    CHECK(validations_in([&] { s.enqueue_pdf(s.queue(), p, count, out.m, pdfs).wait(); }) == 1);
-    cl::Buffer sums(s.context(), CL_MEM_READ_WRITE, 2 * s.furnace_items(count) * sizeof(float));
-    CHECK(validations_in([&] { s.enqueue_furnace(s.queue(), p, {3, 0, count}, sums).wait(); }) == 1);
-}
-
 TEST_CASE("precise programs are built with -cl-fp32-correctly-rounded-divide-sqrt exactly where the device reports it")
 {
     using ggxcl::Precision;
@@ -430,7 +385,8 @@ TEST_CASE("precise programs are built with -cl-fp32-correctly-rounded-divide-sqr
         s.warm_up(p, fields);
         const std::size_t built = s.programs_built();
         // The options are the program's key: the same program, not a new one.
-        const std::string options = ggxcl::detail::build_options(device, ggxcl::normalized(p), fields.bits(), {});
+        const std::string options = ggxcl::detail::build_options(
+            device, ggxcl::detail::variant_of(ggxcl::detail::ProgramKind::bulk, ggxcl::normalized(p), fields.bits()));
         cl::Program program = ggxcl::ProgramCache::for_context(s.context())->get(device, "ggx_bulk.cl", options);
         CHECK(s.programs_built() == built);
         const std::string built_with = program.getBuildInfo<CL_PROGRAM_BUILD_OPTIONS>(device);

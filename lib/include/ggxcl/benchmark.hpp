@@ -1,9 +1,8 @@
-// benchmark.hpp - for measuring, nothing else: the Sampler's kernels built
-// without the fallbacks of docs/STABILITY.md, so that outside a method's
-// domain NaN and Inf become possible (`ggx bench` times its rows side by
-// side with these), and the exact program a bench job builds, for offline
-// compilers (`ggx bench` counts its operations).  ggxcl.hpp does not
-// include this header.
+// benchmark.hpp - for measuring, nothing else: the exact program a bench
+// job builds, for offline compilers (`ggx bench` counts its operations).
+// (The kernels without the fallbacks of docs/STABILITY.md, which the bench
+// times beside the guarded ones, are SampleParams::guards = false.)
+// ggxcl.hpp does not include this header.
 #pragma once
 
 #include <string>
@@ -13,15 +12,6 @@
 
 namespace ggxcl::benchmark {
 
-// Sampler::enqueue without the guards.
-cl::Event enqueue_unguarded(Sampler& sampler, cl::CommandQueue& queue, const SampleParams& params,
-                            const SampleRange& range, const DeviceOutputs& outputs);
-
-// Sampler::enqueue_furnace without the guards: as Sampler::furnace draws
-// each launch first.
-cl::Event enqueue_furnace_unguarded(Sampler& sampler, cl::CommandQueue& queue, const SampleParams& params,
-                                    const SampleRange& range, const cl::Buffer& sums);
-
 // The program a launch builds: the embedded source file (kernel_source(file)), the kernel function
 // and the build options exactly as the Sampler passes them to the driver, the precision mode's and
 // the device's own options (device_options) included.
@@ -29,11 +19,11 @@ struct ProgramText {
     std::string file, kernel, options;
 };
 
-// Sampler::enqueue of `params` writing `fields` to buffers (no per-sample inputs); guards = false:
-// enqueue_unguarded.  Throws InvalidArgument as enqueue does for bad parameters or no field.
-ProgramText enqueue_program(const Sampler& sampler, const SampleParams& params, FieldSet fields, bool guards = true);
+// Sampler::enqueue of `params` (its guards included) writing `fields` to buffers (no per-sample
+// inputs).  Throws InvalidArgument as enqueue does for bad parameters or no field.
+ProgramText enqueue_program(const Sampler& sampler, const SampleParams& params, FieldSet fields);
 
-// Sampler::enqueue_furnace of `params` (no per-sample inputs); guards = false: enqueue_furnace_unguarded.
-ProgramText furnace_program(const Sampler& sampler, const SampleParams& params, bool guards = true);
+// Sampler::enqueue_furnace of `params` (no per-sample inputs).
+ProgramText furnace_program(const Sampler& sampler, const SampleParams& params);
 
 } // namespace ggxcl::benchmark

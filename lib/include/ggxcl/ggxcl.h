@@ -54,7 +54,7 @@ typedef enum ggxcl_status {
 /* The methods, from the project's one list (GGX_METHOD_LIST), with the
  * kernels' ids: GGXCL_METHOD_NDF, _HEITZ, _HEITZ2017, _CAPS, _CAPS_ISO,
  * _BOUNDED; GGXCL_METHOD_USER with ggxcl_params.user_sampler. */
-#define GGXCL_METHOD_ENUMERATOR(ID, identifier, name) GGXCL_METHOD_##ID = GGX_METHOD_##ID,
+#define GGXCL_METHOD_ENUMERATOR(ID, identifier, name, ...) GGXCL_METHOD_##ID = GGX_METHOD_##ID,
 typedef enum ggxcl_method {
     GGX_METHOD_LIST(GGXCL_METHOD_ENUMERATOR)
     GGXCL_METHOD_USER = GGX_METHOD_USER

@@ -19,6 +19,13 @@ struct Vec3 {
     float x = 0.0f, y = 0.0f, z = 1.0f;
 };
 
+// The roughness a request may hold, each of alpha_x and alpha_y: what a float
+// holds with room to spare (a smaller value, 9e-69 say, rounds to 0 on its
+// way from a double).  The kernels guard values outside it (the fallback of
+// docs/STABILITY.md); the library refuses them.
+inline constexpr float min_alpha = 1e-30f, max_alpha = 1e30f;
+inline constexpr const char* alpha_range = "a number from 1e-30 to 1e30";
+
 // How the kernels compute (build options of the program, precision_options
 // in ggxcl/user_kernels.hpp):
 //   precise - no fast-math option, and the sampling angle's sine and cosine
@@ -97,8 +104,10 @@ struct SampleParams {
     std::shared_ptr<const UserSampler> user_sampler;
     // Outside its domain (a roughness of 0, the view exactly opposite the
     // normal, ...) every method returns the fallback m = o = n, pdfs and
-    // weight 0 (docs/STABILITY.md).  What these guards cost is
-    // measured through ggxcl/benchmark.hpp.
+    // weight 0 (docs/STABILITY.md).  false: the kernels without these
+    // guards, for measuring what they cost (`ggx bench`); outside a method's
+    // domain NaN and Inf are then possible.  Inside it the bits are the same.
+    bool guards = true;
 };
 
 // The name of params' sampler in reports: the user sampler's name for Method::user, else
@@ -135,12 +144,18 @@ struct PerSampleInputs {
 
 // The view from polar angle theta and azimuth phi in degrees:
 // (sin t cos p, sin t sin p, cos t); theta above 90 is below the horizon.
+// Throws InvalidArgument ("theta", "phi") unless theta is in 0 .. 180 and
+// phi in -360 .. 360.
 Vec3 view_from_angles(double theta_degrees, double phi_degrees);
 
-// Throws InvalidArgument unless the parameters are usable: alpha finite
-// and > 0, view and normal finite and of non-zero length, isotropic alpha
-// for caps-iso, eta 0 or finite, > 0 and != 1 (and 0 for bounded).  Views and normals are normalized by the caller's choice:
-// normalized() returns a copy with unit vectors.
+// Throws InvalidArgument unless the parameters are usable: alpha in
+// min_alpha .. max_alpha, view and normal finite and of non-zero length,
+// isotropic alpha where the method's traits say so (method_traits), eta 0 or
+// finite, > 0 and != 1 (0 for a method without a dielectric sampler), a user
+// sampler with Method::user.  The messages name the parameter, the value and
+// what is allowed; they are the only checks of a request in ggxcl (the CLI,
+// Python and the C API report them).  Views and normals are normalized by the
+// caller's choice: normalized() returns a copy with unit vectors.
 void validate(const SampleParams& params);
 SampleParams normalized(const SampleParams& params);
 

@@ -26,6 +26,7 @@ class ProgramCache;  // the runtime's programs and kernels per context (internal
 class KernelLease;
 namespace detail {
 class ValidatedParams;  // SampleParams validated once by a public entry point (internal)
+struct ProgramVariant;  // the program a launch runs (internal)
 }
 
 // Samples on the host.  Fields of several columns are planar: m[c * count + j]
@@ -58,7 +59,9 @@ SampleView view_of(const SampleSet& set);  // its fields, stride = count
 // (alpha_x, alpha_y), uniforms 2 planes (u1, u2 in [0, 1); a dielectric's
 // 3, with u3), used instead of the sequence of SampleParams; a sample whose uniforms are not in [0, 1)
 // is the fallback m = o = n, pdfs and weight 0).  A default-constructed
-// buffer means "uniform" (for uniforms: from the sequence).
+// buffer means "uniform" (for uniforms: from the sequence).  Each buffer's
+// planes start at its offset, in floats (plane c of view at view_offset +
+// c * stride): the kernels take the offsets, so any offset costs what 0 does.
 // The two flags are promises about the buffers' contents that select a
 // cheaper program; leave them false when unsure.  (uniforms comes last so
 // that {view, alpha, normal, flags...} initializers keep their meaning.)
@@ -67,15 +70,31 @@ struct DeviceInputs {
     bool views_above_horizon = false;  // every view has i.n >= 0 (iz >= 0 in tangent space)
     bool isotropic = false;            // every alpha pair has alpha_x == alpha_y
     cl::Buffer uniforms;
+    std::uint64_t view_offset = 0, alpha_offset = 0, normal_offset = 0, uniforms_offset = 0;
+};
+
+// One array in a caller's buffer: the buffer and the offset, in floats, where
+// the array starts (the kernels take it: no sub-buffer, no copy).  A
+// cl::Buffer converts to one at offset 0.
+struct DeviceArray {
+    cl::Buffer buffer;
+    std::uint64_t offset = 0;
+    DeviceArray() = default;
+    DeviceArray(cl::Buffer whole, std::uint64_t at = 0) : buffer(std::move(whole)), offset(at) {}
 };
 
 // Output buffers of the caller, planar with the stride of the call: m and o
-// hold 3 planes, u 2 (a dielectric's 3), the others one.  Only the fields whose buffer is set
-// are computed and written.
+// hold 3 planes, u 2 (a dielectric's 3), the others one, each from its
+// offset in floats (plane c of m at m_offset + c * stride; the kernels take
+// the offsets).  Only the fields whose buffer is set are computed and
+// written; nothing else in a buffer is touched.
 struct DeviceOutputs {
     cl::Buffer m, o, pdf_m, pdf_o, weight, u;
+    std::uint64_t m_offset = 0, o_offset = 0, pdf_m_offset = 0, pdf_o_offset = 0, weight_offset = 0, u_offset = 0;
     cl::Buffer& of(Field field);  // the buffer of `field`
     const cl::Buffer& of(Field field) const;
+    std::uint64_t& offset_of(Field field);  // its offset
+    std::uint64_t offset_of(Field field) const;
 };
 
 // Counts of directions in bins of equal solid angle over (phi, cos theta):
@@ -116,13 +135,6 @@ struct FurnaceSums {
 // Errors: InvalidArgument for bad arguments, ClError for OpenCL failures,
 // DeviceLost (a ClError) when the device stops working mid-call; a call
 // that throws has delivered only whole chunks, in order, to a ChunkSink.
-class Sampler;
-namespace benchmark {  // ggxcl/benchmark.hpp
-cl::Event enqueue_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&, const SampleRange&, const DeviceOutputs&);
-cl::Event enqueue_furnace_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&, const SampleRange&,
-                                    const cl::Buffer&);
-} // namespace benchmark
-
 class Sampler {
 public:
     // A sampler with its own context and in-order queue on the device that
@@ -204,11 +216,11 @@ public:
 
     // Enqueues pdf evaluation of `count` directions (planar, 3 planes) into `pdf_out`.
     cl::Event enqueue_pdf(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
-                          const cl::Buffer& directions, const cl::Buffer& pdf_out, std::uint32_t stride = 0,
+                          const DeviceArray& directions, const DeviceArray& pdf_out, std::uint32_t stride = 0,
                           const DeviceInputs& inputs = {}, const std::vector<cl::Event>* wait = nullptr);
     // The same for the BRDF values of eval() into `values`.
     cl::Event enqueue_eval(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
-                           const cl::Buffer& directions, const cl::Buffer& values, std::uint32_t stride = 0,
+                           const DeviceArray& directions, const DeviceArray& values, std::uint32_t stride = 0,
                            const DeviceInputs& inputs = {}, const std::vector<cl::Event>* wait = nullptr);
 
     // Bins the directions (Field::o or Field::m) of `range` on the device;
@@ -230,7 +242,7 @@ public:
     // furnace(), which draws without them and redraws a launch with them only
     // when one of its sums is not finite.
     cl::Event enqueue_furnace(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
-                              const cl::Buffer& sums, const DeviceInputs& inputs = {},
+                              const DeviceArray& sums, const DeviceInputs& inputs = {},
                               const std::vector<cl::Event>* wait = nullptr);
     std::size_t furnace_items(std::uint64_t count) const;
 
@@ -240,50 +252,34 @@ public:
     std::size_t programs_from_disk() const;
 
 private:
-    friend cl::Event benchmark::enqueue_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&,
-                                                   const SampleRange&, const DeviceOutputs&);
-    friend cl::Event benchmark::enqueue_furnace_unguarded(Sampler&, cl::CommandQueue&, const SampleParams&,
-                                                           const SampleRange&, const cl::Buffer&);
-    friend void generate_split(const std::vector<Sampler*>& samplers, const SampleParams& params,
-                               const SampleRange& range, FieldSet fields, const ChunkSink& sink,
-                               std::uint64_t chunk_size);  // ggxcl/multi_device.hpp
-    // enqueue() and enqueue_furnace(), with or without the guards: they validate their arguments.
-    cl::Event enqueue_variant(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
-                              const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
-                              const std::vector<cl::Event>* wait, bool guards);
-    cl::Event enqueue_furnace_variant(cl::CommandQueue& queue, const SampleParams& params, const SampleRange& range,
-                                      const cl::Buffer& sums, const DeviceInputs& inputs,
-                                      const std::vector<cl::Event>* wait, bool guards);
-    // What the public members run once they have validated their arguments (the
-    // parameters, the range, the counts and buffers): these check nothing, so that a
-    // call split into chunks or launches validates once.  Their CL errors are the
-    // caller's to translate.
-    cl::Event enqueue_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
-                                const SampleRange& range, const DeviceOutputs& outputs, std::uint32_t stride,
-                                const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool guards);
-    // pdf (eval = false) or BRDF value (eval = true) of each direction.
-    cl::Event enqueue_pdf_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
-                                    std::uint32_t count, const cl::Buffer& directions, const cl::Buffer& pdf_out,
-                                    std::uint32_t stride, const DeviceInputs& inputs,
-                                    const std::vector<cl::Event>* wait, bool eval = false);
-    cl::Event enqueue_directions(cl::CommandQueue& queue, const SampleParams& params, std::uint32_t count,
-                                 const cl::Buffer& directions, const cl::Buffer& out, std::uint32_t stride,
-                                 const DeviceInputs& inputs, const std::vector<cl::Event>* wait, bool eval);
-    std::vector<float> of_directions(const SampleParams& params, const std::vector<Vec3>& directions,
-                                     const PerSampleInputs& per_sample, bool eval);
-    cl::Event enqueue_furnace_validated(cl::CommandQueue& queue, const detail::ValidatedParams& params,
-                                        const SampleRange& range, const cl::Buffer& sums, const DeviceInputs& inputs,
-                                        const std::vector<cl::Event>* wait, bool guards);
-    SampleSet generate_validated(const detail::ValidatedParams& params, const SampleRange& range, FieldSet fields,
-                                 const PerSampleInputs& per_sample);
+    // The launches behind the public calls, each of `variant` (detail::variant_of: the program that
+    // the request, its guards and its job select) with arguments the public call has validated:
+    // they check nothing, so that a call split into chunks or launches validates once.  Their CL
+    // errors are the caller's to translate.
+    cl::Event launch_samples(cl::CommandQueue& queue, const detail::ProgramVariant& variant,
+                             const detail::ValidatedParams& params, const SampleRange& range,
+                             const DeviceOutputs& outputs, std::uint32_t stride, const DeviceInputs& inputs,
+                             const std::vector<cl::Event>* wait);
+    cl::Event launch_directions(cl::CommandQueue& queue, const detail::ProgramVariant& variant,
+                                const detail::ValidatedParams& params, std::uint32_t count,
+                                const DeviceArray& directions, const DeviceArray& out, std::uint32_t stride,
+                                const DeviceInputs& inputs, const std::vector<cl::Event>* wait);
+    cl::Event launch_furnace(cl::CommandQueue& queue, const detail::ProgramVariant& variant,
+                             const detail::ValidatedParams& params, const SampleRange& range, const DeviceArray& sums,
+                             const DeviceInputs& inputs, const std::vector<cl::Event>* wait);
+    // pdf() and eval(): the directions through the pdf kernels, chunk by chunk; `variant` is the
+    // request's (eval: the BSDF value instead), its per-sample inputs set per chunk.
+    std::vector<float> directions_on_host(const detail::ProgramVariant& variant, const detail::ValidatedParams& params,
+                                          const std::vector<Vec3>& directions, const PerSampleInputs& per_sample);
     void add_furnace_launch(const detail::ValidatedParams& params, const SampleRange& range, const cl::Buffer& sums,
                             std::vector<float>& host, FurnaceSums& total);
     KernelLease kernel(const std::string& file, const std::string& name, const std::string& options);
     struct HistogramRun;
-    // Each chunk as a view, and (when not mapped) the host copy it points into.
+    // Each chunk as a view (mapped where the device shares host memory), and the host copy it
+    // points into where it is not mapped.
     using ChunkDelivery = std::function<void(const SampleView& view, const SampleSet* copy, std::uint64_t offset)>;
     void run_chunks(const detail::ValidatedParams& params, const SampleRange& range, FieldSet fields,
-                    const PerSampleInputs& per_sample, bool map, const ChunkDelivery& deliver);
+                    const PerSampleInputs& per_sample, const ChunkDelivery& deliver);
 
     cl::Context context_;
     cl::Device device_;

@@ -13,16 +13,9 @@
 #include <string>
 #include <string_view>
 
-namespace ggxcl {
+#include "ggxcl/method.hpp"
 
-// The distribution of normals a user sampler claims (GGX_USER_* of ggx_contract.h):
-//   vndf - the GGX visible normals, D_i(m) = G1(i) max(0, i.m) D(m) / iz (as heitz, caps);
-//   ndf  - the GGX normals, D(m) mz (as ndf);
-//   own  - a density of its own, given by its pdf alone (as bounded).
-enum class Distribution { vndf = 0, ndf = 1, own = 2 };
-inline constexpr std::array<Distribution, 3> all_distributions = {Distribution::vndf, Distribution::ndf,
-                                                                  Distribution::own};
-std::string_view distribution_name(Distribution distribution);  // "vndf", "ndf", "own"
+namespace ggxcl {
 
 class UserSampler {
 public:

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "c_api/c_buffers.hpp"
+#include "c_api/c_events.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/ggxcl.h"
 #include "ggxcl/sampler.hpp"
@@ -17,7 +17,6 @@ struct ggxcl_sampler {
     ggxcl_sampler(const cl::Context& context, const cl::Device& device) : sampler(context, device) {}
     ggxcl::Sampler sampler;
     const std::string device_name = sampler.device_name();
-    const std::size_t base_align_bytes = ggxcl::capi::base_address_alignment(sampler.device());
 };
 
 struct ggxcl_user_sampler {

@@ -1,8 +1,9 @@
 // c_sampler.cpp - the C API's samplers and user samplers, and the enqueue
-// calls into the caller's buffers on the caller's queue.
+// calls into the caller's buffers at their offsets on the caller's queue:
+// the buffers and offsets go to the kernels as they are.
 #include <string>
 
-#include "c_api/c_buffers.hpp"
+#include "c_api/c_events.hpp"
 #include "c_api/c_handles.hpp"
 #include "c_api/c_params.hpp"
 #include "c_api/c_status.hpp"
@@ -15,35 +16,37 @@ using ggxcl::SampleParams;
 
 namespace {
 
-// The caller's per-sample inputs of `count` samples, placed for a call (u has 3 planes for a dielectric).
-DeviceInputs place_inputs(PlacedBuffers& placed, const ggxcl_device_inputs* inputs, const SampleParams& params,
-                          std::uint64_t count, std::uint64_t stride)
+// The caller's buffer at its offset, as the kernels take it (a NULL mem: none).
+ggxcl::DeviceArray array_of(const ggxcl_buffer& buffer)
+{
+    return buffer.mem ? ggxcl::DeviceArray(cl::Buffer(buffer.mem, true), buffer.offset) : ggxcl::DeviceArray();
+}
+
+// The caller's per-sample inputs at their offsets.
+DeviceInputs inputs_of(const ggxcl_device_inputs* inputs)
 {
     DeviceInputs in;
     if (!inputs)
         return in;
-    in.view = placed.input(inputs->view, "inputs.view", 3, count, stride);
-    in.alpha = placed.input(inputs->alpha, "inputs.alpha", 2, count, stride);
-    in.normal = placed.input(inputs->normal, "inputs.normal", 3, count, stride);
-    in.uniforms = placed.input(inputs->uniforms, "inputs.uniforms", ggxcl::field_columns(Field::u, params.eta != 0.0f),
-                               count, stride);
+    const ggxcl::DeviceArray view = array_of(inputs->view), alpha = array_of(inputs->alpha),
+                             normal = array_of(inputs->normal), uniforms = array_of(inputs->uniforms);
+    in.view = view.buffer, in.view_offset = view.offset;
+    in.alpha = alpha.buffer, in.alpha_offset = alpha.offset;
+    in.normal = normal.buffer, in.normal_offset = normal.offset;
+    in.uniforms = uniforms.buffer, in.uniforms_offset = uniforms.offset;
     in.views_above_horizon = inputs->views_above_horizon != 0;
     in.isotropic = inputs->isotropic != 0;
     return in;
 }
 
-// Runs `launch(queue, kernel_wait)` between the input copies and the output copies of `placed`.
+// Runs `launch(queue, wait)` on the caller's queue after the caller's events and hands its event over.
 template <class Launch>
-void enqueue_placed(cl_command_queue queue, PlacedBuffers& placed, cl_uint wait_count, const cl_event* wait,
-                    cl_event* event, Launch&& launch)
+void enqueue_on(cl_command_queue queue, cl_uint wait_count, const cl_event* wait, cl_event* event, Launch&& launch)
 {
     cl::CommandQueue caller_queue(non_null(queue, "queue"), true);
-    const std::vector<cl::Event> kernel_wait = placed.before_kernel(caller_queue, wait_list(wait_count, wait));
-    const cl::Event kernel = launch(caller_queue, kernel_wait);
-    hand_over(placed.after_kernel(caller_queue, kernel), event);
+    const std::vector<cl::Event> events = wait_list(wait_count, wait);
+    hand_over(launch(caller_queue, events.empty() ? nullptr : &events), event);
 }
-
-const std::vector<cl::Event>* or_null(const std::vector<cl::Event>& wait) { return wait.empty() ? nullptr : &wait; }
 
 ggxcl_status enqueue_directions(ggxcl_sampler* sampler, cl_command_queue queue, const ggxcl_params* params,
                                 uint32_t count, ggxcl_buffer directions, ggxcl_buffer out, uint32_t stride,
@@ -53,13 +56,10 @@ ggxcl_status enqueue_directions(ggxcl_sampler* sampler, cl_command_queue queue, 
     return guarded([&] {
         ggxcl::Sampler& s = require(sampler, "sampler").sampler;
         const SampleParams p = to_params(params);
-        PlacedBuffers placed(s.context(), sampler->base_align_bytes);
-        const cl::Buffer dirs = placed.input(directions, "directions", 3, count, stride);
-        const cl::Buffer values = placed.output(out, eval ? "values" : "pdfs", 1, count, stride);
-        const DeviceInputs in = place_inputs(placed, inputs, p, count, stride);
-        enqueue_placed(queue, placed, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>& w) {
-            return eval ? s.enqueue_eval(q, p, count, dirs, values, stride, in, or_null(w))
-                        : s.enqueue_pdf(q, p, count, dirs, values, stride, in, or_null(w));
+        const DeviceInputs in = inputs_of(inputs);
+        enqueue_on(queue, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>* w) {
+            return eval ? s.enqueue_eval(q, p, count, array_of(directions), array_of(out), stride, in, w)
+                        : s.enqueue_pdf(q, p, count, array_of(directions), array_of(out), stride, in, w);
         });
     });
 }
@@ -124,16 +124,15 @@ ggxcl_status ggxcl_enqueue(ggxcl_sampler* sampler, cl_command_queue queue, const
         const SampleParams p = to_params(params);
         const ggxcl::SampleRange r = to_range(range);
         const ggxcl_device_outputs& out = require(outputs, "outputs");
-        PlacedBuffers placed(s.context(), sampler->base_align_bytes);
         ggxcl::DeviceOutputs device_out;
         for (Field field : ggxcl::all_fields) {
-            const std::string name = "outputs." + std::string(ggxcl::field_name(field));
-            device_out.of(field) = placed.output(output_of(out, field), name.c_str(),
-                                                 ggxcl::field_columns(field, p.eta != 0.0f), r.count, stride);
+            const ggxcl::DeviceArray array = array_of(output_of(out, field));
+            device_out.of(field) = array.buffer;
+            device_out.offset_of(field) = array.offset;
         }
-        const DeviceInputs in = place_inputs(placed, inputs, p, r.count, stride);
-        enqueue_placed(queue, placed, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>& w) {
-            return s.enqueue(q, p, r, device_out, stride, in, or_null(w));
+        const DeviceInputs in = inputs_of(inputs);
+        enqueue_on(queue, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>* w) {
+            return s.enqueue(q, p, r, device_out, stride, in, w);
         });
     });
 }
@@ -164,12 +163,9 @@ ggxcl_status ggxcl_enqueue_furnace(ggxcl_sampler* sampler, cl_command_queue queu
         ggxcl::Sampler& s = require(sampler, "sampler").sampler;
         const SampleParams p = to_params(params);
         const ggxcl::SampleRange r = to_range(range);
-        const std::size_t floats = s.furnace_items(r.count) * (p.eta != 0.0f ? 3 : 2);
-        PlacedBuffers placed(s.context(), sampler->base_align_bytes);
-        const cl::Buffer sums_buffer = placed.output(sums, "sums", 1, floats, floats);
-        const DeviceInputs in = place_inputs(placed, inputs, p, r.count, 0);  // no stride of their own
-        enqueue_placed(queue, placed, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>& w) {
-            return s.enqueue_furnace(q, p, r, sums_buffer, in, or_null(w));
+        const DeviceInputs in = inputs_of(inputs);
+        enqueue_on(queue, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>* w) {
+            return s.enqueue_furnace(q, p, r, array_of(sums), in, w);
         });
     });
 }

@@ -1,6 +1,7 @@
 // program_variants.hpp - the program variants the runtime can build, enumerated
-// from the same options it writes (program_variant.hpp), without a device:
-// the list the offline GPU compilers build in tests/gpu_compilers.
+// from the same options it writes (lib/src/program_variant.hpp), without a
+// device: the list the offline GPU compilers build in tests/gpu_compilers.
+// Test support (library ggx_program_variants), not part of libggxcl.
 #pragma once
 
 #include <functional>

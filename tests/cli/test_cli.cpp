@@ -620,8 +620,11 @@ TEST_CASE("ggx links no -march=native code: its baseline is the separate program
     CAPTURE(nm.err);
     REQUIRE(nm.status == 0);
     std::string table = read_all(symbols);
-    CHECK(table.find("ggxapp::") != std::string::npos);  // the table is there ...
-    CHECK(table.find("ggxnative::") == std::string::npos);  // ... without the baseline
+    // A stripped ggx (the GPU check's bundle) has no table to read.
+    if (!ggxtest::skip_unless(table.find("ggxapp::") != std::string::npos,
+                              "needs ggx's symbol table (this ggx is stripped)"))
+        return;
+    CHECK(table.find("ggxnative::") == std::string::npos);  // the table is there, without the baseline
     fs::remove(symbols);
 }
 

@@ -13,12 +13,8 @@ install(TARGETS ggxcl EXPORT ggxclTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lib/include/ggxcl DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h")
-# Every header (user kernels include them) and the bulk kernels built from
-# them, for reading or building offline; not the stress harness.
-file(GLOB GGXCL_DEVICE_HEADERS ${PROJECT_SOURCE_DIR}/kernels/*.h)
-install(FILES ${GGXCL_DEVICE_HEADERS} ${PROJECT_SOURCE_DIR}/kernels/ggx_bulk.cl
-  ${PROJECT_SOURCE_DIR}/kernels/ggx_furnace.cl ${PROJECT_SOURCE_DIR}/kernels/ggx_histogram.cl
-  DESTINATION ${GGXCL_INSTALL_DEVICE_DIR})
+# The device headers and ggxcl-device.pc.
+include(${CMAKE_CURRENT_LIST_DIR}/GgxclDeviceHeaders.cmake)
 if(TARGET ggx)
   install(TARGETS ggx RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   # The -march=native baseline `ggx bench` runs as a child process; ggx looks in ../libexec/ggxcl.
@@ -27,6 +23,7 @@ endif()
 
 # The CMake package, installed: GGXCL_DEVICE_INCLUDE_DIR relative to the prefix.
 set(GGXCL_CONFIG_DEVICE_DIR ${GGXCL_INSTALL_DEVICE_DIR})
+set(GGXCL_CONFIG_HAS_RUNTIME TRUE)
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/ggxclConfig.cmake.in
   ${PROJECT_BINARY_DIR}/package/ggxclConfig.cmake
   INSTALL_DESTINATION ${GGXCL_CMAKE_DIR} PATH_VARS GGXCL_CONFIG_DEVICE_DIR)

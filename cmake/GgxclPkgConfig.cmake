@@ -1,7 +1,8 @@
 # GgxclPkgConfig.cmake - ggxcl.pc for `pkg-config --cflags --libs ggxcl`:
 # the include directory and ggxcl's public compile definitions, the library
 # with OpenCL (and, for a static libggxcl, the thread library, and the C++
-# runtime as Libs.private for C programs).  The prefix
+# runtime as Libs.private for C programs), and for a shared libggxcl its run
+# path, so that a program linked with --libs runs as it is.  The prefix
 # is found from the file's own place (${pcfiledir}), so the installed tree
 # can move; `pkg-config --variable=devicedir ggxcl` names the device headers.
 if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_INCLUDEDIR}")
@@ -35,6 +36,11 @@ endforeach()
 get_target_property(GGXCL_TYPE ggxcl TYPE)
 if(GGXCL_TYPE STREQUAL "STATIC_LIBRARY" AND CMAKE_THREAD_LIBS_INIT)
   string(APPEND GGXCL_PC_LIBS " ${CMAKE_THREAD_LIBS_INIT}")
+endif()
+# A shared libggxcl: programs linked with --libs find it where it is installed (its run path).
+set(GGXCL_PC_RPATH "")
+if(GGXCL_TYPE STREQUAL "SHARED_LIBRARY")
+  set(GGXCL_PC_RPATH "-Wl,-rpath,\${libdir}")
 endif()
 # A static libggxcl is C++: a C program links it with `pkg-config --static`, which adds these.
 set(GGXCL_PC_LIBS_PRIVATE "")

@@ -160,9 +160,10 @@ void check_writable_folder(const std::string& flag, const std::string& path)
     if (folder.empty())
         folder = ".";
     std::error_code error;
+    std::filesystem::create_directories(folder, error);  // as `ggx demo` always has: a fresh folder is made
     bool is_folder = std::filesystem::is_directory(folder, error);
     if (!is_folder || ::access(folder.c_str(), W_OK) != 0)
-        throw UsageError(flag, path, "a path in an existing, writable folder");
+        throw UsageError(flag, path, "a path in a writable folder (made when missing)");
 }
 
 float parse_eta(const std::string& flag, const std::string& text)

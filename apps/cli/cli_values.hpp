@@ -34,7 +34,8 @@ std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text
 std::uint64_t parse_count(const std::string& flag, const std::string& text);
 std::uint64_t parse_uint64(const std::string& flag, const std::string& text);
 std::uint64_t parse_whole(const std::string& flag, const std::string& text, std::uint64_t low, std::uint64_t high);
-// Throws UsageError unless a file can be created beside `path`.
+// Makes the folder of `path` when missing; throws UsageError unless a file can
+// be created there.  Commands call it when they run, before writing.
 void check_writable_folder(const std::string& flag, const std::string& path);
 
 double parse_angle(const std::string& flag, const std::string& text, double low, double high);

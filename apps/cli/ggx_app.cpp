@@ -4,6 +4,8 @@
 
 #include <ggxcl/ggxcl.hpp>
 
+#include "option_help.hpp"
+
 namespace ggxapp {
 
 GgxApp::GgxApp()
@@ -13,6 +15,7 @@ GgxApp::GgxApp()
     commands_ = {add_devices_command(cli), add_methods_command(cli), add_sample_command(cli), add_histogram_command(cli),
                  add_demo_command(cli),    add_merge_command(cli),  add_bench_command(cli),
                  add_converge_command(cli), add_stress_command(cli), add_peak_probe_command(cli)};
+    describe_option_values(cli);
 }
 
 std::vector<Work> GgxApp::prepare() const

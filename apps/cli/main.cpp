@@ -6,6 +6,7 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "atomic_file.hpp"
+#include "cli_errors.hpp"
 #include "cli_values.hpp"
 #include "ggx_app.hpp"
 
@@ -14,6 +15,10 @@ int main(int argc, char** argv)
     ggxapp::remember_command_line(argc, argv);
     ggxapp::install_interrupt_cleanup();
     ggxapp::GgxApp app;
+    if (const std::optional<std::string> unknown = ggxapp::unknown_command(app.cli, argc, argv)) {
+        std::cerr << "ggx: " << *unknown << "\n";
+        return 2;
+    }
     try {
         app.cli.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -21,7 +26,7 @@ int main(int argc, char** argv)
     } catch (const CLI::CallForAllHelp& e) {
         return app.cli.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "ggx: " << e.what() << " (see ggx --help)\n";
+        std::cerr << "ggx: " << ggxapp::parse_error_message(e, app.cli) << "\n";
         return 2;
     }
     try {

@@ -10,7 +10,7 @@ namespace ggxapp {
 
 void SampleOptions::add_view_options(CLI::App& cmd)
 {
-    cmd.add_option("--alpha", alpha, "GGX roughness AX or AX,AY (each > 0)")->capture_default_str();
+    cmd.add_option("--alpha", alpha, "GGX roughness AX or AX,AY, each from 1e-30 to 1e30")->capture_default_str();
     cmd.add_option("--theta", theta, "view polar angle in degrees, 0..180 (above 90: below the horizon)")
         ->capture_default_str();
     cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360")->capture_default_str();
@@ -25,7 +25,7 @@ void SampleOptions::add_view_options(CLI::App& cmd)
     cmd.add_option("--device", device, "device index or name part (see `ggx devices`); default GGXCL_DEVICE, else the first");
     cmd.add_option("--eta", eta, "a rough dielectric: index below the surface over index above (e.g. 1.5), each "
                                  "sample reflected or refracted with the exact Fresnel; 0: a conductor, Fresnel 1 "
-                                 "(every method but bounded)")
+                                 "(the methods with a dielectric sampler: `ggx methods`)")
         ->capture_default_str();
     cmd.add_option("--transport", transport, "with --eta: radiance (transmission divided by eta^2, for path "
                                              "tracing) or importance")
@@ -34,14 +34,16 @@ void SampleOptions::add_view_options(CLI::App& cmd)
 
 void SampleOptions::add_method_options(CLI::App& cmd)
 {
-    CLI::Option* by_method = cmd.add_option("--method", method, "sampler: " + ggxcl::method_list());
+    CLI::Option* by_method =
+        cmd.add_option("--method", method, "sampler: " + ggxcl::method_list() + "; this or --sampler is required");
     CLI::Option* by_file =
         cmd.add_option("--sampler", sampler, "a sampler of your own in FILE.h instead of --method "
                                              "(docs/USER-SAMPLERS.md)");
     by_method->excludes(by_file);
     cmd.add_option("--sampler-name", sampler_name, "the --sampler's name in reports (default: the file's stem)")
         ->needs(by_file);
-    cmd.add_option("--normal", normal, "caps-iso only: world-space surface normal X,Y,Z (default 0,0,1)");
+    cmd.add_option("--normal", normal, "for a method in world space (caps-iso): the surface normal X,Y,Z "
+                                       "(default 0,0,1)");
     cmd.callback([by_method, by_file] {
         if (by_method->count() == 0 && by_file->count() == 0)
             throw CLI::RequiredError("--method or --sampler");

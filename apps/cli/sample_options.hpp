@@ -44,7 +44,7 @@ struct UserSamplerOptions {
 };
 
 struct SampleOptions {
-    std::string method = "caps";
+    std::string method;  // required (or --sampler) where add_method_options adds it
     std::string alpha = "0.3";
     std::string theta = "60";
     std::string phi = "0";

@@ -41,8 +41,6 @@ struct HistogramCommand {
         job.range = options.parsed_range(first, count);
         job.bins_z = int(parse_whole("--bins-z", bins_z, 1, 512));
         job.bins_phi = int(parse_whole("--bins-phi", bins_phi, 1, 1024));
-        if (out.empty())
-            throw UsageError("--out", out, "a path prefix such as results/caps");
         job.prefix = out;
         job.png = !no_png;
         if (of != "o" && of != "m")
@@ -89,7 +87,8 @@ Prepare add_histogram_command(CLI::App& app)
     cmd->add_option("--against", state->against, "test against this method's pdf instead (a negative control)");
     cmd->add_option("--check", state->check, "exit with status 1 when p < ALPHA (0 < ALPHA < 1)");
     cmd->add_flag("--no-png", state->no_png, "skip the figure (no Python needed)");
-    cmd->add_option("--out", state->out, "path prefix of PREFIX.observed.npy, .expected.npy, .json, .png")->required();
+    cmd->add_option("--out", state->out,
+                    "path prefix of PREFIX.observed.npy, .expected.npy, .json, .png; required");
     return [cmd, state]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
@@ -97,6 +96,8 @@ Prepare add_histogram_command(CLI::App& app)
         HistogramJob job = state->job();
         if (level > 0.0)
             job.level = level;
+        if (state->out.empty())  // what is missing, once every value given has been checked
+            throw UsageError("--out is required: a path prefix such as results/caps");
         return Work{[state, job, level] { run_histogram(*state, job, level); }, {{job.params, job.range}}};
     };
 }

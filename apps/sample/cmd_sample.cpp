@@ -86,19 +86,25 @@ struct SampleCommand {
         job.params = options.parsed_params();
         job.theta_degrees = options.parsed_theta();
         job.phi_degrees = options.parsed_phi();
-        if (!uniforms.empty())
-            read_uniforms_into(job);
-        else if (count.empty())
-            throw UsageError("-n is required (or --uniforms, whose rows give the count)");
-        job.range = options.parsed_range(first, count.empty() ? std::to_string(job.per_sample.uniforms.size()) : count);
-        if (!uniforms.empty() && job.range.count != job.per_sample.uniforms.size())
-            throw UsageError("-n", count, std::to_string(job.per_sample.uniforms.size()) + ", the rows of --uniforms");
         try {
             job.fields = ggxcl::parse_field_list(fields);
         } catch (const ggxcl::InvalidArgument&) {
             throw UsageError("--fields", fields, "a comma-separated list of distinct " + ggxcl::field_list());
         }
-        job.format = format_of("--out", out);
+        if (!out.empty())
+            job.format = format_of("--out", out);
+        if (!uniforms.empty())
+            read_uniforms_into(job);
+        if (!count.empty() || !uniforms.empty())
+            job.range =
+                options.parsed_range(first, count.empty() ? std::to_string(job.per_sample.uniforms.size()) : count);
+        if (!uniforms.empty() && job.range.count != job.per_sample.uniforms.size())
+            throw UsageError("-n", count, std::to_string(job.per_sample.uniforms.size()) + ", the rows of --uniforms");
+        // What is missing, once every value given has been checked.
+        if (count.empty() && uniforms.empty())
+            throw UsageError("-n is required (or --uniforms, whose rows give the count)");
+        if (out.empty())
+            throw UsageError("--out is required: the .npy, .csv or .ply file to write");
         if (job.format == Format::ply) {
             try {
                 job.fields = ply_fields(fields_given ? job.fields : std::vector<ggxcl::Field>{ggxcl::Field::o});
@@ -168,8 +174,7 @@ Prepare add_sample_command(CLI::App& app)
                                           "columns, in order, of m,o,pdf_m,pdf_o,weight,u (.ply: o or m)")
                               ->capture_default_str();
     cmd->add_option("--out", state->out, "output .npy, .csv or .ply (a .json sidecar goes beside it; with "
-                                         "--shard it contains {shard})")
-        ->required();
+                                         "--shard it contains {shard}); required");
     cmd->add_option("--devices", state->devices, "split the job across these devices: selectors separated by commas");
     cmd->add_flag("--all-devices", state->all_devices, "split the job across every device of the machine");
     cmd->add_option("--uniforms", state->uniforms,

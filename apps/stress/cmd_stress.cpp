@@ -318,14 +318,17 @@ Prepare add_stress_command(CLI::App& app)
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
     cmd->add_option("--eta", s->eta, "the rough dielectric's map instead, over these relative indices (index below "
                                      "the surface over index above; comma-separated, each > 0 and != 1), or all: "
-                                     "near 1 from both sides, typical and extreme (every method but bounded)");
-    cmd->add_option("--out", s->out, "output prefix: PREFIX.csv and PREFIX-METHOD.png")->required();
+                                     "near 1 from both sides, typical and extreme (every method with a dielectric "
+                                     "sampler)");
+    cmd->add_option("--out", s->out, "output prefix: PREFIX.csv and PREFIX-METHOD.png; required");
     cmd->add_flag("--no-png", s->no_png, "write the CSV only (no Python needed)");
     cmd->add_option("--html", s->html, "write a web page of the totals and the maps");
     return [cmd, s]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
         StressPlan plan = plan_stress(*s);
+        if (s->out.empty())  // what is missing, once every value given has been checked
+            throw UsageError("--out is required: an output prefix such as results/stress");
         return Work{[s, plan] { run_stress(*s, plan); }, {}};
     };
 }

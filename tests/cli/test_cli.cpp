@@ -220,7 +220,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"sample --method caps -n 10 --fields m,x" + out, "--fields"},
         {"sample --method caps --normal 0,0,1 -n 10" + out, "--normal"},
         {"sample --method caps-iso --normal 0,0,0 -n 10" + out, "--normal"},
-        {"sample --method caps -n 10 --out /no/such/folder/x.npy", "--out"},
+        {"sample --method caps -n 10 --out /dev/null/no-folder/x.npy", "--out"},
         {"sample --method caps -n 10 --out " + (scratch() / "x.txt").string(), "--out"},
         {"sample --method caps -n 10 --fields m,o --out " + (scratch() / "x.ply").string(), "--fields"},
         {"sample --method caps -n 10 --device no-such-device" + out, "--device"},
@@ -257,7 +257,7 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"bench --theta 95", "--theta"},
         {"bench --scene 1", "--scene"},
         {"bench -n 2^31", "-n"},
-        {"bench --csv /no/such/folder/b.csv", "--csv"},
+        {"bench --csv /dev/null/no-folder/b.csv", "--csv"},
         {"bench --eta 1", "--eta"},
         {"bench --eta 1.5 --transport sideways", "--transport"},
         {"converge --max-n 1000", "--max-n"},
@@ -267,9 +267,9 @@ TEST_CASE("bad input exits 2 with a message naming the flag and leaves no file")
         {"converge --sequences sobol,halton", "--sequences"},
         {"converge --integrands albedo,sphere", "--integrands"},
         {"converge --randomizations 2", "--randomizations"},
-        {"converge --csv /no/such/folder/c.csv", "--csv"},
+        {"converge --csv /dev/null/no-folder/c.csv", "--csv"},
         {"devices --verbose", "--verbose"},
-        {"histogram --method caps --out /no/such/folder/h", "--out"},
+        {"histogram --method caps --out /dev/null/no-folder/h", "--out"},
         {"demo -n 0 --no-html --out " + (scratch() / "d").string(), "-n"},  // no page: three.js not needed
         {"demo --alpha -1 --no-html --out " + (scratch() / "d").string(), "--alpha"},
         {"demo --eta 1 --no-html --out " + (scratch() / "d").string(), "--eta"},
@@ -325,6 +325,53 @@ TEST_CASE("the CLI reports the library's rules in the library's words, naming th
         CHECK(run.status == 2);
         CHECK(run.err == "ggx: " + c.expected + "\n");
     }
+}
+
+TEST_CASE("the CLI names a bad value before a missing one, the nearest command or option, and speaks its own words")
+{
+    const ggxtest::ScratchFolder case_folder("cli");
+    struct Case {
+        std::string args, expected;
+    } cases[] = {
+        {"sample --method capz", "ggx: --method: invalid value 'capz': allowed is one of " + ggxcl::method_list()},
+        {"sample --method caps", "ggx: -n is required (or --uniforms, whose rows give the count)"},
+        {"sample --method caps -n 10", "ggx: --out is required: the .npy, .csv or .ply file to write"},
+        {"histogram --method caps --alpha 0", "ggx: --alpha: invalid value '0': allowed is a number from 1e-30 to 1e30"},
+        {"histogram --method caps", "ggx: --out is required: a path prefix such as results/caps"},
+        {"sampel --method caps", "ggx: unknown command 'sampel'; did you mean 'sample'? (the commands: devices, "
+                                 "methods, sample, histogram, demo, merge, bench, converge, stress)"},
+        {"sample --method caps --method ndf", "ggx: --method: given 2 times; allowed is once"},
+        {"sample --methd caps", "ggx: unknown option '--methd'; did you mean '--method'? (see the command's --help)"},
+        {"sample --method caps -n", "ggx: --count: its value is missing"},
+        {"", "ggx: a command is required: one of devices, methods, sample, histogram, demo, merge, bench, converge, "
+             "stress (see ggx --help)"},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.args);
+        Run run = ggx(c.args);
+        CHECK(run.status == 2);
+        CHECK(run.err == c.expected + "\n");
+    }
+}
+
+TEST_CASE("every command makes the folder of its output; --help shows each value's kind and default")
+{
+    const ggxtest::ScratchFolder case_folder("cli");
+    const fs::path out = scratch() / "fresh" / "deeper" / "x.npy";
+    Run run = ggx("sample --method caps -n 10 --out " + out.string());
+    CAPTURE(run.err);
+    CHECK(run.status == 0);
+    CHECK(fs::is_regular_file(out));
+    const fs::path help = scratch() / "help.txt";
+    run = ggxtest::run_ggx("{ " + ggxtest::ggx_binary() + " histogram --help >" + help.string() + "; }",
+                           scratch() / "stderr.txt", false);
+    REQUIRE(run.status == 0);
+    const std::string text = read_all(help);
+    CHECK(text.find("-n,--count COUNT=1e6") != std::string::npos);
+    CHECK(text.find("--theta DEGREES=60") != std::string::npos);
+    CHECK(text.find("--out PATH ") != std::string::npos);
+    CHECK(text.find(" TEXT") == std::string::npos);  // CLI11's name for any string
+    fs::remove_all(scratch() / "fresh");
 }
 
 TEST_CASE("ggx methods prints the table of methods (the README's: test_readme_methods)")

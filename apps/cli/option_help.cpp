@@ -40,6 +40,8 @@ void describe(CLI::Option& option)
     const auto kind = names.empty() ? value_kinds().end() : value_kinds().find(names.front());
     option.type_name(kind != value_kinds().end() ? kind->second : "VALUE");
     option.capture_default_str();
+    if (option.get_default_str() == "[]")  // a repeatable option given no value
+        option.default_str("");
 }
 
 } // namespace

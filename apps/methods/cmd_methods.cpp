@@ -1,7 +1,7 @@
 // cmd_methods.cpp - `ggx methods`: the methods and their traits, a Markdown
 // table printed from ggxcl's one table of methods (ggx_contract.h's
 // GGX_METHOD_LIST through ggxcl::method_table), with why each missing trait is
-// missing.  The README's table of methods is this output (test_cli checks it).
+// missing.  The README's table of methods is this output (test_readme_methods).
 #include <iostream>
 #include <sstream>
 #include <string>

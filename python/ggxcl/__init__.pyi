@@ -57,7 +57,7 @@ class Sampler:
         self,
         queue: Any,
         method: Method,
-        n: int,
+        n: Union[int, float],  # a whole number: 1000000, 1e6 or 2**20
         *,
         outputs: Mapping[str, Any],
         seed: int = 0,
@@ -88,7 +88,7 @@ class Sampler:
     def sample(
         self,
         method: Method,
-        n: int,
+        n: Union[int, float],  # a whole number: 1000000, 1e6 or 2**20
         *,
         alpha: Alpha = 0.3,
         theta: float = 60.0,
@@ -150,7 +150,7 @@ class Sampler:
     def furnace(
         self,
         method: Method,
-        n: int,
+        n: Union[int, float],  # a whole number: 1000000, 1e6 or 2**20
         *,
         alpha: Alpha = 0.3,
         theta: float = 60.0,
@@ -169,7 +169,7 @@ class Sampler:
     def histogram(
         self,
         method: Method,
-        n: int,
+        n: Union[int, float],  # a whole number: 1000000, 1e6 or 2**20
         *,
         alpha: Alpha = 0.3,
         theta: float = 60.0,

@@ -73,7 +73,7 @@ void add_enqueue(py::class_<ggxcl::Sampler>& sampler)
 {
     sampler.def(
         "enqueue",
-        [](ggxcl::Sampler& s, const py::object& queue, const py::object& method, std::uint64_t n,
+        [](ggxcl::Sampler& s, const py::object& queue, const py::object& method, const py::object& n,
            const py::object& outputs, std::uint64_t seed, std::uint64_t first, std::uint32_t stride,
            const py::object& alpha, double theta, double phi, const py::object& view, const py::object& normal,
            const py::object& precision, const std::string& sequence, const py::object& inputs,

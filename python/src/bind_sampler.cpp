@@ -219,7 +219,7 @@ void register_sampler(py::module_& m)
         .def_property("chunk_size", &ggxcl::Sampler::chunk_size, &ggxcl::Sampler::set_chunk_size)
         .def(
             "sample",
-            [](ggxcl::Sampler& s, const py::object& method, std::uint64_t n, const py::object& alpha, double theta,
+            [](ggxcl::Sampler& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
                double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
                const py::object& fields, const py::object& precision, const std::string& sequence,
                const py::object& uniforms, bool world_space, const py::object& out, const py::object& eta,
@@ -242,7 +242,7 @@ void register_sampler(py::module_& m)
                double theta, double phi, const py::object& view, const py::object& normal, const py::object& precision,
                bool world_space, const py::object& eta) {
                 return of_directions(s,
-                                     with_dielectric(args_of(method, 0, alpha, theta, phi, view, normal, precision,
+                                     with_dielectric(args_of(method, py::int_(0), alpha, theta, phi, view, normal, precision,
                                                              "philox", py::none(), world_space),
                                                      eta, "radiance"),
                                      directions, false);
@@ -260,7 +260,7 @@ void register_sampler(py::module_& m)
                                                  "None in tangent space (the normal is z), or world_space=True");
                 // The value is the same for every method: caps's program computes it.
                 return of_directions(s,
-                                     with_dielectric(args_of(py::str("caps"), 0, alpha, theta, phi, view, normal, precision,
+                                     with_dielectric(args_of(py::str("caps"), py::int_(0), alpha, theta, phi, view, normal, precision,
                                                              "philox", py::none(), world_space),
                                                      eta, transport),
                                      directions, true);
@@ -271,7 +271,7 @@ void register_sampler(py::module_& m)
             py::arg("transport") = "radiance")
         .def(
             "furnace",
-            [](ggxcl::Sampler& s, const py::object& method, std::uint64_t n, const py::object& alpha, double theta,
+            [](ggxcl::Sampler& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
                double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
                const py::object& precision, const std::string& sequence, const py::object& eta,
                const std::string& transport) {
@@ -287,7 +287,7 @@ void register_sampler(py::module_& m)
             py::arg("eta") = py::none(), py::arg("transport") = "radiance")
         .def(
             "histogram",
-            [](ggxcl::Sampler& s, const py::object& method, std::uint64_t n, const py::object& alpha, double theta,
+            [](ggxcl::Sampler& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
                double phi, const py::object& normal, std::uint64_t seed, std::uint64_t first, int bins_z, int bins_phi,
                const std::string& of, const py::object& against, const py::object& precision,
                const std::string& sequence, const py::object& eta) {

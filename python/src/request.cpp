@@ -3,6 +3,8 @@
 
 #include "bind_user_sampler.hpp"
 
+#include <cmath>
+
 #include <pybind11/numpy.h>
 
 #include "arrays.hpp"
@@ -89,15 +91,40 @@ void set_dielectric(const RequestArgs& args, Request& r)
     r.params.transport = ggxcl::parse_transport(args.transport);
 }
 
+// A count of samples: a whole number, also as a float (1e6, as the CLI's -n takes it), not a bool.
+std::size_t count_of(const py::object& n)
+{
+    const std::string allowed = "a whole number of samples: 1000000, 1e6 or 2**20";
+    if (py::isinstance<py::bool_>(n))
+        throw ggxcl::InvalidArgument("n", std::string(py::repr(n)), allowed);
+    if (py::isinstance<py::float_>(n)) {
+        const double value = n.cast<double>();
+        if (!(value >= 0.0 && value < 18446744073709551616.0 && value == std::floor(value)))
+            throw ggxcl::InvalidArgument("n", std::string(py::repr(n)), allowed);
+        return std::size_t(value);
+    }
+    PyObject* whole = PyNumber_Index(n.ptr());  // int, NumPy integers: anything with __index__
+    if (!whole) {
+        PyErr_Clear();
+        throw ggxcl::InvalidArgument("n", std::string(py::repr(n)), allowed);
+    }
+    const py::int_ index = py::reinterpret_steal<py::int_>(whole);
+    try {
+        return index.cast<std::size_t>();
+    } catch (const py::cast_error&) {
+        throw ggxcl::InvalidArgument("n", std::string(py::repr(n)), allowed + ", from 0 to 2**64 - 1");
+    }
+}
+
 } // namespace
 
-RequestArgs args_of(const py::object& method, std::size_t n, const py::object& alpha, double theta, double phi,
+RequestArgs args_of(const py::object& method, const py::object& n, const py::object& alpha, double theta, double phi,
                     const py::object& view, const py::object& normal, const py::object& precision,
                     const std::string& sequence, const py::object& uniforms, bool world_space)
 {
     RequestArgs a;
     a.method = method;
-    a.count = n;
+    a.count = count_of(n);
     a.alpha = alpha;
     a.theta = theta;
     a.phi = phi;

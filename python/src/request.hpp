@@ -33,7 +33,7 @@ struct Request {
 };
 
 // The keyword arguments as the bindings receive them.
-RequestArgs args_of(const pybind11::object& method, std::size_t n, const pybind11::object& alpha, double theta, double phi,
+RequestArgs args_of(const pybind11::object& method, const pybind11::object& n, const pybind11::object& alpha, double theta, double phi,
                     const pybind11::object& view, const pybind11::object& normal, const pybind11::object& precision,
                     const std::string& sequence, const pybind11::object& uniforms, bool world_space);
 

@@ -244,6 +244,17 @@ def test_the_library_rules_in_its_words(sampler, kwargs, message):
     assert message in str(error.value)
 
 
+def test_n_is_a_whole_number_as_an_int_a_float_or_a_numpy_integer(sampler):
+    a = sampler.sample("caps", 1e3, fields=("pdf_o",), seed=3)["pdf_o"]
+    b = sampler.sample("caps", np.int64(1000), fields=("pdf_o",), seed=3)["pdf_o"]
+    assert a.shape == (1000,) and np.array_equal(a, b)
+    for bad in (1.5, -1, True, "10", float("nan")):
+        with pytest.raises(ggxcl.InvalidArgument) as error:
+            sampler.sample("caps", bad)
+        assert error.value.parameter == "n"
+        assert "a whole number of samples: 1000000, 1e6 or 2**20" in str(error.value)
+
+
 def test_method_traits_name_every_method():
     assert set(ggxcl.method_traits) == set(ggxcl.methods)
     assert ggxcl.method_traits["caps-iso"]["space"] == "world" and ggxcl.method_traits["caps-iso"]["isotropic_only"]

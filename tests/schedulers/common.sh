@@ -1,5 +1,5 @@
 # common.sh - what the launcher tests (test_mpi_shards.sh,
-# test_slurm_cluster.sh) share, sourced by them: the README's recipes
+# test_slurm_cluster.sh) share, sourced by them: the recipes of docs/CLI.md
 # extracted word for word, the plain `ggx sample` run a recipe must equal,
 # a clean launcher environment, and byte-for-byte comparison of a merged
 # file and its sidecar with one run's.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_mpi_shards.sh - CTest test: the README's MPI recipe (the block
+# test_mpi_shards.sh - CTest test: docs/CLI.md's MPI recipe (the block
 # marked `<!-- recipe: mpi -->`), extracted and run word for word under Open
 # MPI's mpirun in a temporary folder with the built `ggx` first on PATH.
 # Its merged .npy and .json must equal, byte for byte, one plain `ggx
@@ -29,13 +29,13 @@ if ! probe=$(timeout 60 mpirun -n 1 --allow-run-as-root --oversubscribe true 2>&
   exit 77
 fi
 
-recipe=$(readme_recipe "$source_dir/README.md" mpi)
+recipe=$(readme_recipe "$source_dir/docs/CLI.md" mpi)
 work=$(mktemp -d "${TMPDIR:-/tmp}/ggx-mpi-shards.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 export PATH="$ggx_dir:$PATH"
 printf '%s\n' "$recipe" >recipe.sh
-echo "== the README's MPI recipe, in $work:"
+echo "== docs/CLI.md's MPI recipe, in $work:"
 cat recipe.sh
 start=$SECONDS
 if ! timeout 300 bash -euo pipefail recipe.sh >recipe.log 2>&1; then

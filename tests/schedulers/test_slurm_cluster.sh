@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_slurm_cluster.sh - CTest test: the README's Slurm recipe (the block
+# test_slurm_cluster.sh - CTest test: docs/CLI.md's Slurm recipe (the block
 # marked `<!-- recipe: slurm -->`) run word for word against a real
 # one-node Slurm, which submits examples/slurm_shards.sh as a job array with
 # `sbatch --wait`; its merged .npy and .json must equal, byte for byte, one
@@ -202,13 +202,13 @@ start_slurm
 echo "== Slurm up in $((SECONDS - start)) s ($(sinfo --noheader --format='%P %D node %N %t, %c CPUs'))"
 
 # The recipe, in a folder holding examples/slurm_shards.sh as in the source tree.
-recipe=$(readme_recipe "$source_dir/README.md" slurm)
+recipe=$(readme_recipe "$source_dir/docs/CLI.md" slurm)
 mkdir -p "$work/job/examples"
 cp "$source_dir/examples/slurm_shards.sh" "$work/job/examples/"
 cd "$work/job"
 export PATH="$ggx_dir:$PATH"
 printf '%s\n' "$recipe" >recipe.sh
-echo "== the README's Slurm recipe, in $work/job:"
+echo "== docs/CLI.md's Slurm recipe, in $work/job:"
 cat recipe.sh
 start=$SECONDS
 timeout 240 bash -euo pipefail recipe.sh >recipe.log 2>&1 &

@@ -130,7 +130,7 @@ struct FurnaceSums {
 // Threads: every member of a Sampler may be called from several threads at
 // once, with the bits one thread gets; the calls without a queue argument
 // share the sampler's own queue, so for parallel launches give each thread
-// its own queue and call enqueue*().  README "Threads" has the contract.
+// its own queue and call enqueue*().  docs/LIBRARY.md "Threads" has the contract.
 //
 // Errors: InvalidArgument for bad arguments, ClError for OpenCL failures,
 // DeviceLost (a ClError) when the device stops working mid-call; a call
@@ -248,7 +248,7 @@ public:
 
     // Number of distinct program variants built so far.
     std::size_t programs_built() const;
-    // How many of them came from the on-disk binary cache (GGXCL_PROGRAM_CACHE, see README).
+    // How many of them came from the on-disk binary cache (GGXCL_PROGRAM_CACHE, docs/LIBRARY.md).
     std::size_t programs_from_disk() const;
 
 private:

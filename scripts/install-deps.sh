@@ -23,6 +23,7 @@ test_packages=(
   oclgrind                            # simulated device that checks every access (test_oclgrind)
   doctest-dev                         # tests
   python3-dev pybind11-dev python3-pytest python3-pyopencl  # the ggxcl Python module and its tests
+  python3-skbuild python3-pip python3-venv  # pip install . (scikit-build classic), offline
   libstb-dev                          # PNG decoding in the tests, PNG encoding in examples/albedo_table
   pkgconf                             # the install test builds a consumer with pkg-config
   patchelf                            # $ORIGIN run paths in the relocatable GPU-check bundle (device-check.sh --bundle)

@@ -1,4 +1,5 @@
 // bind_pyopencl.cpp - pyopencl handles in and out (see bind_pyopencl.hpp).
+#include "python_docs.hpp"
 #include "bind_pyopencl.hpp"
 
 #include <pybind11/stl.h>
@@ -90,11 +91,7 @@ void add_enqueue(py::class_<ggxcl::Sampler>& sampler)
         py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
         py::arg("precision") = py::none(), py::arg("sequence") = "philox", py::arg("inputs") = py::none(),
         py::arg("views_above_horizon") = false, py::arg("isotropic") = false, py::arg("wait_for") = py::none(),
-        py::arg("eta") = py::none(), py::arg("transport") = "radiance",
-        "Enqueues samples first .. first + n - 1 into pyopencl Buffers (outputs={'m': buf, ...}, planar: plane c "
-        "of a field at c * stride floats, stride 0 = n) on a pyopencl queue of this sampler's context; per-sample "
-        "inputs likewise (inputs={'view', 'alpha', 'normal', 'uniforms'}; uniforms and u have 3 planes with eta); "
-        "returns a pyopencl.Event.");
+        py::arg("eta") = py::none(), py::arg("transport") = "radiance", docs::Sampler_enqueue);
 }
 
 } // namespace ggxpy

@@ -1,6 +1,7 @@
 // bind_sampler.cpp - the Python Sampler: each call checks its arguments,
 // releases the GIL while the device works, and between chunks takes it back
 // to check for signals, so Ctrl-C stops a long call with KeyboardInterrupt.
+#include "python_docs.hpp"
 #include "bind_sampler.hpp"
 
 #include <cstring>
@@ -202,9 +203,8 @@ py::list devices()
 
 void register_sampler(py::module_& m)
 {
-    m.def("devices", &devices, "Every OpenCL device as a dict (index, platform, name, type, label, ...); "
-                               "an index or a part of the label is a selector for Sampler(device=...).");
-    py::class_<ggxcl::Sampler> sampler(m, "Sampler", "GGX samplers on one OpenCL device.");
+    m.def("devices", &devices, docs::devices);
+    py::class_<ggxcl::Sampler> sampler(m, "Sampler", docs::Sampler);
     sampler
         .def(py::init([](const py::object& device, const py::object& context) {
                  if (!context.is_none())  // pyopencl objects
@@ -212,9 +212,7 @@ void register_sampler(py::module_& m)
                  std::string selector = device.is_none() ? "" : std::string(py::str(device));
                  return std::make_unique<ggxcl::Sampler>(selector);
              }),
-             py::arg("device") = py::none(), py::arg("context") = py::none(),
-             "A sampler on the device `device` names (an index or part of a label; default GGXCL_DEVICE, else the "
-             "first), or, with a pyopencl `context`, on that context and the pyopencl `device`.")
+             py::arg("device") = py::none(), py::arg("context") = py::none(), docs::Sampler_init)
         .def_property_readonly("device_name", &ggxcl::Sampler::device_name)
         .def_property("chunk_size", &ggxcl::Sampler::chunk_size, &ggxcl::Sampler::set_chunk_size)
         .def(
@@ -235,7 +233,7 @@ void register_sampler(py::module_& m)
             py::arg("first") = 0, py::arg("fields") = py::make_tuple("m", "o", "pdf_m", "pdf_o", "weight"),
             py::arg("precision") = py::none(), py::arg("sequence") = "philox", py::arg("uniforms") = py::none(),
             py::arg("world_space") = false, py::arg("out") = py::none(), py::arg("eta") = py::none(),
-            py::arg("transport") = "radiance")
+            py::arg("transport") = "radiance", docs::Sampler_sample)
         .def(
             "pdf",
             [](ggxcl::Sampler& s, const py::object& method, const py::object& directions, const py::object& alpha,
@@ -249,7 +247,8 @@ void register_sampler(py::module_& m)
             },
             py::arg("method"), py::arg("directions"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
-            py::arg("precision") = py::none(), py::arg("world_space") = false, py::arg("eta") = py::none())
+            py::arg("precision") = py::none(), py::arg("world_space") = false, py::arg("eta") = py::none(),
+            docs::Sampler_pdf)
         .def(
             "eval",
             [](ggxcl::Sampler& s, const py::object& directions, const py::object& alpha, double theta, double phi,
@@ -268,7 +267,7 @@ void register_sampler(py::module_& m)
             py::arg("directions"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(),
             py::arg("precision") = py::none(), py::arg("world_space") = false, py::arg("eta") = py::none(),
-            py::arg("transport") = "radiance")
+            py::arg("transport") = "radiance", docs::Sampler_eval)
         .def(
             "furnace",
             [](ggxcl::Sampler& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
@@ -284,7 +283,7 @@ void register_sampler(py::module_& m)
             py::arg("method"), py::arg("n"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("view") = py::none(), py::arg("normal") = py::none(), py::arg("seed") = 0,
             py::arg("first") = 0, py::arg("precision") = py::none(), py::arg("sequence") = "philox",
-            py::arg("eta") = py::none(), py::arg("transport") = "radiance")
+            py::arg("eta") = py::none(), py::arg("transport") = "radiance", docs::Sampler_furnace)
         .def(
             "histogram",
             [](ggxcl::Sampler& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
@@ -300,7 +299,8 @@ void register_sampler(py::module_& m)
             py::arg("method"), py::arg("n"), py::kw_only(), py::arg("alpha") = 0.3, py::arg("theta") = 60.0,
             py::arg("phi") = 0.0, py::arg("normal") = py::none(), py::arg("seed") = 0, py::arg("first") = 0,
             py::arg("bins_z") = 32, py::arg("bins_phi") = 64, py::arg("of") = "o", py::arg("against") = py::none(),
-            py::arg("precision") = py::none(), py::arg("sequence") = "philox", py::arg("eta") = py::none());
+            py::arg("precision") = py::none(), py::arg("sequence") = "philox", py::arg("eta") = py::none(),
+            docs::Sampler_histogram);
     add_enqueue(sampler);
 }
 

@@ -125,3 +125,29 @@ def test_the_stub_names_every_public_member_of_sampler_and_no_other():
     members = {m.name for m in cls.body if isinstance(m, ast.FunctionDef)}
     members |= {m.target.id for m in cls.body if isinstance(m, ast.AnnAssign)}
     assert members - {"__init__"} == {n for n in dir(ggxcl.Sampler) if not n.startswith("_")}
+
+
+def documented(tree):
+    """(object path, docstring) of every documented class, method and function of the stubs."""
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef) and ast.get_docstring(node):
+            yield (node.name,), ast.get_docstring(node)
+        if isinstance(node, ast.ClassDef):
+            if ast.get_docstring(node):
+                yield (node.name,), ast.get_docstring(node)
+            for member in node.body:
+                if isinstance(member, ast.FunctionDef) and ast.get_docstring(member):
+                    yield (node.name, member.name), ast.get_docstring(member)
+
+
+def test_help_shows_the_stubs_docstrings():
+    """help() explains every argument: each binding carries its stub's docstring (python/pyi_docs.py)."""
+    tree = ast.parse(STUB.read_text())
+    checked = 0
+    for path, doc in documented(tree):
+        obj = ggxcl
+        for name in path:
+            obj = getattr(obj, name)
+        assert doc in (obj.__doc__ or ""), f"{'.'.join(path)}: the binding's docstring is not the stub's"
+        checked += 1
+    assert checked >= 10

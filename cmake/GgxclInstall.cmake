@@ -22,20 +22,13 @@ if(TARGET ggx)
 endif()
 
 # The CMake package, installed: GGXCL_DEVICE_INCLUDE_DIR relative to the prefix.
-set(GGXCL_CONFIG_DEVICE_DIR ${GGXCL_INSTALL_DEVICE_DIR})
-set(GGXCL_CONFIG_HAS_RUNTIME TRUE)
-configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/ggxclConfig.cmake.in
-  ${PROJECT_BINARY_DIR}/package/ggxclConfig.cmake
-  INSTALL_DESTINATION ${GGXCL_CMAKE_DIR} PATH_VARS GGXCL_CONFIG_DEVICE_DIR)
-write_basic_package_version_file(${PROJECT_BINARY_DIR}/ggxclConfigVersion.cmake
-  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+ggxcl_install_package_config(TRUE)
 install(EXPORT ggxclTargets NAMESPACE ggxcl:: DESTINATION ${GGXCL_CMAKE_DIR})
-install(FILES ${PROJECT_BINARY_DIR}/package/ggxclConfig.cmake ${PROJECT_BINARY_DIR}/ggxclConfigVersion.cmake
-  DESTINATION ${GGXCL_CMAKE_DIR})
 
 # The same package in the build tree (ggxcl_DIR=<build dir>): the device
 # headers are the source tree's kernels/.
 set(GGXCL_CONFIG_DEVICE_DIR ${PROJECT_SOURCE_DIR}/kernels)
+set(GGXCL_CONFIG_HAS_RUNTIME TRUE)
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/ggxclConfig.cmake.in
   ${PROJECT_BINARY_DIR}/ggxclConfig.cmake
   INSTALL_DESTINATION ${PROJECT_BINARY_DIR} INSTALL_PREFIX ${PROJECT_BINARY_DIR}

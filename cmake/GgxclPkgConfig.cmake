@@ -5,18 +5,7 @@
 # path, so that a program linked with --libs runs as it is.  The prefix
 # is found from the file's own place (${pcfiledir}), so the installed tree
 # can move; `pkg-config --variable=devicedir ggxcl` names the device headers.
-if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_INCLUDEDIR}")
-  set(GGXCL_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
-  set(GGXCL_PC_LIBDIR "${CMAKE_INSTALL_FULL_LIBDIR}")
-  set(GGXCL_PC_INCLUDEDIR "${CMAKE_INSTALL_FULL_INCLUDEDIR}")
-else()
-  file(RELATIVE_PATH GGXCL_PC_UP /${CMAKE_INSTALL_LIBDIR}/pkgconfig /)
-  string(REGEX REPLACE "/$" "" GGXCL_PC_UP "${GGXCL_PC_UP}")
-  set(GGXCL_PC_PREFIX "\${pcfiledir}/${GGXCL_PC_UP}")
-  set(GGXCL_PC_LIBDIR "\${prefix}/${CMAKE_INSTALL_LIBDIR}")
-  set(GGXCL_PC_INCLUDEDIR "\${prefix}/${CMAKE_INSTALL_INCLUDEDIR}")
-endif()
-
+# The prefix and directories: GgxclDeviceHeaders.cmake (GGXCL_PC_PREFIX, _LIBDIR, _INCLUDEDIR).
 # -D flags of the definitions that travel with ggxcl::ggxcl.
 get_target_property(GGXCL_PC_DEFINITIONS ggxcl INTERFACE_COMPILE_DEFINITIONS)
 list(TRANSFORM GGXCL_PC_DEFINITIONS PREPEND -D)

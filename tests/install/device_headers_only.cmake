@@ -12,20 +12,7 @@
 cmake_minimum_required(VERSION 3.20)
 set(prefix ${WORK_DIR}/prefix)
 
-function(fail message)
-  file(REMOVE_RECURSE ${WORK_DIR})
-  message(FATAL_ERROR "${message}")
-endfunction()
-
-# Runs a command; on failure removes the work directory and stops with its output.
-function(step name)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    fail("${name} failed (${status}):\n${out}\n${err}")
-  endif()
-  message(STATUS "${name}: ok")
-  set(step_output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)
 
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})

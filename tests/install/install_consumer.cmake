@@ -27,20 +27,7 @@ set(forward_flags -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILE
     "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" -DCMAKE_C_COMPILER=${CC} "-DCMAKE_C_FLAGS=${C_FLAGS}"
     "-DCMAKE_EXE_LINKER_FLAGS=${LINKER_FLAGS}")
 
-function(fail message)
-  file(REMOVE_RECURSE ${WORK_DIR})
-  message(FATAL_ERROR "${message}")
-endfunction()
-
-# Runs a command; on failure removes the work directory and stops with its output.
-function(step name)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    fail("${name} failed (${status}):\n${out}\n${err}")
-  endif()
-  message(STATUS "${name}: ok")
-  set(step_output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/script_steps.cmake)
 
 function(expect_files)
   foreach(path IN LISTS ARGN)

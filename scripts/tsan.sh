@@ -13,8 +13,9 @@ cd "$(dirname "$0")/.."
 # missing prerequisite fails its test case instead of skipping it
 # (tests/helpers/skip.hpp).
 export GGXCL_TESTS_REQUIRE_ALL=1
-flags="-fsanitize=thread -fno-omit-frame-pointer -g"
-cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
+flags="-fsanitize=thread -fno-omit-frame-pointer"
+cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" -DCMAKE_C_FLAGS_DEBUG="-O1 -g1" \
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" \
   -DGGXCL_BUILD_PYTHON=OFF >/dev/null
 cmake --build build-tsan -j"$(nproc)" --target test_threads test_runtime test_c_api_cpp_dump test_c_api_consumer

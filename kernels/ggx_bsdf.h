@@ -63,7 +63,7 @@ GGX_INLINE float ggx_eval_transmission(ggx_vec3 i, ggx_vec3 o, float ax, float a
     const ggx_vec3 o_up = ggx_vec3_make(o.x, o.y, -o.z);  // Lambda(o) = Lambda(o_up): the even form
     const float denominator = im + eta * om;
     const float value = ggx_D(m, ax, ay) * ggx_G2(i, o_up, ax, ay) * im * -om / (i.z * denominator * denominator);
-    return radiance ? value : value * eta * eta;
+    return radiance != 0 ? value : value * eta * eta;
 }
 
 // A rough dielectric's f |oz| with its Fresnel: F(i.h) times the reflection

@@ -130,10 +130,14 @@ GGX_INLINE void ggx_bulk_uniforms(ulong seed, ulong first, uint j, ggx_params p,
     *u2 = p.u2;
     *u3 = p.u3;
 #elif GGX_SEQUENCE == GGX_SEQUENCE_SOBOL
-    ggx_sobol_launch_uniforms(seed, first, j, u1, u2);
+    ggx_uniform_pair u = ggx_sobol_launch_pair(seed, first, j);
+    *u1 = u.u1;
+    *u2 = u.u2;
     *u3 = GGX_DIELECTRIC ? ggx_sobol_launch_lobe_uniform(seed, first, j) : 0.0f;
 #else
-    ggx_uniforms(seed, first + j, u1, u2);
+    ggx_uniform_pair u = ggx_philox_pair(seed, first + j);
+    *u1 = u.u1;
+    *u2 = u.u2;
     *u3 = GGX_DIELECTRIC ? ggx_lobe_uniform(seed, first + j) : 0.0f;
 #endif
 }

@@ -15,25 +15,33 @@
 #define GGX_TWO_PI 6.28318530717958647692f
 #define GGX_INV_PI 0.31830988618379067154f
 
+// In GLSL and HLSL ggx_vec3 is the language's vec3 / float3 (ggx_platform_shader.h).
+#if !GGX_SHADER
 typedef struct {
     float x, y, z;
 } ggx_vec3;
+#endif
 
 // What every sampler returns: the microfacet normal m, the reflected
 // direction o, their densities (per steradian) and the white-furnace
 // estimator weight f(i,o) cos(o) / pdf(o) with Fresnel 1 (0 when wasted).
-typedef struct {
+struct ggx_sample {
     ggx_vec3 m, o;
     float pdf_m, pdf_o, weight;
-} ggx_sample;
+};
+GGX_TYPEDEF_STRUCT(ggx_sample)
 
 GGX_INLINE ggx_vec3 ggx_vec3_make(float x, float y, float z)
 {
+#if GGX_SHADER
+    return ggx_vec3(x, y, z);
+#else
     ggx_vec3 v;
     v.x = x;
     v.y = y;
     v.z = z;
     return v;
+#endif
 }
 
 GGX_INLINE float ggx_dot(ggx_vec3 a, ggx_vec3 b)
@@ -81,12 +89,12 @@ GGX_INLINE ggx_vec3 ggx_stretch(ggx_vec3 w, float ax, float ay)
     GGX_INLINE ggx_sample ggx_dispatch_sample_##identifier(ggx_vec3 n, ggx_vec3 i, float ax, float ay, float u1,    \
                                                            float u2)                                                \
     {                                                                                                                \
-        (void)n;                                                                                                     \
+        GGX_UNUSED(n);                                                                                               \
         return ggx_sample_##identifier(i, ax, ay, u1, u2);                                                           \
     }                                                                                                                \
     GGX_INLINE float ggx_dispatch_pdf_##identifier(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)          \
     {                                                                                                                \
-        (void)n;                                                                                                     \
+        GGX_UNUSED(n);                                                                                               \
         return ggx_pdf_##identifier(i, o, ax, ay);                                                                   \
     }
 

@@ -6,8 +6,8 @@
 // checks its other enums against the ids at compile time
 // (lib/src/device_contract.hpp: a mismatch does not build); the kernels
 // include it and refuse an unknown method id or write mask.
-// Method ids are enumerators (not usable in #if; their count is); the other
-// values used in #if stay plain integers.  It compiles as OpenCL C, C++ and CUDA.
+// Every value is a plain integer, usable in #if.  It compiles as OpenCL C,
+// C++, CUDA, GLSL and HLSL.
 #ifndef GGX_CONTRACT_H
 #define GGX_CONTRACT_H
 
@@ -68,10 +68,18 @@
 #define GGX_TRAIT_NO 0
 #define GGX_TRAIT_YES 1
 
-#define GGX_METHOD_ID_ENUMERATOR(ID, identifier, name, ...) GGX_METHOD_##ID,
-enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
-// The number of methods, (0 +1 +1 ...): usable in #if.
-#define GGX_METHOD_COUNT_ONE(ID, ...) +1
+// The method ids, the list's order (ggxcl/method.hpp checks it at compile
+// time): plain integers, usable in #if and in the shading languages, which
+// have no enum.
+#define GGX_METHOD_NDF 0
+#define GGX_METHOD_HEITZ 1
+#define GGX_METHOD_HEITZ2017 2
+#define GGX_METHOD_CAPS 3
+#define GGX_METHOD_CAPS_ISO 4
+#define GGX_METHOD_BOUNDED 5
+// The number of methods, (0 +1 +1 ...): usable in #if.  (Macros that the
+// shading languages' headers use name every column: glslang has no `...`.)
+#define GGX_METHOD_COUNT_ONE(ID, identifier, name, paper, how, space, alpha, normals, dielectric, below, limits) +1
 #define GGX_METHOD_COUNT (0 GGX_METHOD_LIST(GGX_METHOD_COUNT_ONE))
 
 // The method id of a user sampler (one file that defines the functions of
@@ -91,8 +99,10 @@ enum ggx_method_id { GGX_METHOD_LIST(GGX_METHOD_ID_ENUMERATOR) };
 // C++ enums of the methods: `enum class Method { GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR) };`
 // and their arrays in id order, `{GGX_METHOD_LIST(GGX_METHOD_ENUMERATOR_OF)}` with
 // GGX_METHOD_ENUM defined as the enum's name.
+#if defined(__cplusplus)
 #define GGX_METHOD_ENUMERATOR(ID, identifier, ...) identifier = GGX_METHOD_##ID,
 #define GGX_METHOD_ENUMERATOR_OF(ID, identifier, ...) GGX_METHOD_ENUM::identifier,
+#endif
 
 // Field ids, in ggxcl::Field order: the order of the sample kernel's output
 // buffers; -DGGX_WRITE_MASK=<mask> has bit (1 << id) set for each field

@@ -28,27 +28,27 @@
 // give the fallback sample, pdf 0).
 GGX_INLINE int ggx_eta_ok(float eta)
 {
-    return (eta > 0.0f) & (eta <= GGX_FLT_MAX) & (eta != 1.0f);
+    return ggx_to_int(eta > 0.0f) & ggx_to_int(eta <= GGX_FLT_MAX) & ggx_to_int(eta != 1.0f);
 }
 
 // v mirrored through the plane of the unit normal n, v - 2 (v.n) n, where
 // `mirror` is set; v itself otherwise.  A scale, not a select of structs:
 // struct selects stop PoCL's vectorizer (ggx_guards.h).
-GGX_INLINE ggx_vec3 ggx_mirror_if(ggx_vec3 v, ggx_vec3 n, int mirror)
+GGX_INLINE ggx_vec3 ggx_mirror_if(ggx_vec3 v, ggx_vec3 n, bool mirror)
 {
     return ggx_add(v, ggx_scale(n, mirror ? -2.0f * ggx_dot(v, n) : 0.0f));
 }
 
 // Per component: a where `pick_a`, else b.
-GGX_INLINE ggx_vec3 ggx_select3(int pick_a, ggx_vec3 a, ggx_vec3 b)
+GGX_INLINE ggx_vec3 ggx_select3(bool pick_a, ggx_vec3 a, ggx_vec3 b)
 {
     return ggx_vec3_make(pick_a ? a.x : b.x, pick_a ? a.y : b.y, pick_a ? a.z : b.z);
 }
 
 // The unit w in the local coordinates the roughness functions take: w itself
 // in tangent space (n = z), or, for an isotropic surface about a world-space n
-// (about_n = 1), (|w_t|, 0, w.n): D and Lambda depend on nothing else there.
-GGX_INLINE ggx_vec3 ggx_local_of(ggx_vec3 w, ggx_vec3 n, int about_n)
+// (about_n true), (|w_t|, 0, w.n): D and Lambda depend on nothing else there.
+GGX_INLINE ggx_vec3 ggx_local_of(ggx_vec3 w, ggx_vec3 n, bool about_n)
 {
     if (!about_n)
         return w;
@@ -88,7 +88,7 @@ GGX_INLINE float ggx_refraction_jacobian(float c, float eta, float cos_t)
 // The density of the normal m for the method's family: D(m) mz for ndf
 // (Walter et al. eq. 24), the VNDF 2 (i.m) D(m) / (iz + t(i)) otherwise
 // (Heitz 2018 eq. 1); i_local, m_local as ggx_local_of gives, c = i.m > 0.
-GGX_INLINE float ggx_normal_density(int ndf, ggx_vec3 i_local, ggx_vec3 m_local, float c, float ax, float ay)
+GGX_INLINE float ggx_normal_density(bool ndf, ggx_vec3 i_local, ggx_vec3 m_local, float c, float ax, float ay)
 {
     const float D = ggx_D(m_local, ax, ay);
     if (ndf)
@@ -100,14 +100,14 @@ GGX_INLINE float ggx_normal_density(int ndf, ggx_vec3 i_local, ggx_vec3 m_local,
 // f |o.n| / pdf_o of a transmission through m (Walter et al. eqs. 21, 38-41;
 // SPEC "Rough dielectrics"), the even Lambda for o below: G2 (i.m) / (iz mz)
 // for ndf, G2 / G1(i) for the VNDF methods; radiance divides by eta^2.
-GGX_INLINE float ggx_transmission_weight(int ndf, ggx_vec3 i_local, ggx_vec3 o_local, ggx_vec3 m_local, float c,
+GGX_INLINE float ggx_transmission_weight(bool ndf, ggx_vec3 i_local, ggx_vec3 o_local, ggx_vec3 m_local, float c,
                                          float ax, float ay, float eta, int radiance)
 {
     const ggx_vec3 o_up = ggx_vec3_make(o_local.x, o_local.y, -o_local.z);
     const float iz = i_local.z, ti = ggx_t(i_local, ax, ay);
     const float g2 = ggx_G2_from_t(iz, o_up.z, ti, ggx_t(o_up, ax, ay));
     const float weight = ndf ? g2 * c / (iz * m_local.z) : g2 * (iz + ti) / (2.0f * iz);
-    const float scaled = radiance ? weight / (eta * eta) : weight;
+    const float scaled = radiance != 0 ? weight / (eta * eta) : weight;
     return iz > 0.0f ? scaled : 0.0f;
 }
 
@@ -117,31 +117,31 @@ GGX_INLINE float ggx_transmission_weight(int ndf, ggx_vec3 i_local, ggx_vec3 o_l
 // once for an unrolled furnace on RDNA3, which then spills.  s with pdf_o = 0
 // (the fallback, or a direction without density) keeps its m and o.
 GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, ggx_vec3 i, float ax, float ay,
-                                                     float eta, int radiance, float u3, int ndf, int about_n)
+                                                     float eta, int radiance, float u3, bool ndf, bool about_n)
 {
     const float c = ggx_dot(i, s.m);
     const float F = ggx_fresnel_dielectric(ggx_fmax(c, 0.0f), eta);
-    ggx_sample out = s;
+    ggx_sample result = s;
     if (!(c > 0.0f && s.pdf_o > 0.0f)) {  // a back-facing m (ndf) scatters nothing; o stays the fallback's
-        out.pdf_o = 0.0f;
-        out.weight = 0.0f;
-        return out;
+        result.pdf_o = 0.0f;
+        result.weight = 0.0f;
+        return result;
     }
     if (u3 < F) {  // reflection, with probability F (always under total internal reflection)
-        const int valid = ggx_dot(s.o, n) > 0.0f;  // a reflection stays on the view's side
-        out.pdf_o = valid ? F * s.pdf_o : 0.0f;
-        out.weight = valid ? s.weight : 0.0f;
-        return out;
+        const bool valid = ggx_dot(s.o, n) > 0.0f;  // a reflection stays on the view's side
+        result.pdf_o = valid ? F * s.pdf_o : 0.0f;
+        result.weight = valid ? s.weight : 0.0f;
+        return result;
     }
     // The transmission through m (Snell's law), its density and weight.
     const float cos_t = ggx_refracted_cosine(c, eta);
-    out.o = ggx_refract(i, s.m, c, eta, cos_t);
-    const int valid = ggx_dot(out.o, n) < 0.0f;  // a transmission crosses the surface
-    const float weight = ggx_transmission_weight(ndf, ggx_local_of(i, n, about_n), ggx_local_of(out.o, n, about_n),
+    result.o = ggx_refract(i, s.m, c, eta, cos_t);
+    const bool valid = ggx_dot(result.o, n) < 0.0f;  // a transmission crosses the surface
+    const float weight = ggx_transmission_weight(ndf, ggx_local_of(i, n, about_n), ggx_local_of(result.o, n, about_n),
                                                  ggx_local_of(s.m, n, about_n), c, ax, ay, eta, radiance);
-    out.pdf_o = valid ? (1.0f - F) * s.pdf_m * ggx_refraction_jacobian(c, eta, cos_t) : 0.0f;
-    out.weight = valid ? weight : 0.0f;
-    return out;
+    result.pdf_o = valid ? (1.0f - F) * s.pdf_m * ggx_refraction_jacobian(c, eta, cos_t) : 0.0f;
+    result.weight = valid ? weight : 0.0f;
+    return result;
 }
 
 // The density of o for a view i above the surface (i.n >= 0), both lobes:
@@ -149,7 +149,7 @@ GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, g
 // generalized half vector m = -(i + eta o) turned to face n, valid where
 // i.m > 0 and o.m < 0, with (1 - F(i.m)) pdf_m(m) |dm/do|.
 GGX_INLINE float ggx_dielectric_pdf_above(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay,
-                                          float eta, float reflection_pdf, int about_n)
+                                          float eta, float reflection_pdf, bool about_n)
 {
     const float on = ggx_dot(o, n);
     const float reflected = ggx_fresnel_dielectric(ggx_fmax(ggx_dot(i, ggx_half_vector(i, o)), 0.0f), eta) * reflection_pdf;
@@ -157,28 +157,28 @@ GGX_INLINE float ggx_dielectric_pdf_above(int method, ggx_vec3 n, ggx_vec3 i, gg
     const float len2 = ggx_dot(m, m);
     m = ggx_scale(m, (ggx_dot(m, n) > 0.0f ? 1.0f : -1.0f) * (len2 > 0.0f ? ggx_rsqrt(len2) : 0.0f));
     const float c = ggx_dot(i, m), om = ggx_dot(o, m);
-    const int valid = (on < 0.0f) & (c > 0.0f) & (om < 0.0f);
+    const int valid = ggx_to_int(on < 0.0f) & ggx_to_int(c > 0.0f) & ggx_to_int(om < 0.0f);
     const float c_up = ggx_fmax(c, 0.0f), cos_t = ggx_fmax(-om, 0.0f), sum = c + eta * om;
-    const float density = ggx_normal_density(ggx_method_ndf_normals(method), ggx_local_of(i, n, about_n),
+    const float density = ggx_normal_density(ggx_method_ndf_normals(method) != 0, ggx_local_of(i, n, about_n),
                                               ggx_local_of(m, n, about_n), c_up, ax, ay);
     const float transmitted = (1.0f - ggx_fresnel_dielectric(c_up, eta)) * density * eta * eta * cos_t / (sum * sum);
-    return on > 0.0f ? reflected : (valid ? transmitted : 0.0f);
+    return on > 0.0f ? reflected : (valid != 0 ? transmitted : 0.0f);
 }
 
 // A dielectric sample of `method` in tangent space (caps-iso: about n).
 GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay, float eta,
                                                    int radiance, float u1, float u2, float u3)
 {
-    const int about_n = ggx_method_world_space(method);
+    const bool about_n = ggx_method_world_space(method) != 0;
     const ggx_vec3 up = about_n ? n : ggx_vec3_make(0.0f, 0.0f, 1.0f);
-    const int below = ggx_dot(i, up) < 0.0f;
-    if (!ggx_method_dielectric(method))
+    const bool below = ggx_dot(i, up) < 0.0f;
+    if (ggx_method_dielectric(method) == 0)
         return ggx_fallback_sample(up);
     const ggx_vec3 i_above = ggx_mirror_if(i, up, below);
     const float eta_side = below ? 1.0f / eta : eta;
     ggx_sample s = ggx_sample_method(method, n, i_above, ax, ay, u1, u2);
     s = ggx_dielectric_from_reflection(s, up, i_above, ax, ay, eta_side, radiance, u3,
-                                       ggx_method_ndf_normals(method), about_n);
+                                       ggx_method_ndf_normals(method) != 0, about_n);
     s.m = ggx_mirror_if(s.m, up, below);
     s.o = ggx_mirror_if(s.o, up, below);
     return ggx_keep_or_fallback(s, ggx_eta_ok(eta), ggx_mirror_if(up, up, below));
@@ -188,17 +188,17 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_v
 GGX_INLINE float ggx_pdf_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay,
                                            float eta)
 {
-    const int about_n = ggx_method_world_space(method);
+    const bool about_n = ggx_method_world_space(method) != 0;
     const ggx_vec3 up = about_n ? n : ggx_vec3_make(0.0f, 0.0f, 1.0f);
-    const int below = ggx_dot(i, up) < 0.0f;
-    if (!ggx_method_dielectric(method))
+    const bool below = ggx_dot(i, up) < 0.0f;
+    if (ggx_method_dielectric(method) == 0)
         return 0.0f;
     const ggx_vec3 i_above = ggx_mirror_if(i, up, below), o_side = ggx_mirror_if(o, up, below);
     const float eta_side = below ? 1.0f / eta : eta;
     const float reflection_pdf = ggx_pdf_method(method, n, i_above, o_side, ax, ay);
     const float pdf =
         ggx_dielectric_pdf_above(method, up, i_above, o_side, ax, ay, eta_side, reflection_pdf, about_n);
-    return ggx_guard_pdf(ggx_eta_ok(eta) ? pdf : 0.0f, ax, ay);
+    return ggx_guard_pdf(ggx_eta_ok(eta) != 0 ? pdf : 0.0f, ax, ay);
 }
 
 #endif

@@ -88,7 +88,7 @@ GGX_INLINE float ggx_alpha_from_perceptual_roughness(float roughness)
 // the same bound).
 #define GGX_SMOOTH_ALPHA 1e-3f
 
-GGX_INLINE int ggx_is_effectively_smooth(float ax, float ay)
+GGX_INLINE bool ggx_is_effectively_smooth(float ax, float ay)
 {
     return ggx_fmax(ax, ay) < GGX_SMOOTH_ALPHA;
 }

@@ -25,7 +25,7 @@
 
 GGX_INLINE int ggx_is_finite(float x)
 {
-    return (ggx_as_uint(x) & 0x7f800000u) != 0x7f800000u;
+    return ggx_to_int((ggx_as_uint(x) & 0x7f800000u) != 0x7f800000u);
 }
 
 // A roughness usable by the samplers: finite and > 0 (float compares, false
@@ -33,32 +33,33 @@ GGX_INLINE int ggx_is_finite(float x)
 // on m, see below).
 GGX_INLINE int ggx_roughness_ok(float ax, float ay)
 {
-    return ax > 0.0f && ay > 0.0f && ax <= GGX_FLT_MAX && ay <= GGX_FLT_MAX;
+    return ggx_to_int(ax > 0.0f && ay > 0.0f && ax <= GGX_FLT_MAX && ay <= GGX_FLT_MAX);
 }
 
 // The fallback sample about the unit normal n: m = o = n, pdfs and weight 0.
 GGX_INLINE ggx_sample ggx_fallback_sample(ggx_vec3 n)
 {
-    ggx_sample out;
-    out.m = n;
-    out.o = n;
-    out.pdf_m = 0.0f;
-    out.pdf_o = 0.0f;
-    out.weight = 0.0f;
-    return out;
+    ggx_sample result;
+    result.m = n;
+    result.o = n;
+    result.pdf_m = 0.0f;
+    result.pdf_o = 0.0f;
+    result.weight = 0.0f;
+    return result;
 }
 
 // s when `ok`, else the fallback about the unit normal n: per-component
 // selects, since a select of structs does not vectorize.
 GGX_INLINE ggx_sample ggx_keep_or_fallback(ggx_sample s, int ok, ggx_vec3 n)
 {
-    ggx_sample out;
-    out.m = ggx_vec3_make(ok ? s.m.x : n.x, ok ? s.m.y : n.y, ok ? s.m.z : n.z);
-    out.o = ggx_vec3_make(ok ? s.o.x : n.x, ok ? s.o.y : n.y, ok ? s.o.z : n.z);
-    out.pdf_m = ok ? s.pdf_m : 0.0f;
-    out.pdf_o = ok ? s.pdf_o : 0.0f;
-    out.weight = ok ? s.weight : 0.0f;
-    return out;
+    bool keep = ok != 0;
+    ggx_sample result;
+    result.m = ggx_vec3_make(keep ? s.m.x : n.x, keep ? s.m.y : n.y, keep ? s.m.z : n.z);
+    result.o = ggx_vec3_make(keep ? s.o.x : n.x, keep ? s.o.y : n.y, keep ? s.o.z : n.z);
+    result.pdf_m = keep ? s.pdf_m : 0.0f;
+    result.pdf_o = keep ? s.pdf_o : 0.0f;
+    result.weight = keep ? s.weight : 0.0f;
+    return result;
 }
 
 // s when the roughness is usable and `key` < 1e20, else the fallback about
@@ -69,7 +70,7 @@ GGX_INLINE ggx_sample ggx_guard_about(ggx_sample s, float key, ggx_vec3 n, float
     // key < 1e20 (false for NaN and Inf): a visible area below 1e-20 makes densities beyond float
     // range.  For a uniform view and roughness `ok` is uniform: the guard costs a select per field.
     // (The bit test keeps it under -cl-fast-relaxed-math, which may fold compares with NaN and Inf.)
-    int ok = ggx_roughness_ok(ax, ay) & (key < 1e20f) & ggx_is_finite(key);
+    int ok = ggx_roughness_ok(ax, ay) & ggx_to_int(key < 1e20f) & ggx_is_finite(key);
     return ggx_keep_or_fallback(s, ok, n);
 #else
     return s;
@@ -86,7 +87,7 @@ GGX_INLINE ggx_sample ggx_guard(ggx_sample s, float key, float ax, float ay)
 GGX_INLINE float ggx_guard_pdf(float pdf, float ax, float ay)
 {
 #if GGX_GUARDS
-    return (ggx_roughness_ok(ax, ay) & ggx_is_finite(pdf)) ? pdf : 0.0f;
+    return (ggx_roughness_ok(ax, ay) & ggx_is_finite(pdf)) != 0 ? pdf : 0.0f;
 #else
     return pdf;
 #endif

@@ -50,9 +50,8 @@ GGX_INLINE float ggx_rough_angle(float x, float y)
 GGX_INLINE int ggx_phi_bin(float x, float y)
 {
     int e = (int)rint(ggx_rough_angle(x, y) * (GGX_BINS_PHI / GGX_TWO_PI));  // 0 .. nphi
-    float s, c;
-    ggx_sincos_2pi((float)e / (float)GGX_BINS_PHI, &s, &c);
-    int b = c * y - s * x < 0.0f ? e - 1 : e;
+    ggx_sin_cos edge = ggx_sincos_2pi((float)e / (float)GGX_BINS_PHI);
+    int b = edge.cosine * y - edge.sine * x < 0.0f ? e - 1 : e;
     return b < 0 ? b + GGX_BINS_PHI : (b >= GGX_BINS_PHI ? b - GGX_BINS_PHI : b);
 }
 

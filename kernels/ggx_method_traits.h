@@ -24,12 +24,12 @@
 #define GGX_IS_METHOD(method, id) ((method) == (id))
 #endif
 
-#define GGX_IF_WORLD_SPACE(ID, identifier, name, paper, how, space, ...) \
-    | (GGX_IS_METHOD(method, GGX_METHOD_##ID) & GGX_SPACE_##space)
-#define GGX_IF_DIELECTRIC(ID, identifier, name, paper, how, space, alpha, normals, dielectric, ...) \
-    | (GGX_IS_METHOD(method, GGX_METHOD_##ID) & GGX_TRAIT_##dielectric)
-#define GGX_IF_NDF_NORMALS(ID, identifier, name, paper, how, space, alpha, normals, ...) \
-    | (GGX_IS_METHOD(method, GGX_METHOD_##ID) & (GGX_NORMALS_##normals == GGX_NORMALS_NDF))
+#define GGX_IF_WORLD_SPACE(ID, identifier, name, paper, how, space, alpha, normals, dielectric, below, limits) \
+    | (ggx_to_int(GGX_IS_METHOD(method, GGX_METHOD_##ID)) & GGX_SPACE_##space)
+#define GGX_IF_DIELECTRIC(ID, identifier, name, paper, how, space, alpha, normals, dielectric, below, limits) \
+    | (ggx_to_int(GGX_IS_METHOD(method, GGX_METHOD_##ID)) & GGX_TRAIT_##dielectric)
+#define GGX_IF_NDF_NORMALS(ID, identifier, name, paper, how, space, alpha, normals, dielectric, below, limits) \
+    | (ggx_to_int(GGX_IS_METHOD(method, GGX_METHOD_##ID)) & ggx_to_int(GGX_NORMALS_##normals == GGX_NORMALS_NDF))
 
 // 1 when `method` works about the caller's world-space normal (caps-iso), 0 in tangent space.
 GGX_INLINE int ggx_method_world_space(int method)

@@ -18,49 +18,80 @@
 #define GGX_PHILOX_M 0xD256D193u
 #define GGX_PHILOX_W 0x9E3779B9u
 
+// Two 32-bit words (a Philox counter, two Sobol coordinates) and two uniforms,
+// as structs: the shading languages have no pointers.
+struct ggx_word_pair {
+    ggx_uint w1, w2;
+};
+GGX_TYPEDEF_STRUCT(ggx_word_pair)
+struct ggx_uniform_pair {
+    float u1, u2;
+};
+GGX_TYPEDEF_STRUCT(ggx_uniform_pair)
+
 // One Philox2x32 round: one 32x32->64 multiply, its high half xored with the
 // other word and the key.
-GGX_INLINE void ggx_philox_round(ggx_uint* c0, ggx_uint* c1, ggx_uint k)
+GGX_INLINE ggx_word_pair ggx_philox_round(ggx_word_pair c, ggx_uint k)
 {
-    ggx_ulong product = (ggx_ulong)GGX_PHILOX_M * (ggx_ulong)(*c0);
-    ggx_uint hi = (ggx_uint)(product >> 32), lo = (ggx_uint)product;
-    *c0 = hi ^ *c1 ^ k;
-    *c1 = lo;
+    ggx_ulong product = ggx_to_ulong(GGX_PHILOX_M) * ggx_to_ulong(c.w1);
+    ggx_word_pair next;
+    next.w1 = ggx_to_uint(product >> 32) ^ c.w2 ^ k;
+    next.w2 = ggx_to_uint(product);
+    return next;
 }
 
-// Philox2x32 with 10 rounds; the key is bumped by the Weyl constant between
-// rounds.  Fully unrolled: a loop here, inside PoCL's loop over work-items,
-// keeps the kernel from vectorizing.
-GGX_INLINE void ggx_philox2x32_10(ggx_uint* c0, ggx_uint* c1, ggx_uint k)
+// Philox2x32 with 10 rounds of counter c; the key is bumped by the Weyl
+// constant between rounds.  Fully unrolled: a loop here, inside PoCL's loop
+// over work-items, keeps the kernel from vectorizing.
+GGX_INLINE ggx_word_pair ggx_philox2x32_10(ggx_word_pair c, ggx_uint k)
 {
 GGX_UNROLL
     for (int round = 0; round < 10; ++round) {
-        ggx_philox_round(c0, c1, k);
+        c = ggx_philox_round(c, k);
         k += GGX_PHILOX_W;
     }
+    return c;
 }
 
 // A 32-bit word to a float in [0, 1): its top 24 bits times 2^-24 (exact, never 1).
 GGX_INLINE float ggx_word_to_unit(ggx_uint word)
 {
-    return (float)(word >> 8) * 5.9604644775390625e-8f;
+    return ggx_to_float(word >> 8) * 5.9604644775390625e-8f;
+}
+
+// The counter of sample `index`, its high word xored with `flip`.
+GGX_INLINE ggx_word_pair ggx_philox_counter(ggx_ulong index, ggx_uint flip)
+{
+    ggx_word_pair c;
+    c.w1 = ggx_to_uint(index);
+    c.w2 = ggx_to_uint(index >> 32) ^ flip;
+    return c;
 }
 
 // The two uniforms (u1, u2) of sample `index` in stream `seed` (its low 32 bits).
+GGX_INLINE ggx_uniform_pair ggx_philox_pair(ggx_ulong seed, ggx_ulong index)
+{
+    ggx_word_pair words = ggx_philox2x32_10(ggx_philox_counter(index, 0u), ggx_to_uint(seed));
+    ggx_uniform_pair u;
+    u.u1 = ggx_word_to_unit(words.w1);
+    u.u2 = ggx_word_to_unit(words.w2);
+    return u;
+}
+
+#if !GGX_SHADER
+// The same through pointers, for the C family: ggx_uniforms(seed, index, &u1, &u2).
 GGX_INLINE void ggx_uniforms(ggx_ulong seed, ggx_ulong index, float* u1, float* u2)
 {
-    ggx_uint c0 = (ggx_uint)index, c1 = (ggx_uint)(index >> 32);
-    ggx_philox2x32_10(&c0, &c1, (ggx_uint)seed);
-    *u1 = ggx_word_to_unit(c0);
-    *u2 = ggx_word_to_unit(c1);
+    ggx_uniform_pair u = ggx_philox_pair(seed, index);
+    *u1 = u.u1;
+    *u2 = u.u2;
 }
+#endif
 
 // The third uniform of sample `index` in stream `seed`, for dielectrics (see above).
 GGX_INLINE float ggx_lobe_uniform(ggx_ulong seed, ggx_ulong index)
 {
-    ggx_uint c0 = (ggx_uint)index, c1 = (ggx_uint)(index >> 32) ^ 0x80000000u;
-    ggx_philox2x32_10(&c0, &c1, (ggx_uint)seed);
-    return ggx_word_to_unit(c0);
+    return ggx_word_to_unit(ggx_philox2x32_10(ggx_philox_counter(index, 0x80000000u), ggx_to_uint(seed)).w1);
 }
 
 #endif

@@ -1,6 +1,7 @@
 // ggx_platform.h - the few language constructs the device math uses, for
 // three languages: OpenCL C (the kernels), C++17 (a CPU renderer, a baker,
-// the native baseline, the host tests) and CUDA (nvcc, or clang -x cuda).
+// the native baseline, the host tests) and CUDA (nvcc, or clang -x cuda),
+// and for GLSL and HLSL (ggx_platform_shader.h).
 // The device headers call these names and never the bare math functions,
 // so float math stays float in every language: in C++ an unqualified
 // sqrt(float) may be the double function.
@@ -13,6 +14,11 @@
 //   ggx_fma, ggx_clamp     float functions with OpenCL C's meaning
 //   GGX_FMA                a fused multiply-add where the hardware has one
 //   ggx_as_uint            the bits of a float
+//   ggx_to_float, ggx_to_int, ggx_to_uint, ggx_to_ulong
+//                          conversions (shading languages have no C casts)
+//   GGX_UNUSED(x)          a parameter a function form does not read
+//   GGX_TYPEDEF_STRUCT(n)  after `struct n { ... };`, the name n alone names the type
+//   GGX_SHADER             1 in GLSL and HLSL, 0 in the C family
 //
 // In OpenCL C they are the built-ins themselves, so the kernels compile to
 // what they did before these names existed.  The accuracy differs by
@@ -126,8 +132,22 @@ GGX_INLINE ggx_uint ggx_as_uint(float x)
     return bits;
 }
 
+#elif defined(GGX_HLSL) || defined(__HLSL_VERSION) || defined(GL_core_profile) || defined(GL_ES) || defined(VULKAN)
+#include "ggx_platform_shader.h"
+
 #else
-#error "ggx_platform.h: compile the ggxcl device headers as OpenCL C, C++ (C++17) or CUDA"
+#error "ggx_platform.h: compile the ggxcl device headers as OpenCL C, C++ (C++17), CUDA, GLSL or HLSL (-DGGX_HLSL)"
+#endif
+
+#if !defined(GGX_SHADER)
+// ---- the C family: OpenCL C, C++, CUDA -------------------------------------
+#define GGX_SHADER 0
+#define ggx_to_float(x) ((float)(x))
+#define ggx_to_int(x) ((int)(x))
+#define ggx_to_uint(x) ((ggx_uint)(x))
+#define ggx_to_ulong(x) ((ggx_ulong)(x))
+#define GGX_UNUSED(x) (void)(x)
+#define GGX_TYPEDEF_STRUCT(name) typedef struct name name;
 #endif
 
 // GGX_FMA(a, b, c): a * b + c fused (ggx_fma) where the device has hardware
@@ -144,7 +164,7 @@ GGX_INLINE ggx_uint ggx_as_uint(float x)
 #endif
 
 // fmin(fmax(x, lo), hi), OpenCL C's clamp.
-#if !defined(__OPENCL_C_VERSION__)
+#if !defined(__OPENCL_C_VERSION__) && !GGX_SHADER
 GGX_INLINE float ggx_clamp(float x, float lo, float hi) { return ggx_fmin(ggx_fmax(x, lo), hi); }
 #endif
 

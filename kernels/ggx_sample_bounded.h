@@ -23,7 +23,7 @@ GGX_INLINE float ggx_bounded_k(ggx_vec3 i, float ax, float ay)
     float a = ggx_bounded_a(ax, ay), a2 = a * a;
     float w = 1.0f + ggx_sqrt(i.x * i.x + i.y * i.y);
     float w2 = w * w, iz2 = i.z * i.z;
-    int rough = a > 1.0f;
+    bool rough = a > 1.0f;
     float p = rough ? iz2 : w2, q = rough ? w2 : iz2;  // scalar selects: both forms are (1 - a^2) p / (p + a^2 q)
     float k = (1.0f - a2) * p / (p + a2 * q);
 #if GGX_BELOW_HORIZON
@@ -95,7 +95,7 @@ GGX_INLINE float ggx_pdf_bounded(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
     ggx_vec3 m = ggx_half_vector(i, o);
     ggx_vec3 m_std = ggx_normalize(ggx_vec3_make(m.x / ax, m.y / ay, m.z));
     float o_std_z = 2.0f * ggx_dot(v, m_std) * m_std.z - v.z;
-    int inside = o_std_z >= -k * v.z - 1e-6f;
+    bool inside = o_std_z >= -k * v.z - 1e-6f;
     float pdf = 0.5f * ggx_D(m, ax, ay) * ggx_bounded_inv_sum(i, k, ti, ax, ay);
     return ggx_guard_pdf(inside ? pdf : 0.0f, ax, ay);
 }

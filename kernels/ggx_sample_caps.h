@@ -15,8 +15,8 @@ GGX_INLINE ggx_vec3 ggx_sample_cap_of_height(float lower, float height, float u1
 {
     float z = (1.0f - u2) * height - lower;
     float sin_theta = ggx_sqrt(ggx_clamp(1.0f - z * z, 0.0f, 1.0f));
-    float sin_phi, cos_phi;
-    ggx_sincos_2pi(u1, &sin_phi, &cos_phi);
+    ggx_sin_cos phi = ggx_sincos_2pi(u1);
+    float sin_phi = phi.sine, cos_phi = phi.cosine;
     return ggx_vec3_make(sin_theta * cos_phi, sin_theta * sin_phi, z);
 }
 

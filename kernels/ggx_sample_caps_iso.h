@@ -77,15 +77,15 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, flo
     ggx_vec3 a = ggx_stretch_about(h, n, alpha);
     float ratio = ggx_dot(a, a) / ggx_dot(h, h);
     float inv_sum = ggx_inv_iz_plus_t_about(i, n, alpha, iz, ti);
-    ggx_sample out;
-    out.m = ggx_normalize(a);
-    out.o = ggx_reflect(i, out.m);
-    out.pdf_o = 0.5f * ratio * ratio / (GGX_PI * alpha * alpha) * inv_sum;
-    out.pdf_m = 4.0f * ggx_fmax(0.0f, ggx_dot(i, out.m)) * out.pdf_o;  // the VNDF's max(0, i.m), as ggx_vndf.h
-    float oz = ggx_dot(out.o, n);
-    float g2 = ggx_G2_from_t(iz, oz, ti, ggx_t_about(out.o, n, alpha));
-    out.weight = iz > 0.0f ? g2 / (2.0f * iz * inv_sum) : 0.0f;
-    return out;
+    ggx_sample result;
+    result.m = ggx_normalize(a);
+    result.o = ggx_reflect(i, result.m);
+    result.pdf_o = 0.5f * ratio * ratio / (GGX_PI * alpha * alpha) * inv_sum;
+    result.pdf_m = 4.0f * ggx_fmax(0.0f, ggx_dot(i, result.m)) * result.pdf_o;  // the VNDF's max(0, i.m), as ggx_vndf.h
+    float oz = ggx_dot(result.o, n);
+    float g2 = ggx_G2_from_t(iz, oz, ti, ggx_t_about(result.o, n, alpha));
+    result.weight = iz > 0.0f ? g2 / (2.0f * iz * inv_sum) : 0.0f;
+    return result;
 }
 
 // The caps-iso sample, or the fallback of ggx_guards.h about n (alpha 0, the
@@ -131,13 +131,13 @@ GGX_INLINE float ggx_pdf_caps_iso(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alph
 // The dispatchers' form (ggx_common.h): caps-iso reads n and the one roughness ax.
 GGX_INLINE ggx_sample ggx_dispatch_sample_caps_iso(ggx_vec3 n, ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
-    (void)ay;
+    GGX_UNUSED(ay);
     return ggx_sample_caps_iso(n, i, ax, u1, u2);
 }
 
 GGX_INLINE float ggx_dispatch_pdf_caps_iso(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
-    (void)ay;
+    GGX_UNUSED(ay);
     return ggx_pdf_caps_iso(n, i, o, ax);
 }
 

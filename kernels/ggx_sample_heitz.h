@@ -24,7 +24,7 @@ GGX_INLINE ggx_vec3 ggx_tangent_or_x(float sx, float sy)
 {
     float len2 = sx * sx + sy * sy;
     float inv = ggx_rsqrt(len2);
-    int pole = !(len2 > 0.0f);  // per-component selects: a select of structs does not vectorize
+    bool pole = !(len2 > 0.0f);  // per-component selects: a select of structs does not vectorize
     return ggx_vec3_make(pole ? 1.0f : sx * inv, pole ? 0.0f : sy * inv, 0.0f);
 }
 
@@ -34,8 +34,8 @@ GGX_INLINE ggx_sample ggx_draw_heitz(ggx_vec3 i, float ax, float ay, float u1, f
     ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // stretched view (Heitz 2018, sec. 2)
     ggx_vec3 T1 = ggx_tangent_or_x(-v.y, v.x);                    // basis around v (Listing 2, l. 5-8)
     ggx_vec3 T2 = ggx_cross(v, T1);
-    float sin_phi, cos_phi;
-    ggx_sincos_2pi(u2, &sin_phi, &cos_phi);
+    ggx_sin_cos phi = ggx_sincos_2pi(u2);
+    float sin_phi = phi.sine, cos_phi = phi.cosine;
     float r = ggx_sqrt(u1);                                          // uniform point on the unit disk
     float t1 = r * cos_phi, t2 = r * sin_phi;
     float s = 0.5f * (1.0f + v.z);                               // warp onto the visible cross section
@@ -55,10 +55,10 @@ GGX_INLINE ggx_sample ggx_draw_heitz2017(ggx_vec3 i, float ax, float ay, float u
     // Choose a half disk by its projected area, a = 1/(1 + vz) (eq. 4), and
     // scale the angle within it: phi in [0, pi) or [pi, 2 pi).
     float a = 1.0f / (1.0f + v.z);
-    int first_half = u2 < a;
+    bool first_half = u2 < a;
     float turn = first_half ? 0.5f * u2 / a : 0.5f + 0.5f * (u2 - a) / (1.0f - a);
-    float sin_phi, cos_phi;
-    ggx_sincos_2pi(turn, &sin_phi, &cos_phi);
+    ggx_sin_cos phi = ggx_sincos_2pi(turn);
+    float sin_phi = phi.sine, cos_phi = phi.cosine;
     float r = ggx_sqrt(u1);                                          // eq. 3
     float p1 = r * cos_phi;
     float p2 = r * sin_phi * (first_half ? 1.0f : v.z);         // eq. 5: the tangent half disk is foreshortened

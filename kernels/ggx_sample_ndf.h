@@ -9,27 +9,27 @@
 
 GGX_INLINE ggx_sample ggx_draw_ndf(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
-    ggx_sample out;
+    ggx_sample result;
     // Walter eq. 35-36 in slope space: |slope|/alpha = r = ggx_sqrt(u1/(1-u1)), phi = 2 pi u2.
     float one_minus_u1 = 1.0f - u1;
     float r = ggx_sqrt(u1 / one_minus_u1);
-    float sin_phi, cos_phi;
-    ggx_sincos_2pi(u2, &sin_phi, &cos_phi);
+    ggx_sin_cos phi = ggx_sincos_2pi(u2);
+    float sin_phi = phi.sine, cos_phi = phi.cosine;
     // The normal of slope (sx, sy) is (-sx, -sy, 1) normalized.
-    out.m = ggx_normalize(ggx_vec3_make(-ax * r * cos_phi, -ay * r * sin_phi, 1.0f));
-    out.o = ggx_reflect(i, out.m);
+    result.m = ggx_normalize(ggx_vec3_make(-ax * r * cos_phi, -ay * r * sin_phi, 1.0f));
+    result.o = ggx_reflect(i, result.m);
     // D(m) = 1/(pi ax ay mz^4 (1 + r^2)^2) and 1 + r^2 = 1/(1 - u1), so
     // pdf(m) = D(m) mz = (1 - u1)^2 / (pi ax ay mz^3).
-    float mz = out.m.z;
-    out.pdf_m = one_minus_u1 * one_minus_u1 / (GGX_PI * ax * ay * mz * mz * mz);
+    float mz = result.m.z;
+    result.pdf_m = one_minus_u1 * one_minus_u1 / (GGX_PI * ax * ay * mz * mz * mz);
     // Reflection Jacobian |dm/do| = 1/(4 |o.m|) = 1/(4 |i.m|) (Walter eq. 14).
-    float i_dot_m = ggx_dot(i, out.m);
+    float i_dot_m = ggx_dot(i, result.m);
     // (i.m = 0: a view across the surface reflected about m = n, o = -i has no density.)
-    out.pdf_o = i_dot_m != 0.0f ? out.pdf_m / (4.0f * ggx_fabs(i_dot_m)) : 0.0f;
+    result.pdf_o = i_dot_m != 0.0f ? result.pdf_m / (4.0f * ggx_fabs(i_dot_m)) : 0.0f;
     // weight = D G2 / (4 iz) / pdf_o = G2 (i.m) / (iz mz); a back-facing m reflects nothing.
-    float g2 = ggx_G2(i, out.o, ax, ay);
-    out.weight = (i_dot_m > 0.0f && i.z > 0.0f) ? g2 * i_dot_m / (i.z * mz) : 0.0f;
-    return out;
+    float g2 = ggx_G2(i, result.o, ax, ay);
+    result.weight = (i_dot_m > 0.0f && i.z > 0.0f) ? g2 * i_dot_m / (i.z * mz) : 0.0f;
+    return result;
 }
 
 // The ndf sample, or the fallback of ggx_guards.h (a roughness axis of 0).

@@ -32,10 +32,10 @@
 // turn and call its ggx_dispatch_* form (ggx_common.h); with a compile-time
 // constant `method` the chain folds to one sampler.  Only caps-iso reads n
 // (world space); the others work in tangent space.
-#define GGX_SAMPLE_IF_METHOD(ID, identifier, name, ...)  \
+#define GGX_SAMPLE_IF_METHOD(ID, identifier, name, paper, how, space, alpha, normals, dielectric, below, limits) \
     if (GGX_IS_METHOD(method, GGX_METHOD_##ID))     \
         return ggx_dispatch_sample_##identifier(n, i, ax, ay, u1, u2);
-#define GGX_PDF_IF_METHOD(ID, identifier, name, ...)     \
+#define GGX_PDF_IF_METHOD(ID, identifier, name, paper, how, space, alpha, normals, dielectric, below, limits) \
     if (GGX_IS_METHOD(method, GGX_METHOD_##ID))     \
         return ggx_dispatch_pdf_##identifier(n, i, o, ax, ay);
 // A program built with a user sampler (ggx_user_sampler.h) dispatches its id too.

@@ -21,31 +21,41 @@
 
 #include "ggx_common.h"
 
+// A sine and a cosine (a struct: the shading languages have no pointers).
+struct ggx_sin_cos {
+    float sine, cosine;
+};
+GGX_TYPEDEF_STRUCT(ggx_sin_cos)
+
 // sin((pi/2) f) and cos((pi/2) f) for |f| <= 1/2.
-GGX_INLINE void ggx_sincos_quarter(float f, float* s, float* c)
+GGX_INLINE ggx_sin_cos ggx_sincos_quarter(float f)
 {
     float x = f * f;
     float ps = GGX_FMA(GGX_FMA(-4.602149129e-03f, x, 7.968020439e-02f), x, -6.459634900e-01f);
     ps = GGX_FMA(x, ps, -4.371138829e-08f);                     // the remainder of pi/2 - 1.5707964f
-    *s = GGX_FMA(f, 1.570796371e+00f, f * ps);
     float pc = GGX_FMA(GGX_FMA(GGX_FMA(9.067399078e-04f, x, -2.086152695e-02f), x, 2.536692619e-01f), x,
                        -1.233700514e+00f);
-    *c = GGX_FMA(pc, x, 1.0f);
+    ggx_sin_cos result;
+    result.sine = GGX_FMA(f, 1.570796371e+00f, f * ps);
+    result.cosine = GGX_FMA(pc, x, 1.0f);
+    return result;
 }
 
-GGX_INLINE void ggx_sincos_2pi(float u, float* s, float* c)
+// sin(2 pi u) and cos(2 pi u).
+GGX_INLINE ggx_sin_cos ggx_sincos_2pi(float u)
 {
     float q = 4.0f * u;
     float j = ggx_rint(q);
-    float sf, cf;
-    ggx_sincos_quarter(q - j, &sf, &cf);
-    int quarter = (int)j;
+    ggx_sin_cos part = ggx_sincos_quarter(q - j);
+    int quarter = ggx_to_int(j);
     // Turning by a quarter maps (sin, cos) to (cos, -sin): odd quarters swap
     // the pair, quarters 2 and 3 negate the sine, 1 and 2 the cosine.
-    float s_turned = (quarter & 1) ? cf : sf;
-    float c_turned = (quarter & 1) ? sf : cf;
-    *s = (quarter & 2) ? -s_turned : s_turned;
-    *c = ((quarter + 1) & 2) ? -c_turned : c_turned;
+    float s_turned = (quarter & 1) != 0 ? part.cosine : part.sine;
+    float c_turned = (quarter & 1) != 0 ? part.sine : part.cosine;
+    ggx_sin_cos result;
+    result.sine = (quarter & 2) != 0 ? -s_turned : s_turned;
+    result.cosine = ((quarter + 1) & 2) != 0 ? -c_turned : c_turned;
+    return result;
 }
 
 #endif

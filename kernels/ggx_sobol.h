@@ -31,9 +31,9 @@
 // into llvm.bitreverse (spread 4 copies, pick one bit of each, gather).
 GGX_INLINE ggx_uint ggx_reverse_byte(ggx_uint b)
 {
-    ggx_ulong spread = (ggx_ulong)(b & 0xffu) * (ggx_ulong)0x80200802u;
-    ggx_ulong picked = spread & ((ggx_ulong)0x08u << 32 | (ggx_ulong)0x84422110u);
-    return (ggx_uint)((picked * ((ggx_ulong)0x01u << 32 | (ggx_ulong)0x01010101u)) >> 32) & 0xffu;
+    ggx_ulong spread = ggx_to_ulong(b & 0xffu) * ggx_to_ulong(0x80200802u);
+    ggx_ulong picked = spread & (ggx_to_ulong(0x08u) << 32 | ggx_to_ulong(0x84422110u));
+    return ggx_to_uint((picked * (ggx_to_ulong(0x01u) << 32 | ggx_to_ulong(0x01010101u))) >> 32) & 0xffu;
 }
 #endif
 
@@ -113,28 +113,46 @@ GGX_INLINE ggx_uint ggx_sobol_key(ggx_uint seed, ggx_uint dimension, ggx_uint bl
 // The two scrambled 32-bit coordinates of point k (the index's low word)
 // with the scramble keys of its block.  van der Corput's digits are the bits
 // of k themselves.
-GGX_INLINE void ggx_sobol_words_keyed(ggx_uint k, ggx_uint key1, ggx_uint key2, ggx_uint* w1, ggx_uint* w2)
+GGX_INLINE ggx_word_pair ggx_sobol_words_keyed(ggx_uint k, ggx_uint key1, ggx_uint key2)
 {
-    *w1 = ggx_owen_scramble_digits(k, key1);
-    *w2 = ggx_owen_scramble_digits(ggx_sobol_second_digits(k), key2);
+    ggx_word_pair w;
+    w.w1 = ggx_owen_scramble_digits(k, key1);
+    w.w2 = ggx_owen_scramble_digits(ggx_sobol_second_digits(k), key2);
+    return w;
 }
 
 // The two scrambled 32-bit coordinates of sample `index` of stream `seed`.
-GGX_INLINE void ggx_sobol_words(ggx_ulong seed, ggx_ulong index, ggx_uint* w1, ggx_uint* w2)
+GGX_INLINE ggx_word_pair ggx_sobol_words(ggx_ulong seed, ggx_ulong index)
 {
-    ggx_uint block = (ggx_uint)(index >> 32);
-    ggx_sobol_words_keyed((ggx_uint)index, ggx_sobol_key((ggx_uint)seed, 0u, block), ggx_sobol_key((ggx_uint)seed, 1u, block), w1,
-                          w2);
+    ggx_uint block = ggx_to_uint(index >> 32);
+    return ggx_sobol_words_keyed(ggx_to_uint(index), ggx_sobol_key(ggx_to_uint(seed), 0u, block),
+                                 ggx_sobol_key(ggx_to_uint(seed), 1u, block));
+}
+
+// The two uniforms of a pair of words.
+GGX_INLINE ggx_uniform_pair ggx_words_to_units(ggx_word_pair w)
+{
+    ggx_uniform_pair u;
+    u.u1 = ggx_word_to_unit(w.w1);
+    u.u2 = ggx_word_to_unit(w.w2);
+    return u;
 }
 
 // The two uniforms of sample `index` in stream `seed` from the scrambled Sobol points.
+GGX_INLINE ggx_uniform_pair ggx_sobol_pair(ggx_ulong seed, ggx_ulong index)
+{
+    return ggx_words_to_units(ggx_sobol_words(seed, index));
+}
+
+#if !GGX_SHADER
+// The same through pointers, for the C family.
 GGX_INLINE void ggx_sobol_uniforms(ggx_ulong seed, ggx_ulong index, float* u1, float* u2)
 {
-    ggx_uint w1, w2;
-    ggx_sobol_words(seed, index, &w1, &w2);
-    *u1 = ggx_word_to_unit(w1);
-    *u2 = ggx_word_to_unit(w2);
+    ggx_uniform_pair u = ggx_sobol_pair(seed, index);
+    *u1 = u.u1;
+    *u2 = u.u2;
 }
+#endif
 
 // The digits of Sobol's third dimension of point k as a 32-bit fraction: the
 // xor of the direction numbers v_j of the bits j of k.  Its primitive
@@ -158,35 +176,34 @@ GGX_UNROLL
 // The third uniform of sample `index` of stream `seed`.
 GGX_INLINE float ggx_sobol_lobe_uniform(ggx_ulong seed, ggx_ulong index)
 {
-    ggx_uint key = ggx_sobol_key((ggx_uint)seed, 2u, (ggx_uint)(index >> 32));
-    return ggx_word_to_unit(ggx_owen_scramble(ggx_sobol_third_word((ggx_uint)index), key));
+    ggx_uint key = ggx_sobol_key(ggx_to_uint(seed), 2u, ggx_to_uint(index >> 32));
+    return ggx_word_to_unit(ggx_owen_scramble(ggx_sobol_third_word(ggx_to_uint(index)), key));
 }
 
 // The same for sample first + j of a launch of fewer than 2^32 samples,
 // which crosses at most one 2^32 block: the keys of both candidate blocks
 // depend on (seed, first) alone, so a compiler computes them once per launch
 // instead of once per sample (the points cost a third less on PoCL).
-GGX_INLINE void ggx_sobol_launch_uniforms(ggx_ulong seed, ggx_ulong first, ggx_uint j, float* u1, float* u2)
+GGX_INLINE ggx_uniform_pair ggx_sobol_launch_pair(ggx_ulong seed, ggx_ulong first, ggx_uint j)
 {
-    ggx_uint block = (ggx_uint)(first >> 32);
-    ggx_uint key1 = ggx_sobol_key((ggx_uint)seed, 0u, block), key2 = ggx_sobol_key((ggx_uint)seed, 1u, block);
-    ggx_uint next1 = ggx_sobol_key((ggx_uint)seed, 0u, block + 1u), next2 = ggx_sobol_key((ggx_uint)seed, 1u, block + 1u);
+    ggx_uint block = ggx_to_uint(first >> 32);
+    ggx_uint key1 = ggx_sobol_key(ggx_to_uint(seed), 0u, block), key2 = ggx_sobol_key(ggx_to_uint(seed), 1u, block);
+    ggx_uint next1 = ggx_sobol_key(ggx_to_uint(seed), 0u, block + 1u);
+    ggx_uint next2 = ggx_sobol_key(ggx_to_uint(seed), 1u, block + 1u);
     ggx_ulong index = first + j;
-    int next = (ggx_uint)(index >> 32) != block;
-    ggx_uint w1, w2;
-    ggx_sobol_words_keyed((ggx_uint)index, next ? next1 : key1, next ? next2 : key2, &w1, &w2);
-    *u1 = ggx_word_to_unit(w1);
-    *u2 = ggx_word_to_unit(w2);
+    bool next = ggx_to_uint(index >> 32) != block;
+    return ggx_words_to_units(ggx_sobol_words_keyed(ggx_to_uint(index), next ? next1 : key1, next ? next2 : key2));
 }
 
 // The third uniform of sample first + j of a launch, its keys per launch as above.
 GGX_INLINE float ggx_sobol_launch_lobe_uniform(ggx_ulong seed, ggx_ulong first, ggx_uint j)
 {
-    ggx_uint block = (ggx_uint)(first >> 32);
-    ggx_uint key = ggx_sobol_key((ggx_uint)seed, 2u, block), next_key = ggx_sobol_key((ggx_uint)seed, 2u, block + 1u);
+    ggx_uint block = ggx_to_uint(first >> 32);
+    ggx_uint key = ggx_sobol_key(ggx_to_uint(seed), 2u, block);
+    ggx_uint next_key = ggx_sobol_key(ggx_to_uint(seed), 2u, block + 1u);
     ggx_ulong index = first + j;
-    ggx_uint word = ggx_sobol_third_word((ggx_uint)index);
-    return ggx_word_to_unit(ggx_owen_scramble(word, (ggx_uint)(index >> 32) != block ? next_key : key));
+    ggx_uint word = ggx_sobol_third_word(ggx_to_uint(index));
+    return ggx_word_to_unit(ggx_owen_scramble(word, ggx_to_uint(index >> 32) != block ? next_key : key));
 }
 
 #endif

@@ -50,7 +50,7 @@ GGX_INLINE ggx_sample ggx_user_complete(ggx_vec3 i, ggx_vec3 m, float ax, float 
 
 GGX_INLINE ggx_sample ggx_dispatch_sample_user(ggx_vec3 n, ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
-    (void)n;
+    GGX_UNUSED(n);
 #if GGX_USER_SAMPLES_M
     return ggx_user_complete(i, ggx_user_sample_m(i, ax, ay, u1, u2), ax, ay);
 #else
@@ -60,7 +60,7 @@ GGX_INLINE ggx_sample ggx_dispatch_sample_user(ggx_vec3 n, ggx_vec3 i, float ax,
 
 GGX_INLINE float ggx_dispatch_pdf_user(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)
 {
-    (void)n;
+    GGX_UNUSED(n);
     return ggx_user_pdf(i, o, ax, ay);
 }
 

@@ -37,13 +37,13 @@ GGX_INLINE ggx_sample ggx_finish_vndf_sample(ggx_vec3 i, ggx_vec3 h, float ax, f
     // (0, 1e-6), so 1e-30): the last uniform, 1 - 2^-24, rounds onto the edge of the cap or
     // disk, where m would lie exactly in the surface.
     h.z = ggx_fmax(h.z, 1e-30f);
-    ggx_sample out;
-    out.m = ggx_normalize(ggx_stretch(h, ax, ay));
-    out.o = ggx_reflect(i, out.m);
-    out.pdf_o = 0.5f * ggx_D_from_standard(h, ax, ay) * inv_sum;
-    out.pdf_m = 4.0f * ggx_fmax(0.0f, ggx_dot(i, out.m)) * out.pdf_o;
-    out.weight = ggx_vndf_weight(i, out.o, ax, ay, ti, inv_sum);
-    return out;
+    ggx_sample result;
+    result.m = ggx_normalize(ggx_stretch(h, ax, ay));
+    result.o = ggx_reflect(i, result.m);
+    result.pdf_o = 0.5f * ggx_D_from_standard(h, ax, ay) * inv_sum;
+    result.pdf_m = 4.0f * ggx_fmax(0.0f, ggx_dot(i, result.m)) * result.pdf_o;
+    result.weight = ggx_vndf_weight(i, result.o, ax, ay, ti, inv_sum);
+    return result;
 }
 
 // pdf of o recomputed from (i, o) for an unbounded VNDF sampler: m is the half vector.

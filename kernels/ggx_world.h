@@ -9,20 +9,21 @@
 
 #include "ggx_dielectric.h"
 
-typedef struct {
+struct ggx_basis {
     ggx_vec3 t, b, n;
-} ggx_basis;
+};
+GGX_TYPEDEF_STRUCT(ggx_basis)
 
-// Duff et al. 2017, Listing 3: sign = ggx_copysign(1, nz), a = -1/(sign + nz), b = nx ny a,
-// t = (1 + sign nx^2 a, sign b, -sign nx), b = (b, sign + ny^2 a, -ny).
+// Duff et al. 2017, Listing 3: side = ggx_copysign(1, nz), a = -1/(side + nz), b = nx ny a,
+// t = (1 + side nx^2 a, side b, -side nx), b = (b, side + ny^2 a, -ny).
 GGX_INLINE ggx_basis ggx_basis_from_normal(ggx_vec3 n)
 {
-    float sign = ggx_copysign(1.0f, n.z);
-    float a = -1.0f / (sign + n.z);
+    float side = ggx_copysign(1.0f, n.z);
+    float a = -1.0f / (side + n.z);
     float b = n.x * n.y * a;
     ggx_basis basis;
-    basis.t = ggx_vec3_make(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    basis.b = ggx_vec3_make(b, sign + n.y * n.y * a, -n.y);
+    basis.t = ggx_vec3_make(1.0f + side * n.x * n.x * a, side * b, -side * n.x);
+    basis.b = ggx_vec3_make(b, side + n.y * n.y * a, -n.y);
     basis.n = n;
     return basis;
 }
@@ -40,7 +41,7 @@ GGX_INLINE ggx_vec3 ggx_from_local(ggx_basis basis, ggx_vec3 v)
 // A sample of `method` for world-space n and i with roughness alpha; m and o in world space.
 GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
 {
-    if (ggx_method_world_space(method))
+    if (ggx_method_world_space(method) != 0)
         return ggx_sample_method(method, n, i, alpha, alpha, u1, u2);
     ggx_basis basis = ggx_basis_from_normal(n);
     ggx_sample s = ggx_sample_method(method, n, ggx_to_local(basis, i), alpha, alpha, u1, u2);
@@ -59,7 +60,7 @@ GGX_INLINE float ggx_eval_reflection_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, f
 // The pdf of the world-space direction o for `method` (0 where it never samples o).
 GGX_INLINE float ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
 {
-    if (ggx_method_world_space(method))
+    if (ggx_method_world_space(method) != 0)
         return ggx_pdf_method(method, n, i, o, alpha, alpha);
     ggx_basis basis = ggx_basis_from_normal(n);
     return ggx_pdf_method(method, n, ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha);
@@ -76,13 +77,13 @@ GGX_INLINE float ggx_eval_dielectric_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, f
 GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, float alpha, float eta,
                                                   int radiance, float u1, float u2, float u3)
 {
-    const int below = ggx_dot(i, n) < 0.0f;
-    if (!ggx_method_dielectric(method))
+    const bool below = ggx_dot(i, n) < 0.0f;
+    if (ggx_method_dielectric(method) == 0)
         return ggx_fallback_sample(n);
     const ggx_vec3 i_above = ggx_mirror_if(i, n, below);
     ggx_sample s = ggx_sample_world(method, n, i_above, alpha, u1, u2);
     s = ggx_dielectric_from_reflection(s, n, i_above, alpha, alpha, below ? 1.0f / eta : eta, radiance, u3,
-                                       ggx_method_ndf_normals(method), 1);
+                                       ggx_method_ndf_normals(method) != 0, true);
     s.m = ggx_mirror_if(s.m, n, below);
     s.o = ggx_mirror_if(s.o, n, below);
     return ggx_keep_or_fallback(s, ggx_eta_ok(eta), ggx_mirror_if(n, n, below));
@@ -91,14 +92,14 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_ve
 // The density of the world-space o for `method`'s dielectric sampler, from (i, o) alone.
 GGX_INLINE float ggx_pdf_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha, float eta)
 {
-    const int below = ggx_dot(i, n) < 0.0f;
-    if (!ggx_method_dielectric(method))
+    const bool below = ggx_dot(i, n) < 0.0f;
+    if (ggx_method_dielectric(method) == 0)
         return 0.0f;
     const ggx_vec3 i_above = ggx_mirror_if(i, n, below), o_side = ggx_mirror_if(o, n, below);
     const float eta_side = below ? 1.0f / eta : eta;
     const float reflection_pdf = ggx_pdf_world(method, n, i_above, o_side, alpha);
-    const float pdf = ggx_dielectric_pdf_above(method, n, i_above, o_side, alpha, alpha, eta_side, reflection_pdf, 1);
-    return ggx_guard_pdf(ggx_eta_ok(eta) ? pdf : 0.0f, alpha, alpha);
+    const float pdf = ggx_dielectric_pdf_above(method, n, i_above, o_side, alpha, alpha, eta_side, reflection_pdf, true);
+    return ggx_guard_pdf(ggx_eta_ok(eta) != 0 ? pdf : 0.0f, alpha, alpha);
 }
 
 #endif

@@ -32,6 +32,8 @@ test_packages=(
   openmpi-bin libopenmpi-dev          # mpirun for test_mpi_shards (ggx itself links no MPI)
   slurm-wlm munge                     # a one-node Slurm started by test_slurm_cluster
   chromium chromium-driver python3-selenium  # the report pages in a headless browser (test_pages)
+  glslang-tools glslang-dev libshaderc-dev  # the device headers as GLSL and HLSL: glslangValidator, shaderc (tests/vulkan)
+  libvulkan-dev mesa-vulkan-drivers   # Vulkan-Hpp and Mesa's lavapipe, a Vulkan device on the CPU (tests/vulkan)
 )
 
 # --demo: the demo's packages only; else everything.

@@ -14,7 +14,17 @@
 
 namespace ggxcl::detail {
 
-// ggxcl::Method and all_methods are made from GGX_METHOD_LIST (method.hpp).
+// ggxcl::Method and all_methods are made from GGX_METHOD_LIST (method.hpp);
+// the ids GGX_METHOD_<ID> are written out for the shading languages, which
+// have no enum: each must be its line's place in the list.
+constexpr bool method_ids_in_list_order()
+{
+    for (std::size_t k = 0; k < all_methods.size(); ++k)
+        if (static_cast<std::size_t>(all_methods[k]) != k)
+            return false;
+    return true;
+}
+static_assert(method_ids_in_list_order(), "ggx_contract.h: a GGX_METHOD_<ID> is not its line's place in the list");
 
 static_assert(static_cast<int>(Field::m) == GGX_FIELD_M);
 static_assert(static_cast<int>(Field::o) == GGX_FIELD_O);

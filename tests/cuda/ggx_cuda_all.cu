@@ -63,6 +63,9 @@ GGX_METHOD_LIST(GGX_CUDA_KERNELS)
 extern "C" __global__ void ggx_cuda_sobol(unsigned int seed, unsigned long long first, unsigned int count, float* u)
 {
     const unsigned int j = ggx_cuda_index();
-    if (j < count)
-        ggx_sobol_launch_uniforms(seed, first, j, &u[j], &u[count + j]);
+    if (j < count) {
+        ggx_uniform_pair pair = ggx_sobol_launch_pair(seed, first, j);
+        u[j] = pair.u1;
+        u[count + j] = pair.u2;
+    }
 }

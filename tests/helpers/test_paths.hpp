@@ -30,6 +30,9 @@ inline std::string user_samplers_dir() { return path_from_env("GGX_USER_SAMPLERS
 #ifdef GGX_KERNEL_DIR
 inline std::string kernel_dir() { return path_from_env("GGX_KERNEL_DIR", GGX_KERNEL_DIR); }
 #endif
+#ifdef GGX_VULKAN_SHADER_DIR
+inline std::string vulkan_shader_dir() { return path_from_env("GGX_VULKAN_SHADER_DIR", GGX_VULKAN_SHADER_DIR); }
+#endif
 #ifdef GGX_CUDA_DIR
 inline std::string cuda_dir() { return path_from_env("GGX_CUDA_DIR", GGX_CUDA_DIR); }
 #endif
@@ -41,6 +44,9 @@ inline std::string gxx() { return path_from_env("GGX_GXX", GGX_GXX); }
 #endif
 #ifdef GGX_CLANG
 inline std::string clang() { return path_from_env("GGX_CLANG", GGX_CLANG); }
+#endif
+#ifdef GGX_GLSLANG_VALIDATOR
+inline std::string glslang_validator() { return path_from_env("GGX_GLSLANG_VALIDATOR", GGX_GLSLANG_VALIDATOR); }
 #endif
 #ifdef GGX_CLANGXX
 inline std::string clangxx() { return path_from_env("GGX_CLANGXX", GGX_CLANGXX); }

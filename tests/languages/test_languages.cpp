@@ -1,4 +1,4 @@
-// test_languages.cpp - the device headers in the three languages they are written for:
+// test_languages.cpp - the device headers in the five languages they are written for:
 //  - every public device header of kernels/ compiles alone, without a warning, as C++17 with
 //    GCC and with Clang (-Wall -Wextra -Wpedantic -Wconversion -Wdouble-promotion -Wshadow),
 //    as CUDA device code (clang++ -x cuda without the CUDA toolkit, tests/cuda/cuda_shim.h
@@ -7,8 +7,12 @@
 //    compiles to PTX with an entry point per method of the list and no local memory;
 //  - the kernel of examples/cuda compiles to PTX the same way; where nvcc is installed, the file
 //    above and the whole example (host code too) compile with it;
-//  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check.
-// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h, ggx_histogram_bin.h) are OpenCL C alone.
+//  - every public device header compiles alone as a GLSL 4.50 compute shader and as an HLSL one
+//    (glslangValidator, the front ends shaderc uses; tests/vulkan runs them on a Vulkan device);
+//  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check,
+//    and a header with a C cast fails the GLSL check.
+// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h, ggx_histogram_bin.h) are OpenCL C alone;
+// ggx_platform_shader.h is GLSL and HLSL alone.
 // ggx_user_sampler.h declares what a user sampler's file defines after it: it compiles
 // with the test samplers of tests/user_samplers (one of whole samples, one of m alone) and the
 // worked example of examples/user_sampler after it.
@@ -35,6 +39,8 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h", "ggx_histogram_bin.h"};
+// The shading languages' part of ggx_platform.h, which includes it there.
+const std::vector<std::string> shader_only = {"ggx_platform_shader.h"};
 
 struct Result {
     int status;
@@ -61,7 +67,8 @@ std::vector<std::string> public_headers()
     std::vector<std::string> names;
     for (const fs::directory_entry& e : fs::directory_iterator(ggxtest::kernel_dir()))
         if (e.path().extension() == ".h" &&
-            std::find(kernel_only.begin(), kernel_only.end(), e.path().filename().string()) == kernel_only.end())
+            std::find(kernel_only.begin(), kernel_only.end(), e.path().filename().string()) == kernel_only.end() &&
+            std::find(shader_only.begin(), shader_only.end(), e.path().filename().string()) == shader_only.end())
             names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
@@ -90,6 +97,17 @@ std::string clang_opencl(const std::string& source)
 {
     return ggxtest::clang() + " -x cl -cl-std=CL1.2 -Xclang -finclude-default-header -fsyntax-only -Wall" +
            " -Werror" + kernels + " " + source;
+}
+
+// glslang's GLSL 4.50 (Vulkan) and HLSL front ends; -o /dev/null: the SPIR-V is made, then dropped.
+std::string glslang_glsl(const std::string& source)
+{
+    return ggxtest::glslang_validator() + " --quiet -V" + kernels + " -o /dev/null " + source;
+}
+std::string glslang_hlsl(const std::string& source)
+{
+    return ggxtest::glslang_validator() + " --quiet -V -D -e main -S comp --target-env vulkan1.1 -DGGX_HLSL=1" + kernels +
+           " -o /dev/null " + source;
 }
 
 fs::path write_file(const fs::path& path, const std::string& text)
@@ -204,6 +222,37 @@ TEST_CASE("every sampler and pdf called from CUDA: PTX with an entry point per m
     CHECK(ptx.find(".local") == std::string::npos);  // nothing spilled to local memory
     CHECK(ptx.find("__local_depot") == std::string::npos);
     CHECK(ptx.find("call.uni") == std::string::npos);  // every device function inlined, no libdevice call
+}
+
+TEST_CASE("every public device header compiles alone as GLSL 4.50 and as HLSL (glslangValidator)")
+{
+    {
+        INFO("glslangValidator not found (", ggxtest::glslang_validator(), "): apt-get install glslang-tools");
+        REQUIRE(ggxtest::glslang_validator().find("NOTFOUND") == std::string::npos);
+    }
+    const ggxtest::ScratchFolder dir("languages");
+    for (const std::string& header : public_headers()) {
+        CAPTURE(header);
+        const std::string include = "#include \"" + header + "\"\n";
+        check_compiles("GLSL", glslang_glsl(write_file(dir / (header + ".comp"),
+                                                       "#version 450\n#extension GL_GOOGLE_include_directive : require\n" +
+                                                           include + "layout(local_size_x = 1) in;\nvoid main() {}\n")
+                                                .string()));
+        check_compiles("HLSL", glslang_hlsl(write_file(dir / (header + ".hlsl"),
+                                                       include + "[numthreads(1, 1, 1)]\nvoid main() {}\n")
+                                                .string()));
+    }
+}
+
+TEST_CASE("control: a C cast in a device function fails the GLSL check")
+{
+    const ggxtest::ScratchFolder dir("languages");
+    const std::string bad = write_file(dir / "cast.comp", "#version 450\n#extension GL_GOOGLE_include_directive : require\n"
+                                                          "#include \"ggx_common.h\"\n"
+                                                          "int whole(float x) { return (int)x; }\n"
+                                                          "layout(local_size_x = 1) in;\nvoid main() {}\n")
+                                .string();
+    CHECK(run(glslang_glsl(bad)).status != 0);
 }
 
 TEST_CASE("the CUDA example's kernel compiles to PTX with clang alone")

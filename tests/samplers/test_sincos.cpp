@@ -19,10 +19,9 @@ const char* sincos_kernel = R"CL(
 __kernel void sincos_grid(__global float* s, __global float* c)
 {
     uint k = get_global_id(0);
-    float sine, cosine;
-    ggx_sincos_2pi((float)k * 5.9604644775390625e-8f, &sine, &cosine);
-    s[k] = sine;
-    c[k] = cosine;
+    ggx_sin_cos turn = ggx_sincos_2pi((float)k * 5.9604644775390625e-8f);
+    s[k] = turn.sine;
+    c[k] = turn.cosine;
 }
 )CL";
 

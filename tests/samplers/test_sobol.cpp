@@ -23,10 +23,10 @@ const char* sobol_kernel = R"CL(
 #include "ggx_sobol.h"
 __kernel void sobol_words(ulong seed, ulong first, __global uint* out)
 {
-    uint g = get_global_id(0), w1, w2;
-    ggx_sobol_words(seed, first + g, &w1, &w2);
-    out[2 * g] = w1;
-    out[2 * g + 1] = w2;
+    uint g = get_global_id(0);
+    ggx_word_pair w = ggx_sobol_words(seed, first + g);
+    out[2 * g] = w.w1;
+    out[2 * g + 1] = w.w2;
 }
 )CL";
 

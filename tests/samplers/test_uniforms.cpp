@@ -16,9 +16,11 @@ const char* test_kernels = R"CL(
 __kernel void philox_words(__global const uint* in, __global uint* out)
 {
     uint g = get_global_id(0);
-    uint c0 = in[3 * g], c1 = in[3 * g + 1];
-    ggx_philox2x32_10(&c0, &c1, in[3 * g + 2]);
-    out[2 * g] = c0; out[2 * g + 1] = c1;
+    ggx_word_pair c;
+    c.w1 = in[3 * g];
+    c.w2 = in[3 * g + 1];
+    c = ggx_philox2x32_10(c, in[3 * g + 2]);
+    out[2 * g] = c.w1; out[2 * g + 1] = c.w2;
 }
 __kernel void uniforms(ulong seed, ulong first, __global float* u)
 {

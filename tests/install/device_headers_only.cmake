@@ -5,7 +5,8 @@
 # of them; installs to a temporary prefix; checks that the device headers,
 # ggxcl-device.pc and the CMake package are there and no library or program
 # is; `pkg-config --cflags ggxcl-device` reaches ggx_samplers.h and `--libs`
-# is empty; examples/cpu_render compiles and runs with those flags and as a
+# is empty; examples/glsl and examples/hlsl compile with those flags
+# (glslangValidator); examples/cpu_render compiles and runs with them and as a
 # CMake project through find_package(ggxcl COMPONENTS device_headers), while
 # find_package(ggxcl) asking for the runtime fails with a message naming the
 # component.  Inputs: SOURCE_DIR, WORK_DIR, GENERATOR, CXX.
@@ -49,6 +50,12 @@ separate_arguments(cflags UNIX_COMMAND "${step_output}")
 step("compile cpu_render with pkg-config's flags" ${CXX} -std=c++17 -O2 ${cflags}
   ${SOURCE_DIR}/examples/cpu_render/cpu_render.cpp -o ${WORK_DIR}/cpu-render-pc)
 step("run cpu_render (pkg-config)" ${WORK_DIR}/cpu-render-pc 100000)
+# The same flags serve the shading languages (docs/SHADERS.md): the examples' compute shaders.
+find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)  # glslang-tools
+step("compile examples/glsl with pkg-config's flags" ${GLSLANG_VALIDATOR} --quiet -V ${cflags}
+  ${SOURCE_DIR}/examples/glsl/furnace.comp -o ${WORK_DIR}/furnace-glsl.spv)
+step("compile examples/hlsl with pkg-config's flags" ${GLSLANG_VALIDATOR} --quiet -V -D -e main -S comp
+  --target-env vulkan1.1 -DGGX_HLSL=1 ${cflags} ${SOURCE_DIR}/examples/hlsl/furnace.hlsl -o ${WORK_DIR}/furnace-hlsl.spv)
 
 step("configure examples/cpu_render" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/cpu_render
   -B ${WORK_DIR}/cpu-render-build -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_PREFIX_PATH=${prefix})

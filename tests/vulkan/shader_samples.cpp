@@ -27,8 +27,10 @@ constexpr std::uint32_t group_size = 64;
 
 ComputeDevice& vulkan()
 {
-    static ComputeDevice device;
-    return device;
+    // Never destroyed: destroying the instance unloads the driver, whose own
+    // allocations LeakSanitizer then reports in frames it cannot name.
+    static ComputeDevice* device = new ComputeDevice;
+    return *device;
 }
 
 const std::vector<std::uint32_t>& sample_shader(ShaderLanguage language, ggxcl::Method method, bool dielectric)

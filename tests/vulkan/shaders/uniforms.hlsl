@@ -1,29 +1,14 @@
 // uniforms.hlsl - uniforms.comp in HLSL (uint64_t).
-#include "ggx_sobol.h"
-
 struct Request {
     uint seed_lo, seed_hi, first_lo, first_hi, count;
 };
 [[vk::push_constant]] Request request;
 [[vk::binding(0, 0)]] RWStructuredBuffer<float> values;
 
+#include "uniforms_request.h"
+
 [numthreads(64, 1, 1)]
 void main(uint3 id : SV_DispatchThreadID)
 {
-    uint j = id.x, n = request.count;
-    if (j >= n)
-        return;
-    ggx_ulong seed = (ggx_to_ulong(request.seed_hi) << 32) | ggx_to_ulong(request.seed_lo);
-    ggx_ulong first = (ggx_to_ulong(request.first_hi) << 32) | ggx_to_ulong(request.first_lo);
-    ggx_uniform_pair philox = ggx_philox_pair(seed, first + j), sobol = ggx_sobol_pair(seed, first + j);
-    ggx_uniform_pair launch = ggx_sobol_launch_pair(seed, first, j);
-    values[j] = philox.u1;
-    values[n + j] = philox.u2;
-    values[2 * n + j] = ggx_lobe_uniform(seed, first + j);
-    values[3 * n + j] = sobol.u1;
-    values[4 * n + j] = sobol.u2;
-    values[5 * n + j] = ggx_sobol_lobe_uniform(seed, first + j);
-    values[6 * n + j] = launch.u1;
-    values[7 * n + j] = launch.u2;
-    values[8 * n + j] = ggx_sobol_launch_lobe_uniform(seed, first, j);
+    ggx_test_uniforms(id.x);
 }

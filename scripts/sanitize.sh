@@ -33,4 +33,8 @@ export OCL_ICD_VENDORS="$icd_dir"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_odr_violation=0"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-ctest --test-dir build-asan --output-on-failure -LE "cross|gpu-compilers|device-bound" -j"$(nproc)" "$@"
+# --repeat until-pass:2: LeakSanitizer's own tracer crashes now and then at exit
+# ("Tracer caught signal 11", after every check passed; twice in 114 suite runs
+# on 2026-12-05); a report of ours repeats, and fails both runs.
+ctest --test-dir build-asan --output-on-failure -LE "cross|gpu-compilers|device-bound" -j"$(nproc)" \
+  --repeat until-pass:2 "$@"

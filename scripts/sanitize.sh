@@ -30,11 +30,14 @@ icd_dir="$PWD/build-asan/icd-pocl-only"
 mkdir -p "$icd_dir"
 cp /etc/OpenCL/vendors/pocl.icd "$icd_dir/"
 export OCL_ICD_VENDORS="$icd_dir"
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_odr_violation=0"
+# intercept_tls_get_addr=0: GCC 12's sanitizer runtime takes a dynamic TLS
+# block whose address is 16 past a page boundary for glibc 2.19's layout and
+# hands LeakSanitizer's tracer a bogus range to scan, which crashes it at exit
+# ("Tracer caught signal 11" after every check passed: test_c_api's threads
+# run, 3 exits in 10 here, both CI tries on 2026-12-05; 0 in 10 with the
+# option; google/sanitizers#1322).  Only pointers held in dlopen'ed modules'
+# TLS go unscanned: a false leak report, never a missed one.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_odr_violation=0:intercept_tls_get_addr=0"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-# --repeat until-pass:2: LeakSanitizer's own tracer crashes now and then at exit
-# ("Tracer caught signal 11", after every check passed; twice in 114 suite runs
-# on 2026-12-05); a report of ours repeats, and fails both runs.
-ctest --test-dir build-asan --output-on-failure -LE "cross|gpu-compilers|device-bound" -j"$(nproc)" \
-  --repeat until-pass:2 "$@"
+ctest --test-dir build-asan --output-on-failure -LE "cross|gpu-compilers|device-bound" -j"$(nproc)" "$@"

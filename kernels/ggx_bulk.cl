@@ -20,21 +20,6 @@
 #error "build with -DGGX_METHOD=<method id>"
 #endif
 #include "ggx_bulk_params.h"
-#ifndef GGX_WRITE_MASK
-#define GGX_WRITE_MASK 0
-#endif
-#if GGX_WRITE_MASK < 0 || GGX_WRITE_MASK >= (1 << GGX_FIELD_COUNT)
-#error "GGX_WRITE_MASK: bits 1 << GGX_FIELD_* of ggx_contract.h only"
-#endif
-#ifndef GGX_EVAL
-#define GGX_EVAL 0
-#endif
-#define GGX_WRITE_M ((GGX_WRITE_MASK >> GGX_FIELD_M) & 1)
-#define GGX_WRITE_O ((GGX_WRITE_MASK >> GGX_FIELD_O) & 1)
-#define GGX_WRITE_PDF_M ((GGX_WRITE_MASK >> GGX_FIELD_PDF_M) & 1)
-#define GGX_WRITE_PDF_O ((GGX_WRITE_MASK >> GGX_FIELD_PDF_O) & 1)
-#define GGX_WRITE_WEIGHT ((GGX_WRITE_MASK >> GGX_FIELD_WEIGHT) & 1)
-#define GGX_WRITE_U ((GGX_WRITE_MASK >> GGX_FIELD_U) & 1)
 
 // Sample j (< count) into the requested fields.
 GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GGX_PARAM_ARGS,
@@ -42,10 +27,8 @@ GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GG
                                 __global float* GGX_RESTRICT pdf_m_out, __global float* GGX_RESTRICT pdf_o_out,
                                 __global float* GGX_RESTRICT weight_out, __global float* GGX_RESTRICT u_out)
 {
-    ggx_params p = ggx_load_params(j, stride, GGX_PARAM_VALUES);
-    float u1, u2, u3;
-    ggx_bulk_uniforms(seed, first, j, p, &u1, &u2, &u3);
-    ggx_sample s = ggx_bulk_sample_of(p, u1, u2, u3);
+    ggx_params p = ggx_bulk_uniforms(seed, first, j, ggx_load_params(j, stride, GGX_PARAM_VALUES));
+    ggx_sample s = ggx_bulk_sample_of(p);
 #if GGX_WRITE_M
     ggx_store3(m_out, j, stride, s.m);
 #endif
@@ -62,10 +45,10 @@ GGX_INLINE void ggx_sample_into(ulong seed, ulong first, uint j, uint stride, GG
     weight_out[j] = s.weight;
 #endif
 #if GGX_WRITE_U
-    u_out[j] = u1;  // what the sample used, the caller's values as given
-    u_out[j + stride] = u2;
+    u_out[j] = p.u1;  // what the sample used, the caller's values as given
+    u_out[j + stride] = p.u2;
 #if GGX_DIELECTRIC
-    u_out[j + 2u * stride] = u3;
+    u_out[j + 2u * stride] = p.u3;
 #endif
 #endif
 }

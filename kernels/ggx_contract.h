@@ -1,8 +1,8 @@
 // ggx_contract.h - what the C++ runtime and the OpenCL C kernels must agree
 // on, as plain macros that both languages read: the list of methods, the field
 // ids and their write-mask bits, the sequence ids of the uniforms, the
-// argument positions of every bulk kernel, and the samples per work-item of
-// the fused estimator.  The runtime makes its method enum from the list and
+// argument positions of every bulk kernel and the bulk shader's push
+// constants, and the samples per work-item of the fused estimator.  The runtime makes its method enum from the list and
 // checks its other enums against the ids at compile time
 // (lib/src/device_contract.hpp: a mismatch does not build); the kernels
 // include it and refuse an unknown method id or write mask.
@@ -166,6 +166,22 @@
 #define GGX_PDF_ARG_PDFS (GGX_PDF_ARG_DIRECTIONS + 1)
 #define GGX_PDF_ARG_DIRECTIONS_OFFSET (GGX_PDF_ARG_DIRECTIONS + 2)
 #define GGX_PDF_ARG_PDFS_OFFSET (GGX_PDF_ARG_DIRECTIONS + 3)
+
+// The bulk sampling shader's push constants (kernels/ggx_bulk_shader.h), in
+// order, for the shader's block and the runtime's struct alike (`uint` a
+// 32-bit unsigned integer): seed and first as low and high words, count,
+// plane stride, invocations per row of a 2-D dispatch, the uniform
+// parameters, each output field's offset in floats in the output buffer
+// (GGX_FIELD_* order) and each per-sample input's in the input buffer.  26
+// words, 104 of the 128 bytes every Vulkan device has.
+#define GGX_BULK_REQUEST_MEMBERS                                                                   \
+    uint seed_lo; uint seed_hi; uint first_lo; uint first_hi;                                       \
+    uint count; uint stride; uint row_width;                                                        \
+    float view_x; float view_y; float view_z; float alpha_x; float alpha_y;                         \
+    float normal_x; float normal_y; float normal_z; float eta;                                      \
+    uint m_at; uint o_at; uint pdf_m_at; uint pdf_o_at; uint weight_at; uint u_at;                  \
+    uint view_at; uint alpha_at; uint normal_at; uint uniforms_at;
+#define GGX_BULK_REQUEST_WORDS 26
 
 // ggx_histogram_count: bin indices, their count, indices per work-item, counts.
 #define GGX_COUNT_ARG_BINS 0

@@ -34,4 +34,9 @@ BuildError::BuildError(int code, const std::string& device, const std::string& o
 {
 }
 
+BuildError::BuildError(const std::string& message, const std::string& log)
+    : ClError(-11 /* CL_BUILD_PROGRAM_FAILURE */, message + "\nshaderc log:\n" + log), log_(log)
+{
+}
+
 } // namespace ggxcl

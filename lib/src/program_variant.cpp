@@ -70,19 +70,43 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
     return with_kind_fixed(v);
 }
 
-std::string variant_defines(const ProgramVariant& v)
+ProgramVariant variant_of_host_inputs(ProgramKind kind, const SampleParams& params, unsigned write_mask,
+                                      const PerSampleInputs& inputs)
 {
-    auto define = [](const char* name, long value) { return std::string(" -D") + name + "=" + std::to_string(value); };
-    std::string options = "-DGGX_METHOD=" + std::to_string(method_id(v.method));
-    options += define("GGX_WRITE_MASK", long(v.write_mask)) + define("GGX_SEQUENCE", sequence_id(v.sequence));
-#define GGX_PROGRAM_FLAG_DEFINE(field, macro) options += define(macro, v.field ? 1 : 0);
+    ProgramVariant v = variant_of(kind, params, write_mask);
+    v.per_sample_view = !inputs.views.empty();
+    v.per_sample_alpha = !inputs.alphas.empty();
+    v.per_sample_normal = !inputs.normals.empty();
+    v.per_sample_uniforms = !inputs.uniforms.empty();
+    v.isotropic = method_traits(params.method).isotropic_only || params.world_space || all_isotropic(inputs, params);
+    v.below_horizon = !all_views_above_horizon(inputs, params);
+    v.normal_is_z = v.normal_is_z && !v.per_sample_normal;
+    return with_kind_fixed(v);
+}
+
+std::vector<std::pair<std::string, long>> variant_define_list(const ProgramVariant& v)
+{
+    std::vector<std::pair<std::string, long>> list = {{"GGX_METHOD", method_id(v.method)},
+                                                      {"GGX_WRITE_MASK", long(v.write_mask)},
+                                                      {"GGX_SEQUENCE", sequence_id(v.sequence)}};
+#define GGX_PROGRAM_FLAG_DEFINE(field, macro) list.emplace_back(macro, v.field ? 1 : 0);
     GGX_PROGRAM_FLAGS(GGX_PROGRAM_FLAG_DEFINE)
 #undef GGX_PROGRAM_FLAG_DEFINE
+    if (v.kind == ProgramKind::histogram) {
+        list.emplace_back("GGX_BINS_Z", v.bins.bins_z);
+        list.emplace_back("GGX_BINS_PHI", v.bins.bins_phi);
+        list.emplace_back("GGX_BIN_M", v.bins.of_m ? 1 : 0);
+    }
+    return list;
+}
+
+std::string variant_defines(const ProgramVariant& v)
+{
+    std::string options;
+    for (const auto& [name, value] : variant_define_list(v))
+        options += (options.empty() ? "-D" : " -D") + name + "=" + std::to_string(value);
     if (v.method == Method::user && v.user)
         options += user_sampler_options(*v.user);
-    if (v.kind == ProgramKind::histogram)
-        options += define("GGX_BINS_Z", v.bins.bins_z) + define("GGX_BINS_PHI", v.bins.bins_phi) +
-                   define("GGX_BIN_M", v.bins.of_m ? 1 : 0);
     return options;
 }
 

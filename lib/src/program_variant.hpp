@@ -7,6 +7,8 @@
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ggxcl/fields.hpp"
 #include "ggxcl/method.hpp"
@@ -65,6 +67,15 @@ bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
 // n = z).  The bulk program's pdf kernels evaluate the BSDF instead with eval = true (set by the caller).
 ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
                           const DeviceInputs& inputs = {});
+
+// The same for per-sample inputs in host memory (the Vulkan back end): what the caller's arrays hold
+// decides the per-sample flags and the promises.
+ProgramVariant variant_of_host_inputs(ProgramKind kind, const SampleParams& params, unsigned write_mask,
+                                      const PerSampleInputs& inputs);
+
+// The macros a variant defines, NAME and value, the same on every device and in every language
+// (variant_defines writes them as -D options; shaders get them from shaderc).
+std::vector<std::pair<std::string, long>> variant_define_list(const ProgramVariant& variant);
 
 // The -D options of a variant, the same on every device (the precision mode's options and the
 // device's quirks are added by the caller: precision_options, device_quirk_options).

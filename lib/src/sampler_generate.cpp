@@ -12,6 +12,7 @@
 #include "cl_call.hpp"
 #include "device_contract.hpp"
 #include "kernel_launch.hpp"
+#include "planar_inputs.hpp"
 #include "queue_waits.hpp"
 #include "device_faults.hpp"
 #include "validated_params.hpp"
@@ -29,46 +30,6 @@ constexpr std::uint64_t smallest_chunk = 1024;  // samples; out of memory below 
 std::size_t bytes(std::uint64_t floats)
 {
     return static_cast<std::size_t>(floats * sizeof(float));
-}
-
-// Entries [start, start+n) of `values` as planes of stride `capacity`, unit length.
-std::vector<float> planar_units(const std::vector<Vec3>& values, std::uint64_t start, std::uint64_t n,
-                                std::uint64_t capacity)
-{
-    std::vector<float> planes(3 * capacity, 0.0f);
-    for (std::uint64_t j = 0; j < n; ++j) {
-        Vec3 v = unit_vector(values[start + j]);
-        planes[j] = v.x;
-        planes[capacity + j] = v.y;
-        planes[2 * capacity + j] = v.z;
-    }
-    return planes;
-}
-
-// Pairs (alphas, uniforms) [start, start+n) as two planes of stride `capacity`;
-// the unused rest holds 0.5, valid for both.
-std::vector<float> planar_pairs(const std::vector<std::array<float, 2>>& values, std::uint64_t start,
-                                std::uint64_t n, std::uint64_t capacity)
-{
-    std::vector<float> planes(2 * capacity, 0.5f);
-    for (std::uint64_t j = 0; j < n; ++j) {
-        planes[j] = values[start + j][0];
-        planes[capacity + j] = values[start + j][1];
-    }
-    return planes;
-}
-
-// The caller's uniforms [start, start+n): u1 and u2 as planar_pairs, then for a dielectric the
-// plane of u3 (0.5 in the unused rest).
-std::vector<float> planar_uniforms(const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
-                                   std::uint64_t capacity)
-{
-    std::vector<float> planes = planar_pairs(in.uniforms, start, n, capacity);
-    if (in.lobe_uniforms.empty())
-        return planes;
-    planes.resize(3 * capacity, 0.5f);
-    std::copy_n(in.lobe_uniforms.begin() + std::ptrdiff_t(start), n, planes.begin() + std::ptrdiff_t(2 * capacity));
-    return planes;
 }
 
 // Device buffers for the per-sample inputs of one chunk, refilled per chunk.
@@ -92,10 +53,10 @@ struct ChunkInputs {
     void upload(cl::CommandQueue& queue, const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
                 std::uint64_t capacity)
     {
-        if (!in.views.empty()) write(queue, buffers.view, planar_units(in.views, start, n, capacity));
-        if (!in.alphas.empty()) write(queue, buffers.alpha, planar_pairs(in.alphas, start, n, capacity));
-        if (!in.normals.empty()) write(queue, buffers.normal, planar_units(in.normals, start, n, capacity));
-        if (!in.uniforms.empty()) write(queue, buffers.uniforms, planar_uniforms(in, start, n, capacity));
+        if (!in.views.empty()) write(queue, buffers.view, detail::planar_units(in.views, start, n, capacity));
+        if (!in.alphas.empty()) write(queue, buffers.alpha, detail::planar_pairs(in.alphas, start, n, capacity));
+        if (!in.normals.empty()) write(queue, buffers.normal, detail::planar_units(in.normals, start, n, capacity));
+        if (!in.uniforms.empty()) write(queue, buffers.uniforms, detail::planar_uniforms(in, start, n, capacity));
     }
 
     static void write(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float>& data)
@@ -402,7 +363,7 @@ std::vector<float> Sampler::directions_on_host(const detail::ProgramVariant& var
             while (start < count) {  // start: the first direction whose pdf is not read back
                 std::uint64_t n = std::min(capacity, count - start);
                 inputs.upload(queue_, per_sample, start, n, capacity);
-                ChunkInputs::write(queue_, dirs, planar_units(directions, start, n, capacity));
+                ChunkInputs::write(queue_, dirs, detail::planar_units(directions, start, n, capacity));
                 launch_directions(queue_, chunk_variant, valid, std::uint32_t(n), dirs, pdfs,
                                   std::uint32_t(capacity), inputs.buffers, nullptr);
                 detail::read_and_wait(queue_, pdfs, 0, bytes(n), result.data() + start);

@@ -11,8 +11,9 @@
 //    (glslangValidator, the front ends shaderc uses; tests/vulkan runs them on a Vulkan device);
 //  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check,
 //    and a header with a C cast fails the GLSL check.
-// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h, ggx_histogram_bin.h) are OpenCL C alone;
-// ggx_platform_shader.h is GLSL and HLSL alone.
+// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h, ggx_histogram_bin.h) are OpenCL C alone,
+// ggx_bulk_sample.h needs a kernel's GGX_METHOD (the bulk kernels and shaders build it);
+// ggx_platform_shader.h and ggx_bulk_shader.h are GLSL and HLSL alone.
 // ggx_user_sampler.h declares what a user sampler's file defines after it: it compiles
 // with the test samplers of tests/user_samplers (one of whole samples, one of m alone) and the
 // worked example of examples/user_sampler after it.
@@ -38,9 +39,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h", "ggx_histogram_bin.h"};
-// The shading languages' part of ggx_platform.h, which includes it there.
-const std::vector<std::string> shader_only = {"ggx_platform_shader.h"};
+// The kernels' own headers: OpenCL C alone, or built with a kernel's switches (GGX_METHOD).
+const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h", "ggx_bulk_sample.h",
+                                              "ggx_histogram_bin.h"};
+// The shading languages' part of ggx_platform.h, which includes it there, and the bulk shaders' body.
+const std::vector<std::string> shader_only = {"ggx_platform_shader.h", "ggx_bulk_shader.h"};
 
 struct Result {
     int status;

@@ -25,6 +25,7 @@
 #include "distribution_check.hpp"
 #include "error_bounds.hpp"
 #include "ggx_sobol.h"
+#include "sample_agreement.hpp"
 #include "shader_samples.hpp"
 #include "test_paths.hpp"
 
@@ -34,46 +35,7 @@ using ggxvk::ShaderLanguage;
 
 constexpr std::uint64_t agreement_samples = 1 << 16;
 
-double angle_between(const ggxcl::Vec3& a, const ggxcl::Vec3& b)
-{
-    const double cx = double(a.y) * b.z - double(a.z) * b.y, cy = double(a.z) * b.x - double(a.x) * b.z,
-                 cz = double(a.x) * b.y - double(a.y) * b.x;
-    return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z);
-}
-
-double quantile(std::vector<double> values, double q)
-{
-    const std::size_t k = std::size_t(q * double(values.size() - 1));
-    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
-    return values[k];
-}
-
-// The shader's samples against OpenCL's, sample by sample, and the shader's
-// pdf function against OpenCL's at the shader's directions.
-struct Agreement {
-    double angle_99 = 0, angle_max = 0, pdf_99 = 0, recomputed_pdf_99 = 0;
-    std::size_t non_finite = 0;
-};
-
-Agreement agreement(const ggxvk::ShaderSamples& shader, const ggxcl::SampleSet& opencl,
-                    const std::vector<float>& opencl_pdf)
-{
-    std::vector<double> angles, pdfs, recomputed;
-    Agreement a;
-    for (std::size_t j = 0; j < opencl.count; ++j) {
-        for (float v : {shader.set.pdf_o[j], shader.set.weight[j], shader.pdf[j], shader.set.o[j]})
-            a.non_finite += std::isfinite(v) ? 0 : 1;
-        angles.push_back(angle_between(shader.set.m_at(j), opencl.m_at(j)));
-        angles.push_back(angle_between(shader.set.o_at(j), opencl.o_at(j)));
-        pdfs.push_back(ggxtest::relative_error(shader.set.pdf_o[j], opencl.pdf_o[j]));
-        recomputed.push_back(ggxtest::relative_error(shader.pdf[j], opencl_pdf[j]));
-    }
-    a.angle_99 = quantile(angles, 0.99);
-    a.angle_max = *std::max_element(angles.begin(), angles.end());
-    a.pdf_99 = quantile(pdfs, 0.99);
-    a.recomputed_pdf_99 = quantile(recomputed, 0.99);
-    return a;
-}
+using ggxvk::Agreement;
 
 Agreement agreement(const ggxcl::SampleParams& params, const std::vector<float>& shader_uniforms,
                     const std::vector<float>& opencl_uniforms, ShaderLanguage language)
@@ -82,8 +44,8 @@ Agreement agreement(const ggxcl::SampleParams& params, const std::vector<float>&
     std::vector<ggxcl::Vec3> directions;
     for (std::size_t j = 0; j < shader.set.count; ++j)
         directions.push_back(shader.set.o_at(j));
-    return agreement(shader, ggxvk::opencl_samples(params, opencl_uniforms),
-                     ggxtest::sampler().pdf(params, directions));
+    return ggxvk::sample_agreement(shader.set, ggxvk::opencl_samples(params, opencl_uniforms), shader.pdf,
+                                   ggxtest::sampler().pdf(params, directions));
 }
 
 // The largest of each measure over the requests checked so far, for the report.
@@ -91,8 +53,7 @@ Agreement worst;
 
 void report_worst(const char* what)
 {
-    MESSAGE(std::string(what) << ": largest angle 99% " << worst.angle_99 << " rad, max " << worst.angle_max
-                 << "; pdf_o relative 99% " << worst.pdf_99 << "; the pdf function's 99% " << worst.recomputed_pdf_99);
+    MESSAGE(std::string(what) << ": largest " << ggxvk::describe(worst));
     worst = {};
 }
 
@@ -100,18 +61,9 @@ void check_agreement(ShaderLanguage language, const ggxcl::SampleParams& params,
 {
     const std::vector<float> u = ggxvk::random_uniforms(7, agreement_samples);
     const Agreement a = agreement(params, u, u, language);
-    INFO(std::string(ggxvk::language_name(language)), " ", ggxcl::method_name(params.method), " ", label);
-    INFO("angle 99% ", a.angle_99, ", max ", a.angle_max, "; pdf_o relative 99% ", a.pdf_99,
-         "; the pdf function's 99% ", a.recomputed_pdf_99);
-    CHECK(a.non_finite == 0);
-    CHECK(a.angle_99 <= 1e-5);
-    CHECK(a.angle_max <= 2e-3);
-    CHECK(a.pdf_99 <= 1e-4);
-    CHECK(a.recomputed_pdf_99 <= 1e-4);
-    worst.angle_99 = std::max(worst.angle_99, a.angle_99);
-    worst.angle_max = std::max(worst.angle_max, a.angle_max);
-    worst.pdf_99 = std::max(worst.pdf_99, a.pdf_99);
-    worst.recomputed_pdf_99 = std::max(worst.recomputed_pdf_99, a.recomputed_pdf_99);
+    ggxvk::check_agreement_bounds(a, std::string(ggxvk::language_name(language)) + " " +
+                                         std::string(ggxcl::method_name(params.method)) + " " + label);
+    worst = ggxvk::worst_of(worst, a);
 }
 
 struct Request {

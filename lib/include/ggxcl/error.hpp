@@ -59,13 +59,15 @@ public:
     DeviceLost(const std::string& call, int code);
 };
 
-// clBuildProgram failed: the message carries the CL error name, the build
+// clBuildProgram failed, or shaderc (Vulkan; code() is then CL_BUILD_PROGRAM_FAILURE): the message carries the CL error name, the build
 // options and the device's build log (after `summary`, when given: for a
 // user sampler, the first error with its file and line).
 class BuildError : public ClError {
 public:
     BuildError(int code, const std::string& device, const std::string& options, const std::string& log,
                const std::string& summary = "");
+    // A shader that did not compile (Vulkan): `message` names the file and line first, then what was built.
+    BuildError(const std::string& message, const std::string& log);
     const std::string& log() const { return log_; }
 
 private:

@@ -12,3 +12,4 @@
 #include "ggxcl/user_kernels.hpp"
 #include "ggxcl/user_sampler.hpp"
 #include "ggxcl/version.hpp"
+#include "ggxcl/vulkan.hpp"

@@ -1,0 +1,106 @@
+// ggx_bulk_shader.h - the bulk sampling shader's body, one text for GLSL
+// (ggx_bulk.comp) and HLSL (ggx_bulk.hlsl): per invocation what ggx_bulk.cl's
+// ggx_sample_bulk does per work-item, with the same build switches
+// (ggx_bulk_sample.h) and the same bits of every sample up to contraction.
+// The including shader declares first `request` (push constants: the
+// members of ggx_contract.h's GGX_BULK_REQUEST_MEMBERS), `inputs` (the per-sample planes) and
+// `outputs` (the requested fields' planes), storage buffers of float.
+// Planes are as in OpenCL: component c of sample j at [at + c * stride + j],
+// `at` each buffer's offset in floats.  The dispatch is 2-D where a device
+// caps work-groups per dimension: invocation (x, y) is sample
+// y * row_width + x.
+#ifndef GGX_BULK_SHADER_H
+#define GGX_BULK_SHADER_H
+
+#include "ggx_bulk_sample.h"
+
+ggx_vec3 ggx_input3(ggx_uint at, ggx_uint j)
+{
+    const ggx_uint stride = request.stride;
+    return ggx_vec3_make(inputs[at + j], inputs[at + stride + j], inputs[at + 2u * stride + j]);
+}
+
+void ggx_output3(ggx_uint at, ggx_uint j, ggx_vec3 v)
+{
+    const ggx_uint stride = request.stride;
+    outputs[at + j] = v.x;
+    outputs[at + stride + j] = v.y;
+    outputs[at + 2u * stride + j] = v.z;
+}
+
+// The view, roughness, normal and relative index of sample j, and its
+// caller's uniforms with GGX_PER_SAMPLE_UNIFORMS (ggx_load_params in OpenCL C).
+ggx_params ggx_shader_params(ggx_uint j)
+{
+    ggx_params p;
+#if GGX_PER_SAMPLE_VIEW
+    p.view = ggx_input3(request.view_at, j);
+#else
+    p.view = ggx_vec3_make(request.view_x, request.view_y, request.view_z);
+#endif
+#if GGX_PER_SAMPLE_ALPHA
+    p.ax = inputs[request.alpha_at + j];
+    p.ay = GGX_ISOTROPIC != 0 ? p.ax : inputs[request.alpha_at + request.stride + j];
+#else
+    p.ax = request.alpha_x;
+    p.ay = GGX_ISOTROPIC != 0 ? request.alpha_x : request.alpha_y;
+#endif
+#if GGX_PER_SAMPLE_NORMAL
+    p.normal = ggx_input3(request.normal_at, j);
+#elif GGX_NORMAL_IS_Z
+    p.normal = ggx_vec3_make(0.0f, 0.0f, 1.0f);
+#else
+    p.normal = ggx_vec3_make(request.normal_x, request.normal_y, request.normal_z);
+#endif
+#if GGX_PER_SAMPLE_UNIFORMS
+    p.u1 = inputs[request.uniforms_at + j];
+    p.u2 = inputs[request.uniforms_at + request.stride + j];
+    p.u3 = GGX_DIELECTRIC != 0 ? inputs[request.uniforms_at + 2u * request.stride + j] : 0.0f;
+#else
+    p.u1 = 0.0f;
+    p.u2 = 0.0f;
+    p.u3 = 0.0f;
+#endif
+    p.eta = request.eta;
+    return p;
+}
+
+ggx_ulong ggx_words_to_ulong(ggx_uint lo, ggx_uint hi)
+{
+    return (ggx_to_ulong(hi) << 32) | ggx_to_ulong(lo);
+}
+
+// Sample `j` of the request (nothing past its count) into the requested fields.
+void ggx_shader_sample_bulk(ggx_uint j)
+{
+    if (j >= request.count)
+        return;
+    const ggx_ulong seed = ggx_words_to_ulong(request.seed_lo, request.seed_hi);
+    const ggx_ulong first = ggx_words_to_ulong(request.first_lo, request.first_hi);
+    const ggx_params p = ggx_bulk_uniforms(seed, first, j, ggx_shader_params(j));
+    const ggx_sample s = ggx_bulk_sample_of(p);
+#if GGX_WRITE_M
+    ggx_output3(request.m_at, j, s.m);
+#endif
+#if GGX_WRITE_O
+    ggx_output3(request.o_at, j, s.o);
+#endif
+#if GGX_WRITE_PDF_M
+    outputs[request.pdf_m_at + j] = s.pdf_m;
+#endif
+#if GGX_WRITE_PDF_O
+    outputs[request.pdf_o_at + j] = s.pdf_o;
+#endif
+#if GGX_WRITE_WEIGHT
+    outputs[request.weight_at + j] = s.weight;
+#endif
+#if GGX_WRITE_U
+    outputs[request.u_at + j] = p.u1;  // what the sample used, the caller's values as given
+    outputs[request.u_at + request.stride + j] = p.u2;
+#if GGX_DIELECTRIC
+    outputs[request.u_at + 2u * request.stride + j] = p.u3;
+#endif
+#endif
+}
+
+#endif

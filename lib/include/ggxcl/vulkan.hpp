@@ -1,0 +1,95 @@
+// vulkan.hpp - ggxcl on Vulkan: the requests of Sampler run as compute
+// shaders that shaderc compiles at run time from the same device headers, in
+// GLSL or HLSL, on any Vulkan 1.1 device with 64-bit integers in shaders
+// (desktop GPUs, Mesa's lavapipe on the CPU, MoltenVK).  The Vulkan loader
+// is opened at run time: a machine without it gets a DeviceError saying
+// what to install, not a program that cannot start.
+//
+//   ggxcl::VulkanSampler vk;                         // GGXCL_VULKAN_DEVICE or the first device
+//   ggxcl::SampleSet s = vk.generate(params, {1, 0, 1 << 20}, {ggxcl::Field::o, ggxcl::Field::pdf_o});
+//
+// The same request and range give the same uniforms as Sampler, and samples
+// that agree with OpenCL's within float rounding (docs/SHADERS.md).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ggxcl/fields.hpp"
+#include "ggxcl/params.hpp"
+#include "ggxcl/sampler.hpp"
+
+namespace ggxcl {
+
+enum class ShaderLanguage { glsl, hlsl };
+const char* shader_language_name(ShaderLanguage language);  // "glsl", "hlsl"
+// "glsl" or "hlsl"; InvalidArgument("shader language", ...) otherwise.
+ShaderLanguage parse_shader_language(const std::string& name);
+
+struct VulkanDeviceInfo {
+    std::size_t index = 0;  // position in list_vulkan_devices(): a valid selector
+    std::string name;       // e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string type;       // "GPU", "integrated GPU", "CPU", "virtual GPU" or "other"
+    std::string api_version, driver;  // "1.3.238"; the driver's name and version
+    std::uint32_t max_storage_buffer_range = 0;  // bytes one storage buffer binding may span
+    std::uint32_t max_work_groups_x = 0, max_work_groups_y = 0;  // work-groups per dispatch dimension
+    std::uint32_t max_push_constants = 0;  // bytes
+    std::uint32_t max_shared_memory = 0;   // bytes of shared memory per work-group
+    bool int64 = false;  // shaderInt64: without it the samplers cannot run (Philox, Sobol)
+    // "vulkan:<name>", how the CLI names it beside OpenCL devices.
+    std::string label() const { return "vulkan:" + name; }
+};
+
+// Whether this build of ggxcl has the Vulkan back end (CMake found Vulkan-Hpp and shaderc).
+bool vulkan_built();
+
+// Every Vulkan device.  DeviceError when the build has no Vulkan, the loader
+// (libvulkan.so.1) is missing or no driver offers a device, saying what to install.
+std::vector<VulkanDeviceInfo> list_vulkan_devices();
+
+// The device a selector names: an index into list_vulkan_devices() or a
+// case-insensitive part of its name; empty means GGXCL_VULKAN_DEVICE, else
+// the first device.  NoMatchingDevice lists what exists when nothing matches.
+VulkanDeviceInfo select_vulkan_device(const std::string& selector = "");
+
+// Samples on a Vulkan device, into host memory, chunk by chunk.  Shaders
+// are built per request variant (the switches of the OpenCL programs) and
+// cached on disk as SPIR-V beside the OpenCL binaries (GGXCL_PROGRAM_CACHE).
+// A shader that does not compile is a BuildError naming its file and line.
+// Not yet on Vulkan: user samplers (InvalidArgument), the caller's buffers.
+// One VulkanSampler is used by one thread at a time.
+class VulkanSampler {
+public:
+    explicit VulkanSampler(const std::string& selector = "", ShaderLanguage language = ShaderLanguage::glsl);
+    ~VulkanSampler();
+    VulkanSampler(VulkanSampler&&) noexcept;
+    VulkanSampler& operator=(VulkanSampler&&) noexcept;
+
+    const VulkanDeviceInfo& device() const;
+    std::string device_name() const;  // "vulkan:<name>"
+    ShaderLanguage language() const;
+
+    // Samples per dispatch (default 2^20), lowered where the device's
+    // storage buffers are smaller; results do not depend on it.
+    void set_chunk_size(std::uint64_t samples);
+    std::uint64_t chunk_size() const;
+
+    SampleSet generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                       const PerSampleInputs& per_sample = {});
+    using ChunkSink = std::function<void(const SampleSet& chunk, std::uint64_t offset)>;
+    void generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                         const ChunkSink& sink, const PerSampleInputs& per_sample = {});
+
+    std::size_t shaders_built() const;     // pipelines made so far
+    std::size_t shaders_from_disk() const;  // of those, SPIR-V read from the cache
+
+    struct State;  // the Vulkan objects (lib/src/vulkan/)
+
+private:
+    std::unique_ptr<State> state_;
+};
+
+} // namespace ggxcl

@@ -1,0 +1,42 @@
+// vulkan_absent.cpp - the Vulkan API of a build without the back end
+// (Vulkan-Hpp or shaderc not found): every entry point says so.
+#include "ggxcl/error.hpp"
+#include "ggxcl/vulkan.hpp"
+
+namespace ggxcl {
+
+namespace {
+[[noreturn]] void not_built()
+{
+    throw DeviceError("this ggxcl was built without Vulkan; install libvulkan-dev and libshaderc-dev "
+                      "(with glslang-dev) and build it again");
+}
+} // namespace
+
+struct VulkanSampler::State {};
+
+bool vulkan_built() { return false; }
+std::vector<VulkanDeviceInfo> list_vulkan_devices() { not_built(); }
+VulkanDeviceInfo select_vulkan_device(const std::string&) { not_built(); }
+VulkanSampler::VulkanSampler(const std::string&, ShaderLanguage) { not_built(); }
+VulkanSampler::~VulkanSampler() = default;
+VulkanSampler::VulkanSampler(VulkanSampler&&) noexcept = default;
+VulkanSampler& VulkanSampler::operator=(VulkanSampler&&) noexcept = default;
+const VulkanDeviceInfo& VulkanSampler::device() const { not_built(); }
+std::string VulkanSampler::device_name() const { not_built(); }
+ShaderLanguage VulkanSampler::language() const { not_built(); }
+void VulkanSampler::set_chunk_size(std::uint64_t) { not_built(); }
+std::uint64_t VulkanSampler::chunk_size() const { not_built(); }
+SampleSet VulkanSampler::generate(const SampleParams&, const SampleRange&, FieldSet, const PerSampleInputs&)
+{
+    not_built();
+}
+void VulkanSampler::generate_chunks(const SampleParams&, const SampleRange&, FieldSet, const ChunkSink&,
+                                    const PerSampleInputs&)
+{
+    not_built();
+}
+std::size_t VulkanSampler::shaders_built() const { not_built(); }
+std::size_t VulkanSampler::shaders_from_disk() const { not_built(); }
+
+} // namespace ggxcl

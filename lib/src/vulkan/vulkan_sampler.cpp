@@ -1,0 +1,214 @@
+// vulkan_sampler.cpp - VulkanSampler: a request validated as Sampler's are
+// (detail::validated_request), its variant (variant_of_host_inputs) built as
+// a bulk shader (kernels/ggx_bulk.comp or .hlsl), and the range drawn chunk
+// by chunk through two mapped buffers: the per-sample inputs' planes and the
+// requested fields' planes.
+#include <algorithm>
+#include <cstring>
+#include <map>
+
+#include "device_contract.hpp"
+#include "planar_inputs.hpp"
+#include "program_variant.hpp"
+#include "spirv_compile.hpp"
+#include "validated_params.hpp"
+#include "vulkan_compute.hpp"
+#include "ggxcl/error.hpp"
+#include "ggxcl/vulkan.hpp"
+
+namespace ggxcl {
+
+namespace {
+
+constexpr std::uint32_t group_size = 64;  // every device runs 128 invocations per work-group
+
+// The push constants of the bulk shader, from the list both sides read.
+struct BulkRequest {
+    using uint = std::uint32_t;
+    GGX_BULK_REQUEST_MEMBERS
+};
+static_assert(sizeof(BulkRequest) == GGX_BULK_REQUEST_WORDS * 4, "ggx_contract.h: the push constants are 32-bit words");
+
+std::uint32_t low_word(std::uint64_t v) { return std::uint32_t(v); }
+std::uint32_t high_word(std::uint64_t v) { return std::uint32_t(v >> 32); }
+
+// Floats per sample of the requested fields, and of the per-sample inputs.
+std::uint64_t output_floats(FieldSet fields, bool dielectric)
+{
+    std::uint64_t n = 0;
+    for (Field f : all_fields)
+        if (fields.has(f))
+            n += std::uint64_t(field_columns(f, dielectric));
+    return n;
+}
+
+std::uint64_t input_floats(const PerSampleInputs& in)
+{
+    return (in.views.empty() ? 0 : 3) + (in.alphas.empty() ? 0 : 2) + (in.normals.empty() ? 0 : 3) +
+           (in.uniforms.empty() ? 0 : in.lobe_uniforms.empty() ? 2 : 3);
+}
+
+// vk::SystemError (a std::system_error) as ggxcl's errors.
+template <typename Call>
+auto translate_vulkan_errors(const std::string& device, Call&& call)
+{
+    try {
+        return call();
+    } catch (const vk::DeviceLostError& e) {
+        throw DeviceError("the Vulkan device '" + device + "' was lost (" + e.what() +
+                          "); the results of this call are incomplete");
+    } catch (const vk::SystemError& e) {
+        throw DeviceError("a Vulkan call on '" + device + "' failed: " + e.what());
+    }
+}
+
+} // namespace
+
+struct VulkanSampler::State {
+    std::shared_ptr<detail::VulkanInstance> vulkan;
+    std::unique_ptr<detail::VulkanCompute> compute;
+    ShaderLanguage language = ShaderLanguage::glsl;
+    std::uint64_t chunk_size = 1u << 20;
+    std::map<std::string, vk::raii::Pipeline> pipelines;  // by variant key
+    std::size_t from_disk = 0;
+
+    const vk::raii::Pipeline& pipeline(const detail::ProgramVariant& variant)
+    {
+        const std::string key = detail::variant_key(variant);
+        auto found = pipelines.find(key);
+        if (found != pipelines.end())
+            return found->second;
+        detail::ShaderDefines defines = detail::variant_define_list(variant);
+        defines.emplace_back("GGX_GROUP_SIZE", long(group_size));
+        const char* file = language == ShaderLanguage::hlsl ? "ggx_bulk.hlsl" : "ggx_bulk.comp";
+        const detail::CompiledShader shader = detail::compile_shader(language, file, defines);
+        from_disk += shader.from_disk ? 1 : 0;
+        return pipelines.emplace(key, compute->pipeline(shader.spirv)).first->second;
+    }
+
+    // Samples per chunk: the chunk size, within one storage buffer of the device.
+    std::uint64_t capacity(std::uint64_t floats_per_sample) const
+    {
+        const std::uint64_t range = compute->info().max_storage_buffer_range / sizeof(float);
+        return std::max<std::uint64_t>(1, std::min(chunk_size, range / std::max<std::uint64_t>(floats_per_sample, 1)));
+    }
+};
+
+VulkanSampler::VulkanSampler(const std::string& selector, ShaderLanguage language) : state_(std::make_unique<State>())
+{
+    const VulkanDeviceInfo info = select_vulkan_device(selector);
+    state_->vulkan = detail::vulkan_instance();
+    state_->language = language;
+    state_->compute = translate_vulkan_errors(info.name, [&] {
+        return std::make_unique<detail::VulkanCompute>(state_->vulkan, info);
+    });
+}
+
+VulkanSampler::~VulkanSampler() = default;
+VulkanSampler::VulkanSampler(VulkanSampler&&) noexcept = default;
+VulkanSampler& VulkanSampler::operator=(VulkanSampler&&) noexcept = default;
+
+const VulkanDeviceInfo& VulkanSampler::device() const { return state_->compute->info(); }
+std::string VulkanSampler::device_name() const { return device().label(); }
+ShaderLanguage VulkanSampler::language() const { return state_->language; }
+std::size_t VulkanSampler::shaders_built() const { return state_->pipelines.size(); }
+std::size_t VulkanSampler::shaders_from_disk() const { return state_->from_disk; }
+std::uint64_t VulkanSampler::chunk_size() const { return state_->chunk_size; }
+
+void VulkanSampler::set_chunk_size(std::uint64_t samples)
+{
+    if (samples < 1 || samples > (1ull << 31))
+        throw InvalidArgument("chunk size", std::to_string(samples), "1 .. 2^31 samples");
+    state_->chunk_size = samples;
+}
+
+SampleSet VulkanSampler::generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                                  const PerSampleInputs& per_sample)
+{
+    SampleSet all;
+    all.count = range.count;
+    const bool dielectric = params.eta != 0.0f;
+    for (Field f : all_fields)
+        if (fields.has(f))
+            all.column_source(f).resize(std::size_t(field_columns(f, dielectric) * range.count));
+    generate_chunks(params, range, fields, [&](const SampleSet& chunk, std::uint64_t offset) {
+        for (Field f : all_fields) {
+            if (!fields.has(f))
+                continue;
+            for (int c = 0; c < field_columns(f, dielectric); ++c)
+                std::copy_n(chunk.column_source(f).begin() + std::ptrdiff_t(c * chunk.count), chunk.count,
+                            all.column_source(f).begin() + std::ptrdiff_t(c * range.count + offset));
+        }
+    }, per_sample);
+    return all;
+}
+
+void VulkanSampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                                    const ChunkSink& sink, const PerSampleInputs& per_sample)
+{
+    const detail::ValidatedParams valid = detail::validated_request(params, range, fields, per_sample);
+    if (params.method == Method::user || params.user_sampler)
+        throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
+    const SampleParams& p = *valid;
+    const bool dielectric = p.eta != 0.0f;
+    const detail::ProgramVariant variant =
+        detail::variant_of_host_inputs(detail::ProgramKind::bulk, p, detail::write_mask(fields), per_sample);
+    State& s = *state_;
+    const std::uint64_t out_per_sample = output_floats(fields, dielectric), in_per_sample = input_floats(per_sample);
+    const std::uint64_t capacity = s.capacity(std::max(out_per_sample, in_per_sample));
+    translate_vulkan_errors(device().name, [&] {
+        const vk::raii::Pipeline& pipeline = s.pipeline(variant);
+        detail::MappedBuffer inputs = s.compute->buffer(in_per_sample * capacity);
+        detail::MappedBuffer outputs = s.compute->buffer(out_per_sample * capacity);
+        BulkRequest request{};
+        request.seed_lo = low_word(range.seed);
+        request.seed_hi = high_word(range.seed);
+        request.stride = std::uint32_t(capacity);
+        request.view_x = p.view.x, request.view_y = p.view.y, request.view_z = p.view.z;
+        request.alpha_x = p.alpha_x, request.alpha_y = p.alpha_y;
+        request.normal_x = p.normal.x, request.normal_y = p.normal.y, request.normal_z = p.normal.z;
+        request.eta = p.eta;
+        // Each field's and input's planes, one after another in their buffer.
+        std::uint32_t at = 0;
+        std::uint32_t* field_at[] = {&request.m_at, &request.o_at, &request.pdf_m_at,
+                                     &request.pdf_o_at, &request.weight_at, &request.u_at};
+        for (Field f : all_fields)
+            if (fields.has(f))
+                *field_at[int(f)] = at, at += std::uint32_t(field_columns(f, dielectric) * capacity);
+        SampleSet chunk;
+        for (std::uint64_t done = 0; done < range.count;) {
+            const std::uint64_t n = std::min(capacity, range.count - done);
+            std::uint32_t in_at = 0;
+            auto put = [&](std::uint32_t& offset, const std::vector<float>& planes) {
+                offset = in_at;
+                std::memcpy(inputs.data + in_at, planes.data(), planes.size() * sizeof(float));
+                in_at += std::uint32_t(planes.size());
+            };
+            if (!per_sample.views.empty()) put(request.view_at, detail::planar_units(per_sample.views, done, n, capacity));
+            if (!per_sample.alphas.empty()) put(request.alpha_at, detail::planar_pairs(per_sample.alphas, done, n, capacity));
+            if (!per_sample.normals.empty()) put(request.normal_at, detail::planar_units(per_sample.normals, done, n, capacity));
+            if (!per_sample.uniforms.empty()) put(request.uniforms_at, detail::planar_uniforms(per_sample, done, n, capacity));
+            request.first_lo = low_word(range.first + done);
+            request.first_hi = high_word(range.first + done);
+            request.count = std::uint32_t(n);
+            const detail::DispatchShape shape =
+                detail::dispatch_shape(n, group_size, device().max_work_groups_x, device().max_work_groups_y);
+            request.row_width = shape.row_width;
+            s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
+            chunk.count = n;
+            for (Field f : all_fields) {
+                if (!fields.has(f))
+                    continue;
+                std::vector<float>& planes = chunk.column_source(f);
+                const int columns = field_columns(f, dielectric);
+                planes.resize(std::size_t(columns * n));
+                for (int c = 0; c < columns; ++c)
+                    std::copy_n(outputs.data + *field_at[int(f)] + c * capacity, n, planes.begin() + std::ptrdiff_t(c * n));
+            }
+            sink(chunk, done);
+            done += n;
+        }
+    });
+}
+
+} // namespace ggxcl

@@ -22,7 +22,9 @@ void SampleOptions::add_view_options(CLI::App& cmd)
                                              "where the device reports CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) or "
                                              "relaxed (-cl-fast-relaxed-math)")
         ->capture_default_str();
-    cmd.add_option("--device", device, "device index or name part (see `ggx devices`); default GGXCL_DEVICE, else the first");
+    cmd.add_option("--device", device,
+                   "device index or name part (see `ggx devices`; vulkan:NAME where the command takes --api); default "
+                   "GGXCL_DEVICE, else the first");
     cmd.add_option("--eta", eta, "a rough dielectric: index below the surface over index above (e.g. 1.5), each "
                                  "sample reflected or refracted with the exact Fresnel; 0: a conductor, Fresnel 1 "
                                  "(the methods with a dielectric sampler: `ggx methods`)")

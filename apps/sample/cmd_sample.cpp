@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 
+#include "api_options.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "sample_job.hpp"
@@ -19,12 +20,14 @@ namespace {
 // A checked job and, with --shard, what the summary says of the shard.
 struct PreparedSample {
     SampleJob job;
+    ApiChoice api;
     std::string shard_note;     // "shard 1/3 (from ...): samples [a, b) of [c, d)", else empty
     std::string shard_warning;  // a doubt about the launcher's environment, else empty
 };
 
 struct SampleCommand {
     SampleOptions options;
+    ApiOptions api_options;
     std::string count, first = "0", fields = "m,o,pdf_m,pdf_o,weight", out, devices, uniforms, shard;
     bool fields_given = false, all_devices = false, sequence_given = false, shard_given = false;
 
@@ -49,7 +52,7 @@ struct SampleCommand {
     // Every option checked; the --out folder is checked by run_sample.
     PreparedSample prepare() const
     {
-        PreparedSample prepared{job(), "", ""};
+        PreparedSample prepared{job(), api(), "", ""};
         if (shard_given)
             take_shard(prepared);
         else if (out.find("{shard}") != std::string::npos)
@@ -77,6 +80,21 @@ struct SampleCommand {
         }
         prepared.shard_note = describe_shard(part, job.range, whole);
         prepared.shard_warning = part.warning;
+    }
+
+    // The API of --api / --device, and what Vulkan cannot do yet.
+    ApiChoice api() const
+    {
+        const ApiChoice choice = api_options.choose(options.device);
+        if (!choice.vulkan)
+            return choice;
+        if (all_devices || !devices.empty())
+            throw UsageError(all_devices ? "--all-devices" : "--devices", all_devices ? "" : devices,
+                             "one device with --api vulkan: give it with --device");
+        if (!options.sampler.empty())
+            throw UsageError("--sampler", options.sampler,
+                             "a built-in --method with --api vulkan (user samplers run on OpenCL for now)");
+        return choice;
     }
 
     // The whole job (before --shard).
@@ -134,11 +152,16 @@ void run_sample(const SampleCommand& command, const PreparedSample& prepared)
     if (!prepared.shard_warning.empty())
         std::cerr << "ggx: warning: " << prepared.shard_warning << "\n";
     check_writable_folder("--out", job.out);
-    std::vector<std::unique_ptr<ggxcl::Sampler>> owned = command.samplers();
-    std::vector<ggxcl::Sampler*> samplers;
-    for (auto& s : owned)
-        samplers.push_back(s.get());
-    run_sample_job(samplers, job);
+    if (prepared.api.vulkan) {
+        ggxcl::VulkanSampler sampler(prepared.api.selector, prepared.api.language);
+        run_sample_job(sampler, job);
+    } else {
+        std::vector<std::unique_ptr<ggxcl::Sampler>> owned = command.samplers();
+        std::vector<ggxcl::Sampler*> samplers;
+        for (auto& s : owned)
+            samplers.push_back(s.get());
+        run_sample_job(samplers, job);
+    }
     std::cout << job.out << ": " << job.range.count << " samples of " << ggxcl::sampler_name(job.params)
               << (prepared.shard_note.empty() ? "" : ", " + prepared.shard_note) << "\n";
 }
@@ -159,6 +182,7 @@ Prepare add_sample_command(CLI::App& app)
     CLI::App* cmd = app.add_subcommand("sample", "Write samples of one method to a .npy file with a JSON sidecar");
     state->options.add_method_options(*cmd);
     state->options.add_view_options(*cmd);
+    state->api_options.add_to(*cmd);
     cmd->add_option("-n,--count", state->count,
                     "number of samples: 1000, 1e6 or 2^24 (default with --uniforms: its rows); with --shard, of "
                     "the whole job");

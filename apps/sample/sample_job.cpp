@@ -3,6 +3,7 @@
 #include "sample_job.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <utility>
 
 #include <nlohmann/json.hpp>
@@ -57,7 +58,8 @@ std::string device_names(const std::vector<ggxcl::Sampler*>& samplers)
     return names;
 }
 
-nlohmann::json sidecar(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
+// `device`: the device or devices that drew the samples; `api`: "opencl", or "vulkan (glsl)".
+nlohmann::json sidecar(const std::string& device, const std::string& api, const SampleJob& job)
 {
     nlohmann::json doc = describe_sampling(job.params, job.theta_degrees, job.phi_degrees, job.range);
     const bool dielectric = job.params.eta != 0.0f;
@@ -70,8 +72,35 @@ nlohmann::json sidecar(const std::vector<ggxcl::Sampler*>& samplers, const Sampl
         doc.erase("sequence");
         doc["generator"] = "the caller's uniforms, rows of " + job.uniforms_file;
     }
-    doc["device"] = device_names(samplers);
+    doc["device"] = device;
+    doc["api"] = api;
     return doc;
+}
+
+// Draws the job's samples through `draw`, which hands each chunk to the sink
+// it is given, into the job's file and sidecar (each through a temporary file).
+using DrawChunks = std::function<void(const ggxcl::Sampler::ChunkViewSink& sink)>;
+void write_samples(const SampleJob& job, const std::string& device, const std::string& api, const DrawChunks& draw)
+{
+    const bool dielectric = job.params.eta != 0.0f;
+    const std::vector<std::string> names = column_names(job.fields, dielectric);
+    const std::size_t columns = names.size();
+    std::unique_ptr<SampleWriter> writer = make_writer(job.format, job.out, job.range.count, names);
+    AtomicFile json_file(sidecar_path(job.out));  // opened now: fail before sampling if unwritable
+    Progress progress(job.out, job.range.count);
+    WriterThread writing(*writer);  // the file is written while the next chunk is drawn
+    if (job.range.count != 0)  // a shard with no samples (--shard R/S, S > N): no rows, a sidecar
+        draw([&](const ggxcl::SampleView& chunk, std::uint64_t offset) {
+            std::vector<float> rows = writing.take_buffer();
+            interleave(chunk, job.fields, dielectric, columns, rows);
+            writing.append(std::move(rows));
+            progress.advance(offset + chunk.count);
+        });
+    writing.finish();
+    std::string text = sidecar(device, api, job).dump(2) + "\n";
+    json_file.write(text.data(), text.size());
+    writer->commit();
+    json_file.commit();
 }
 
 } // namespace
@@ -151,33 +180,27 @@ void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job)
 
 void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
 {
-    const bool dielectric = job.params.eta != 0.0f;
-    const std::vector<std::string> names = column_names(job.fields, dielectric);
-    const std::size_t columns = names.size();
-    std::unique_ptr<SampleWriter> writer = make_writer(job.format, job.out, job.range.count, names);
-    AtomicFile json_file(sidecar_path(job.out));  // opened now: fail before sampling if unwritable
-    Progress progress(job.out, job.range.count);
-    WriterThread writing(*writer);  // the file is written while the next chunk is drawn
-    auto write_chunk = [&](const ggxcl::SampleView& chunk, std::uint64_t offset) {
-        std::vector<float> rows = writing.take_buffer();
-        interleave(chunk, job.fields, dielectric, columns, rows);
-        writing.append(std::move(rows));
-        progress.advance(offset + chunk.count);
-    };
     const ggxcl::FieldSet fields(job.fields);
-    const bool empty = job.range.count == 0;  // a shard with no samples (--shard R/S, S > N): no rows, a sidecar
-    if (!empty && samplers.size() == 1)
-        samplers.front()->generate_chunk_views(job.params, job.range, fields, write_chunk, job.per_sample);
-    else if (!empty)
-        ggxcl::generate_split(samplers, job.params, job.range, fields,
-                              [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
-                                  write_chunk(ggxcl::view_of(chunk), offset);
-                              });
-    writing.finish();
-    std::string text = sidecar(samplers, job).dump(2) + "\n";
-    json_file.write(text.data(), text.size());
-    writer->commit();
-    json_file.commit();
+    write_samples(job, device_names(samplers), "opencl", [&](const ggxcl::Sampler::ChunkViewSink& sink) {
+        if (samplers.size() == 1)
+            samplers.front()->generate_chunk_views(job.params, job.range, fields, sink, job.per_sample);
+        else
+            ggxcl::generate_split(samplers, job.params, job.range, fields,
+                                  [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
+                                      sink(ggxcl::view_of(chunk), offset);
+                                  });
+    });
+}
+
+void run_sample_job(ggxcl::VulkanSampler& sampler, const SampleJob& job)
+{
+    const std::string api = std::string("vulkan (") + ggxcl::shader_language_name(sampler.language()) + ")";
+    write_samples(job, sampler.device_name(), api, [&](const ggxcl::Sampler::ChunkViewSink& sink) {
+        sampler.generate_chunks(job.params, job.range, ggxcl::FieldSet(job.fields),
+                                [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
+                                    sink(ggxcl::view_of(chunk), offset);
+                                }, job.per_sample);
+    });
 }
 
 } // namespace ggxapp

@@ -46,4 +46,7 @@ void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job);
 // giving the same bits as one device of the same type.
 void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job);
 
+// The same on a Vulkan device (the sidecar's "api" says which language).
+void run_sample_job(ggxcl::VulkanSampler& sampler, const SampleJob& job);
+
 } // namespace ggxapp

@@ -1,0 +1,166 @@
+// test_vulkan_cli.cpp - `ggx` on Vulkan end to end:
+//   - `ggx devices` lists the Vulkan device with its vulkan: selector beside
+//     the OpenCL devices, and `--api vulkan` lists it alone;
+//   - `ggx sample --api vulkan` (GLSL and HLSL, conductor and dielectric, and
+//     --device vulkan:NAME) writes the samples OpenCL writes for the same
+//     request within the shader bounds (m and o 99% <= 1e-5 rad, max <= 2e-3;
+//     pdf_o relative 99% <= 1e-4), the uniforms bit for bit, and a sidecar
+//     that names the API and the device;
+//   - shards on Vulkan join to the whole job bit for bit;
+//   - usage errors (exit 2, naming the flag): --shader-language without
+//     Vulkan, --api opencl with a vulkan: device, --devices with Vulkan,
+//     --sampler with Vulkan, an unknown API;
+//   - no Vulkan driver (VK_ICD_FILENAMES naming nothing): exit 1 and a message
+//     that says what to install.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <ggxcl/ggxcl.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "npy_file.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ggx_out(const std::string& args, const fs::path& scratch)
+{
+    const std::string command = ggxtest::ggx_binary() + " " + args + " >" + (scratch / "out.txt").string() + " 2>&1";
+    CHECK(std::system(command.c_str()) == 0);
+    return ggxtest::read_all(scratch / "out.txt");
+}
+
+ggxcl::Vec3 row_vector(const ggxapp::NpyArray& a, std::uint64_t row, int column)
+{
+    const float* r = a.data.data() + row * a.columns + column;
+    return {r[0], r[1], r[2]};
+}
+
+double angle(const ggxcl::Vec3& a, const ggxcl::Vec3& b)
+{
+    const double cx = double(a.y) * b.z - double(a.z) * b.y, cy = double(a.z) * b.x - double(a.x) * b.z,
+                 cz = double(a.x) * b.y - double(a.y) * b.x;
+    return std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), double(a.x) * b.x + double(a.y) * b.y + double(a.z) * b.z);
+}
+
+// Columns m (3), o (3), pdf_o, u (2 or 3) of two files of the same request.
+void check_same_samples(const fs::path& vulkan_file, const fs::path& opencl_file, const std::string& label)
+{
+    const ggxapp::NpyArray v = ggxapp::read_npy(vulkan_file.string()), c = ggxapp::read_npy(opencl_file.string());
+    REQUIRE(v.rows == c.rows);
+    REQUIRE(v.columns == c.columns);
+    std::vector<double> angles, pdfs;
+    bool same_u = true;
+    for (std::uint64_t j = 0; j < v.rows; ++j) {
+        angles.push_back(angle(row_vector(v, j, 0), row_vector(c, j, 0)));
+        angles.push_back(angle(row_vector(v, j, 3), row_vector(c, j, 3)));
+        const double p = v.data[j * v.columns + 6], q = c.data[j * c.columns + 6];
+        pdfs.push_back(std::abs(p - q) / std::max(std::abs(q), 1e-30));
+        for (std::uint64_t k = 7; k < v.columns; ++k)
+            same_u = same_u && v.data[j * v.columns + k] == c.data[j * c.columns + k];
+    }
+    std::sort(angles.begin(), angles.end());
+    std::sort(pdfs.begin(), pdfs.end());
+    INFO(label, ": angle 99% ", angles[angles.size() * 99 / 100], ", max ", angles.back(), "; pdf_o relative 99% ",
+         pdfs[pdfs.size() * 99 / 100]);
+    CHECK(angles[angles.size() * 99 / 100] <= 1e-5);
+    CHECK(angles.back() <= 2e-3);
+    CHECK(pdfs[pdfs.size() * 99 / 100] <= 1e-4);
+    CHECK(same_u);
+}
+
+} // namespace
+
+TEST_CASE("ggx devices lists the Vulkan device with its selector")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    const std::string all = ggx_out("devices", scratch.path());
+    CHECK(all.find("0: ") == 0);  // OpenCL first
+    CHECK(all.find("vulkan:0: llvmpipe") != std::string::npos);
+    CHECK(all.find("select with --device vulkan:0") != std::string::npos);
+    CHECK(all.find("storage buffers up to 128 MiB") != std::string::npos);
+    const std::string vulkan = ggx_out("devices --api vulkan", scratch.path());
+    CHECK(vulkan.find("vulkan:0: llvmpipe") == 0);
+}
+
+TEST_CASE("ggx sample --api vulkan writes OpenCL's samples, GLSL and HLSL, conductor and dielectric")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    const std::string fields = " --fields m,o,pdf_o,u -n 50000 --seed 9 --first 77 ";
+    for (const std::string request : {"--method bounded --alpha 0.2,0.6 --theta 75",
+                                      "--method caps --alpha 0.3 --theta 40 --eta 1.5",
+                                      "--method heitz --alpha 0.1,0.4 --theta 130 --eta 1.33 --transport importance"}) {
+        const fs::path opencl = scratch / "opencl.npy";
+        REQUIRE(ggxtest::run_ggx("sample " + request + fields + "--out " + opencl.string(), scratch / "err.txt").status == 0);
+        for (const std::string api : {"--api vulkan", "--api vulkan --shader-language hlsl", "--device vulkan:llvmpipe"}) {
+            const fs::path vulkan = scratch / "vulkan.npy";
+            const ggxtest::Run run = ggxtest::run_ggx("sample " + request + fields + api + " --out " + vulkan.string(),
+                                                      scratch / "err.txt");
+            REQUIRE_MESSAGE(run.status == 0, run.err);
+            check_same_samples(vulkan, opencl, request + " " + api);
+            const nlohmann::json sidecar = nlohmann::json::parse(ggxtest::read_all(scratch / "vulkan.json"));
+            CHECK(sidecar["api"] == (api.find("hlsl") != std::string::npos ? "vulkan (hlsl)" : "vulkan (glsl)"));
+            CHECK(sidecar["device"].get<std::string>().rfind("vulkan:llvmpipe", 0) == 0);
+        }
+    }
+}
+
+TEST_CASE("shards on Vulkan join to the whole job bit for bit")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    const std::string job = "sample --api vulkan --method ndf --alpha 0.5 -n 10001 --fields o,pdf_o ";
+    REQUIRE(ggxtest::run_ggx(job + "--out " + (scratch / "whole.npy").string(), scratch / "err.txt").status == 0);
+    for (const char* shard : {"0/3", "1/3", "2/3"})
+        REQUIRE(ggxtest::run_ggx(job + "--shard " + shard + " --out " + (scratch / "part{shard}.npy").string(),
+                                 scratch / "err.txt").status == 0);
+    const ggxapp::NpyArray whole = ggxapp::read_npy((scratch / "whole.npy").string());
+    std::vector<float> joined;
+    for (const char* part : {"part0000.npy", "part0001.npy", "part0002.npy"}) {
+        const ggxapp::NpyArray a = ggxapp::read_npy((scratch / part).string());
+        joined.insert(joined.end(), a.data.begin(), a.data.end());
+    }
+    CHECK(joined == whole.data);
+}
+
+TEST_CASE("usage errors with Vulkan name the flag (exit 2)")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    const std::string out = " -n 10 --out " + (scratch / "x.npy").string();
+    struct Case {
+        std::string args, flag;
+    };
+    for (const Case& c : {Case{"--method caps --shader-language hlsl", "--shader-language"},
+                          Case{"--method caps --api opencl --device vulkan:0", "--device"},
+                          Case{"--method caps --api vulkan --devices 0,0", "--devices"},
+                          Case{"--method caps --api vulkan --all-devices", "--all-devices"},
+                          Case{"--method caps --api metal", "--api"},
+                          Case{"--method caps --api vulkan --shader-language wgsl", "--shader-language"},
+                          Case{"--method caps --api vulkan --device nosuch", "--device"}}) {
+        const ggxtest::Run run = ggxtest::run_ggx("sample " + c.args + out, scratch / "err.txt");
+        CAPTURE(c.args);
+        CAPTURE(run.err);
+        CHECK(run.status == 2);
+        CHECK(run.err.find(c.flag) != std::string::npos);
+    }
+    CHECK(!fs::exists(scratch / "x.npy"));
+}
+
+TEST_CASE("no Vulkan driver: exit 1 and what to install")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    const std::string no_driver = "env VK_ICD_FILENAMES=" + (scratch / "none.json").string() + " " + ggxtest::ggx_binary();
+    for (const std::string& args : {std::string("devices --api vulkan"),
+                                   "sample --api vulkan --method caps -n 10 --out " + (scratch / "x.npy").string()}) {
+        const ggxtest::Run run = ggxtest::run_ggx(no_driver + " " + args, scratch / "err.txt", false);
+        CAPTURE(args);
+        CAPTURE(run.err);
+        CHECK(run.status == 1);
+        CHECK(run.err.find("mesa-vulkan-drivers") != std::string::npos);
+    }
+    CHECK(!fs::exists(scratch / "x.npy"));
+}

@@ -9,7 +9,8 @@
 struct GgxBulkRequest {
     GGX_BULK_REQUEST_MEMBERS
 };
-[[vk::push_constant]] GgxBulkRequest request;
+// ConstantBuffer<T>: glslang puts a plain struct global with this attribute in $Global, a uniform buffer.
+[[vk::push_constant]] ConstantBuffer<GgxBulkRequest> request;
 [[vk::binding(0, 0)]] StructuredBuffer<float> inputs;
 [[vk::binding(1, 0)]] RWStructuredBuffer<float> outputs;
 

@@ -33,7 +33,8 @@ test_packages=(
   slurm-wlm munge                     # a one-node Slurm started by test_slurm_cluster
   chromium chromium-driver python3-selenium  # the report pages in a headless browser (test_pages)
   glslang-tools glslang-dev libshaderc-dev  # the device headers as GLSL and HLSL: glslangValidator, shaderc (tests/vulkan)
-  libvulkan-dev mesa-vulkan-drivers   # Vulkan-Hpp and Mesa's lavapipe, a Vulkan device on the CPU (tests/vulkan)
+  libvulkan-dev mesa-vulkan-drivers   # Vulkan-Hpp and Mesa's lavapipe, a Vulkan device on the CPU (lib/src/vulkan, tests/vulkan)
+  vulkan-validationlayers             # the Khronos validation layer every Vulkan suite runs under
 )
 
 # --demo: the demo's packages only; else everything.

@@ -15,7 +15,7 @@ struct Surface {
     float4 view;          // world-space view, pointing away from the surface
     uint seed, count;
 };
-[[vk::push_constant]] Surface surface;
+[[vk::push_constant]] ConstantBuffer<Surface> surface;  // ConstantBuffer<T>: glslang needs it for a push constant block
 [[vk::binding(0, 0)]] RWStructuredBuffer<float2> results;  // weight, pdf difference
 
 [numthreads(64, 1, 1)]

@@ -10,7 +10,7 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "shader_compiler.hpp"
-#include "vulkan_compute.hpp"
+#include "compute_device.hpp"
 
 namespace ggxvk {
 

@@ -12,7 +12,9 @@
 //   - the device's limits are read (storage buffer range, work-groups, push constants);
 //   - the SPIR-V comes from the disk cache in a second sampler;
 //   - errors: a user sampler, an unknown selector, an unknown language;
-//   - negative control: another seed fails the agreement.
+//   - negative controls: another seed fails the agreement; with
+//     GGXCL_VULKAN_VALIDATION=1 (set for every suite labelled vulkan) the
+//     validation layer stops a dispatch whose push constants overrun the layout.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -207,4 +209,17 @@ TEST_CASE("negative control: another seed fails the agreement")
     const ggxvk::Agreement a =
         check_against_opencl(ShaderLanguage::glsl, request(ggxcl::Method::caps, 0.3f, 0.3f, 40), "seed 12", {}, 12);
     CHECK(a.angle_99 > 1e-2);
+}
+
+TEST_CASE("negative control: the validation layer stops a dispatch that overruns its push constants")
+{
+    const ggxtest::ScratchFolder scratch("validation");
+    const std::string command = std::string("GGXCL_VULKAN_VALIDATION=1 ") + GGX_VALIDATION_PROBE + " >" +
+                                (scratch / "out.txt").string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    const std::string out = ggxtest::read_all(scratch / "out.txt");
+    CAPTURE(out);
+    CHECK(status != 0);
+    CHECK(out.find("ggxcl: Vulkan validation error") != std::string::npos);
+    CHECK(out.find("unreported") == std::string::npos);
 }

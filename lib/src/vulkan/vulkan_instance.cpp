@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <mutex>
 
@@ -18,14 +19,47 @@ namespace {
 const char* install_hint = "install the Vulkan loader and a driver, e.g. on Debian: apt-get install libvulkan1 "
                            "mesa-vulkan-drivers (lavapipe, on the CPU)";
 
+bool validation_wanted()
+{
+    const char* value = std::getenv("GGXCL_VULKAN_VALIDATION");
+    return value && std::string(value) == "1";
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL report_validation(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                 VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                 void*)
+{
+    const bool error = severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    std::fprintf(stderr, "ggxcl: Vulkan validation %s: %s\n", error ? "error" : "warning",
+                 data && data->pMessage ? data->pMessage : "(no message)");
+    std::abort();
+}
+
 std::shared_ptr<VulkanInstance> make_instance()
 {
     auto vulkan = std::make_shared<VulkanInstance>();
     const vk::ApplicationInfo app("ggxcl", 1, "ggxcl", 1, VK_API_VERSION_1_1);
+    const bool validate = validation_wanted();
+    const char* layer = "VK_LAYER_KHRONOS_validation";
+    const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+    vk::InstanceCreateInfo info({}, &app);
+    if (validate)
+        info.setPEnabledLayerNames(layer).setPEnabledExtensionNames(extension);
     try {
-        vulkan->instance = vk::raii::Instance(vulkan->context, vk::InstanceCreateInfo({}, &app));
+        vulkan->instance = vk::raii::Instance(vulkan->context, info);
+    } catch (const vk::LayerNotPresentError&) {
+        throw DeviceError("GGXCL_VULKAN_VALIDATION=1 needs the Khronos validation layer; on Debian: apt-get install "
+                          "vulkan-validationlayers");
     } catch (const vk::SystemError& e) {
         throw DeviceError(std::string("no Vulkan instance (") + e.what() + "); " + install_hint);
+    }
+    if (validate) {
+        using Severity = vk::DebugUtilsMessageSeverityFlagBitsEXT;
+        using Type = vk::DebugUtilsMessageTypeFlagBitsEXT;
+        vulkan->messenger = vk::raii::DebugUtilsMessengerEXT(
+            vulkan->instance, vk::DebugUtilsMessengerCreateInfoEXT({}, Severity::eWarning | Severity::eError,
+                                                                   Type::eGeneral | Type::eValidation | Type::ePerformance,
+                                                                   &report_validation));
     }
     return vulkan;
 }

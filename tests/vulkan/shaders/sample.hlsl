@@ -5,7 +5,7 @@ struct Request {
     int radiance;
     uint count;
 };
-[[vk::push_constant]] Request request;
+[[vk::push_constant]] ConstantBuffer<Request> request;  // glslang: a plain struct would go to $Global
 [[vk::binding(0, 0)]] RWStructuredBuffer<float> uniforms;
 [[vk::binding(1, 0)]] RWStructuredBuffer<float> samples;
 

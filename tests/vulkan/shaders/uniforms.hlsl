@@ -2,7 +2,7 @@
 struct Request {
     uint seed_lo, seed_hi, first_lo, first_hi, count;
 };
-[[vk::push_constant]] Request request;
+[[vk::push_constant]] ConstantBuffer<Request> request;  // glslang: a plain struct would go to $Global
 [[vk::binding(0, 0)]] RWStructuredBuffer<float> values;
 
 #include "uniforms_request.h"

@@ -1,9 +1,10 @@
-// vulkan_compute.hpp - the least Vulkan (through Vulkan-Hpp's RAII classes)
+// compute_device.hpp - the least Vulkan (through Vulkan-Hpp's RAII classes)
 // that runs a compute shader on host arrays: one device with a compute
 // queue, storage buffers in host-visible memory bound as bindings 0, 1, ...
 // of set 0, the request as push constants, one dispatch, wait, read back.
-// The device: the first whose name contains GGXCL_VULKAN_DEVICE, by default
-// the first CPU device (Mesa's lavapipe), else the first device.
+// The device, of the runtime's Vulkan instance: the first whose name contains
+// GGXCL_VULKAN_DEVICE, by default the first CPU device (Mesa's lavapipe), else
+// the first device.
 #pragma once
 
 #include <cstddef>
@@ -40,7 +41,7 @@ public:
     void run(const std::vector<std::uint32_t>& spirv, const void* push, std::uint32_t push_bytes,
              const std::vector<HostArray>& arrays, std::uint32_t groups);
 
-    struct State;  // the Vulkan objects (vulkan_compute.cpp)
+    struct State;  // the Vulkan objects (compute_device.cpp)
 
 private:
     std::unique_ptr<State> state_;

@@ -1,5 +1,5 @@
-// vulkan_compute.cpp - ComputeDevice on Vulkan-Hpp's RAII classes.
-#include "vulkan_compute.hpp"
+// compute_device.cpp - ComputeDevice on Vulkan-Hpp's RAII classes.
+#include "compute_device.hpp"
 
 #include <cstdlib>
 #include <cstring>
@@ -8,11 +8,12 @@
 
 #include <vulkan/vulkan_raii.hpp>
 
+#include "vulkan/vulkan_instance.hpp"  // lib/src
+
 namespace ggxvk {
 
 struct ComputeDevice::State {
-    vk::raii::Context context;
-    vk::raii::Instance instance = nullptr;
+    std::shared_ptr<ggxcl::detail::VulkanInstance> vulkan;  // the runtime's: GGXCL_VULKAN_VALIDATION applies
     vk::raii::PhysicalDevice physical = nullptr;
     vk::raii::Device device = nullptr;
     vk::raii::Queue queue = nullptr;
@@ -84,9 +85,8 @@ DeviceArray upload(const ComputeDevice::State& s, const HostArray& array)
 ComputeDevice::ComputeDevice() : state_(std::make_unique<State>())
 {
     State& s = *state_;
-    const vk::ApplicationInfo app("ggxcl shader tests", 1, "ggxcl", 1, VK_API_VERSION_1_1);
-    s.instance = vk::raii::Instance(s.context, vk::InstanceCreateInfo({}, &app));
-    s.physical = pick_device(s.instance);
+    s.vulkan = ggxcl::detail::vulkan_instance();
+    s.physical = pick_device(s.vulkan->instance);
     if (!s.physical.getFeatures().shaderInt64)
         throw std::runtime_error(name() + " lacks shaderInt64 (the 64-bit integers of ggx_philox.h and ggx_sobol.h)");
     s.family = compute_family(s.physical);

@@ -1,6 +1,7 @@
-// ggx_histogram_bin.h - the histogram's bin of a direction (OpenCL C only),
-// apart from the kernels of ggx_histogram.cl so that a program that bins
-// directions builds nothing else (no kernel, no local memory).
+// ggx_histogram_bin.h - the histogram's bin of a direction, for the
+// histogram kernels (OpenCL C) and shaders (GLSL, HLSL), apart from them so
+// that a program that bins directions builds nothing else (no kernel, no
+// local memory).
 // Build options: GGX_BINS_Z, GGX_BINS_PHI.
 // Bin of a unit d: z bin floor((dz + 1)/2 nz), phi bin k for phi in
 // [2 pi k/nphi, 2 pi (k+1)/nphi), phi the angle of (dx, dy) in [0, 2 pi)
@@ -10,6 +11,7 @@
 #define GGX_HISTOGRAM_BIN_H
 
 #include "ggx_common.h"
+#include "ggx_guards.h"
 #include "ggx_sincos.h"
 
 #if !defined(GGX_BINS_Z) || !defined(GGX_BINS_PHI)
@@ -23,9 +25,9 @@ GGX_INLINE float ggx_rough_angle(float x, float y)
 {
     // |y| by a select, |x| by fabs: two identical fabs let LLVM's SLP
     // vectorizer pair them, which then stops PoCL's loop vectorizer.
-    float ax = fabs(x), ay = y < 0.0f ? -y : y;
-    float big = fmax(ax, ay), small = fmin(ax, ay);
-    float a = big > 0.0f ? small / big : 0.0f;
+    float ax = ggx_fabs(x), ay = y < 0.0f ? -y : y;
+    float larger = ggx_fmax(ax, ay), smaller = ggx_fmin(ax, ay);
+    float a = larger > 0.0f ? smaller / larger : 0.0f;
     float s = a * a;
     float t = -1.172120e-2f;
     t = t * s + 5.265332e-2f;
@@ -49,20 +51,21 @@ GGX_INLINE float ggx_rough_angle(float x, float y)
 // bin 0.
 GGX_INLINE int ggx_phi_bin(float x, float y)
 {
-    int e = (int)rint(ggx_rough_angle(x, y) * (GGX_BINS_PHI / GGX_TWO_PI));  // 0 .. nphi
-    ggx_sin_cos edge = ggx_sincos_2pi((float)e / (float)GGX_BINS_PHI);
+    int e = ggx_to_int(ggx_rint(ggx_rough_angle(x, y) * (ggx_to_float(GGX_BINS_PHI) / GGX_TWO_PI)));  // 0 .. nphi
+    ggx_sin_cos edge = ggx_sincos_2pi(ggx_to_float(e) / ggx_to_float(GGX_BINS_PHI));
     int b = edge.cosine * y - edge.sine * x < 0.0f ? e - 1 : e;
     return b < 0 ? b + GGX_BINS_PHI : (b >= GGX_BINS_PHI ? b - GGX_BINS_PHI : b);
 }
 
-// A direction that is not finite is binned as (1, 0, 0) first, then counted apart.
-GGX_INLINE uint ggx_bin_of(ggx_vec3 d)
+// A direction that is not finite (read from its bits, which relaxed math
+// cannot assume away) is binned as (1, 0, 0) first, then counted apart.
+GGX_INLINE ggx_uint ggx_bin_of(ggx_vec3 d)
 {
-    int finite = isfinite(d.x) && isfinite(d.y) && isfinite(d.z);
+    const bool finite = (ggx_is_finite(d.x) & ggx_is_finite(d.y) & ggx_is_finite(d.z)) != 0;
     float x = finite ? d.x : 1.0f, y = finite ? d.y : 0.0f, z = finite ? d.z : 0.0f;
-    int zb = clamp((int)floor(0.5f * (z + 1.0f) * GGX_BINS_Z), 0, GGX_BINS_Z - 1);
+    int zb = clamp(ggx_to_int(floor(0.5f * (z + 1.0f) * ggx_to_float(GGX_BINS_Z))), 0, GGX_BINS_Z - 1);
     int pb = ggx_phi_bin(x, y);
-    return finite ? (uint)(zb * GGX_BINS_PHI + pb) : (uint)GGX_BINS;
+    return finite ? ggx_to_uint(zb * GGX_BINS_PHI + pb) : ggx_to_uint(GGX_BINS);
 }
 
 #endif // GGX_HISTOGRAM_BIN_H

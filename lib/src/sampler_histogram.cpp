@@ -10,6 +10,7 @@
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
 #include "device_contract.hpp"
+#include "histogram_bins.hpp"
 #include "kernel_launch.hpp"
 #include "queue_waits.hpp"
 #include "validated_params.hpp"
@@ -29,23 +30,6 @@ std::string histogram_options(const cl::Device& device, const SampleParams& para
     detail::ProgramVariant variant = detail::variant_of(detail::ProgramKind::histogram, params, 0);
     variant.bins = {bins_z, bins_phi, direction == Field::m};
     return detail::build_options(device, variant);
-}
-
-constexpr int max_phi_bins = 1 << 16;
-
-void check_bins(int bins_z, int bins_phi, Field direction, std::size_t local_bytes)
-{
-    std::size_t most = local_bytes / sizeof(cl_uint) - 2;  // and the two counters after the bins
-    if (bins_z < 1 || bins_phi < 1 || std::size_t(bins_z) * bins_phi > most)
-        throw InvalidArgument("bins", std::to_string(bins_z) + "x" + std::to_string(bins_phi),
-                              "at least 1x1 and at most " + std::to_string(most) +
-                                  " bins in all (the device's local memory)");
-    if (bins_phi > max_phi_bins)
-        throw InvalidArgument("bins_phi", std::to_string(bins_phi),
-                              "1 .. " + std::to_string(max_phi_bins) +
-                                  " (the device's phi bin is exact while half a bin exceeds its angle's 1e-5 rad error)");
-    if (direction != Field::o && direction != Field::m)
-        throw InvalidArgument("direction", std::string(field_name(direction)), "o or m");
 }
 
 } // namespace
@@ -153,7 +137,7 @@ Histogram Sampler::histogram(const SampleParams& params, const SampleRange& rang
     validate(range);
     const SampleParams& unit = *valid;
     return detail::translate_cl_errors([&] {
-        check_bins(bins_z, bins_phi, direction, local_mem_);
+        detail::check_histogram_bins(bins_z, bins_phi, direction, local_mem_);
         const bool cpu = cpu_;
         const std::size_t bins = std::size_t(bins_z) * bins_phi;
         const std::string options = histogram_options(device_, unit, bins_z, bins_phi, direction);

@@ -59,7 +59,8 @@ VulkanDeviceInfo select_vulkan_device(const std::string& selector = "");
 // are built per request variant (the switches of the OpenCL programs) and
 // cached on disk as SPIR-V beside the OpenCL binaries (GGXCL_PROGRAM_CACHE).
 // A shader that does not compile is a BuildError naming its file and line.
-// Not yet on Vulkan: user samplers (InvalidArgument), the caller's buffers.
+// Not yet on Vulkan: user samplers (InvalidArgument), the caller's buffers, pdf
+// and eval, the fused furnace.
 // One VulkanSampler is used by one thread at a time.
 class VulkanSampler {
 public:
@@ -82,6 +83,12 @@ public:
     using ChunkSink = std::function<void(const SampleSet& chunk, std::uint64_t offset)>;
     void generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
                          const ChunkSink& sink, const PerSampleInputs& per_sample = {});
+
+    // Bins the directions (Field::o or Field::m) of `range` on the device, as
+    // Sampler::histogram: only the counts come back; bins_z * bins_phi + 2
+    // counters fit the device's shared memory (InvalidArgument otherwise).
+    Histogram histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
+                        Field direction = Field::o);
 
     std::size_t shaders_built() const;     // pipelines made so far
     std::size_t shaders_from_disk() const;  // of those, SPIR-V read from the cache

@@ -36,6 +36,7 @@ void VulkanSampler::generate_chunks(const SampleParams&, const SampleRange&, Fie
 {
     not_built();
 }
+Histogram VulkanSampler::histogram(const SampleParams&, const SampleRange&, int, int, Field) { not_built(); }
 std::size_t VulkanSampler::shaders_built() const { not_built(); }
 std::size_t VulkanSampler::shaders_from_disk() const { not_built(); }
 

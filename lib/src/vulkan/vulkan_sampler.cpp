@@ -2,12 +2,15 @@
 // (detail::validated_request), its variant (variant_of_host_inputs) built as
 // a bulk shader (kernels/ggx_bulk.comp or .hlsl), and the range drawn chunk
 // by chunk through two mapped buffers: the per-sample inputs' planes and the
-// requested fields' planes.
+// requested fields' planes.  A histogram runs the histogram shader
+// (kernels/ggx_histogram.comp or .hlsl) in passes whose 32-bit counts are
+// summed on the host.
 #include <algorithm>
 #include <cstring>
 #include <map>
 
 #include "device_contract.hpp"
+#include "histogram_bins.hpp"
 #include "planar_inputs.hpp"
 #include "program_variant.hpp"
 #include "spirv_compile.hpp"
@@ -21,6 +24,8 @@ namespace ggxcl {
 namespace {
 
 constexpr std::uint32_t group_size = 64;  // every device runs 128 invocations per work-group
+constexpr std::uint32_t histogram_per_item = 64;           // samples per invocation of the histogram shader
+constexpr std::uint64_t histogram_pass = 1u << 30;         // keeps every 32-bit count below 2^32
 
 // The push constants of the bulk shader, from the list both sides read.
 struct BulkRequest {
@@ -62,6 +67,25 @@ auto translate_vulkan_errors(const std::string& device, Call&& call)
     }
 }
 
+void refuse_user_sampler(const SampleParams& params)
+{
+    if (params.method == Method::user || params.user_sampler)
+        throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
+}
+
+// The push constants every shader reads of a request: its seed and uniform parameters.
+BulkRequest request_of(const SampleParams& p, std::uint64_t seed)
+{
+    BulkRequest request{};
+    request.seed_lo = low_word(seed);
+    request.seed_hi = high_word(seed);
+    request.view_x = p.view.x, request.view_y = p.view.y, request.view_z = p.view.z;
+    request.alpha_x = p.alpha_x, request.alpha_y = p.alpha_y;
+    request.normal_x = p.normal.x, request.normal_y = p.normal.y, request.normal_z = p.normal.z;
+    request.eta = p.eta;
+    return request;
+}
+
 } // namespace
 
 struct VulkanSampler::State {
@@ -80,7 +104,8 @@ struct VulkanSampler::State {
             return found->second;
         detail::ShaderDefines defines = detail::variant_define_list(variant);
         defines.emplace_back("GGX_GROUP_SIZE", long(group_size));
-        const char* file = language == ShaderLanguage::hlsl ? "ggx_bulk.hlsl" : "ggx_bulk.comp";
+        const std::string file = std::string(variant.kind == detail::ProgramKind::histogram ? "ggx_histogram" : "ggx_bulk") +
+                                 (language == ShaderLanguage::hlsl ? ".hlsl" : ".comp");
         const detail::CompiledShader shader = detail::compile_shader(language, file, defines);
         from_disk += shader.from_disk ? 1 : 0;
         return pipelines.emplace(key, compute->pipeline(shader.spirv)).first->second;
@@ -147,8 +172,7 @@ void VulkanSampler::generate_chunks(const SampleParams& params, const SampleRang
                                     const ChunkSink& sink, const PerSampleInputs& per_sample)
 {
     const detail::ValidatedParams valid = detail::validated_request(params, range, fields, per_sample);
-    if (params.method == Method::user || params.user_sampler)
-        throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
+    refuse_user_sampler(params);
     const SampleParams& p = *valid;
     const bool dielectric = p.eta != 0.0f;
     const detail::ProgramVariant variant =
@@ -160,14 +184,8 @@ void VulkanSampler::generate_chunks(const SampleParams& params, const SampleRang
         const vk::raii::Pipeline& pipeline = s.pipeline(variant);
         detail::MappedBuffer inputs = s.compute->buffer(in_per_sample * capacity);
         detail::MappedBuffer outputs = s.compute->buffer(out_per_sample * capacity);
-        BulkRequest request{};
-        request.seed_lo = low_word(range.seed);
-        request.seed_hi = high_word(range.seed);
+        BulkRequest request = request_of(p, range.seed);
         request.stride = std::uint32_t(capacity);
-        request.view_x = p.view.x, request.view_y = p.view.y, request.view_z = p.view.z;
-        request.alpha_x = p.alpha_x, request.alpha_y = p.alpha_y;
-        request.normal_x = p.normal.x, request.normal_y = p.normal.y, request.normal_z = p.normal.z;
-        request.eta = p.eta;
         // Each field's and input's planes, one after another in their buffer.
         std::uint32_t at = 0;
         std::uint32_t* field_at[] = {&request.m_at, &request.o_at, &request.pdf_m_at,
@@ -209,6 +227,46 @@ void VulkanSampler::generate_chunks(const SampleParams& params, const SampleRang
             done += n;
         }
     });
+}
+
+Histogram VulkanSampler::histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
+                                   Field direction)
+{
+    const detail::ValidatedParams valid = detail::validated(params);
+    validate(range);
+    refuse_user_sampler(params);
+    detail::check_histogram_bins(bins_z, bins_phi, direction, device().max_shared_memory);
+    detail::ProgramVariant variant = detail::variant_of(detail::ProgramKind::histogram, *valid, 0);
+    variant.bins = {bins_z, bins_phi, direction == Field::m};
+    const std::size_t bins = std::size_t(bins_z) * std::size_t(bins_phi);
+    Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0, 0};
+    State& s = *state_;
+    translate_vulkan_errors(device().name, [&] {
+        const vk::raii::Pipeline& pipeline = s.pipeline(variant);
+        detail::MappedBuffer unused = s.compute->buffer(1), counts = s.compute->buffer(bins + 2);
+        BulkRequest request = request_of(*valid, range.seed);
+        request.stride = histogram_per_item;
+        std::vector<std::uint32_t> pass_counts(bins + 2);
+        for (std::uint64_t start = 0; start < range.count;) {
+            const std::uint64_t n = std::min(histogram_pass, range.count - start);
+            std::memset(counts.data, 0, (bins + 2) * sizeof(std::uint32_t));
+            request.first_lo = low_word(range.first + start);
+            request.first_hi = high_word(range.first + start);
+            request.count = std::uint32_t(n);
+            const std::uint64_t groups = (n + group_size * histogram_per_item - 1) / (group_size * histogram_per_item);
+            const detail::DispatchShape shape = detail::dispatch_shape(groups * group_size, group_size,
+                                                                       device().max_work_groups_x, device().max_work_groups_y);
+            request.row_width = shape.row_width;
+            s.compute->dispatch(pipeline, &request, sizeof request, unused, counts, shape);
+            std::memcpy(pass_counts.data(), counts.data, pass_counts.size() * sizeof(std::uint32_t));
+            for (std::size_t b = 0; b < bins; ++b)
+                result.counts[b] += pass_counts[b];
+            result.non_finite += pass_counts[bins];
+            result.invalid += pass_counts[bins + 1];
+            start += n;
+        }
+    });
+    return result;
 }
 
 } // namespace ggxcl

@@ -1,0 +1,78 @@
+// ggx_histogram_shader.h - the histogram shader's body, one text for GLSL
+// (ggx_histogram.comp) and HLSL (ggx_histogram.hlsl): what ggx_histogram.cl's
+// ggx_histogram kernel does per work-item.  Each work-group counts its
+// samples in shared memory with atomics, then adds its non-zero counters to
+// the global ones.  Counters: the GGX_BINS bins of ggx_histogram_bin.h, then
+// directions that are not finite, then a dielectric's invalid samples.
+// Build switches: those of ggx_bulk_sample.h, GGX_BINS_Z, GGX_BINS_PHI,
+// GGX_BIN_M=0|1 (1 bins m) and GGX_GROUP_SIZE.
+// The including shader declares first `request` (push constants:
+// GGX_BULK_REQUEST_MEMBERS, `stride` being the samples per invocation),
+// `ggx_counts` (a uint storage buffer of GGX_COUNTERS) and
+// `ggx_local_counts` (uint[GGX_COUNTERS] of shared memory), and the
+// language's GGX_LOCAL_ADD(index, value), GGX_GLOBAL_ADD(index, value) and
+// GGX_GROUP_BARRIER().
+#ifndef GGX_HISTOGRAM_SHADER_H
+#define GGX_HISTOGRAM_SHADER_H
+
+#include "ggx_bulk_sample.h"
+#include "ggx_histogram_bin.h"
+
+#ifndef GGX_BIN_M
+#define GGX_BIN_M 0
+#endif
+
+ggx_ulong ggx_histogram_word_pair(ggx_uint lo, ggx_uint hi)
+{
+    return (ggx_to_ulong(hi) << 32) | ggx_to_ulong(lo);
+}
+
+// The counter of sample j of the launch.
+ggx_uint ggx_shader_sample_bin(ggx_uint j)
+{
+    ggx_params p;
+    p.view = ggx_vec3_make(request.view_x, request.view_y, request.view_z);
+    p.ax = request.alpha_x;
+    p.ay = GGX_ISOTROPIC != 0 ? request.alpha_x : request.alpha_y;
+#if GGX_NORMAL_IS_Z
+    p.normal = ggx_vec3_make(0.0f, 0.0f, 1.0f);
+#else
+    p.normal = ggx_vec3_make(request.normal_x, request.normal_y, request.normal_z);
+#endif
+    p.eta = request.eta;
+    p.u1 = 0.0f;
+    p.u2 = 0.0f;
+    p.u3 = 0.0f;
+    const ggx_ulong seed = ggx_histogram_word_pair(request.seed_lo, request.seed_hi);
+    const ggx_ulong first = ggx_histogram_word_pair(request.first_lo, request.first_hi);
+    const ggx_sample s = ggx_bulk_sample(seed, first, j, p);
+    const ggx_uint bin = ggx_bin_of(GGX_BIN_M != 0 ? s.m : s.o);
+#if GGX_DIELECTRIC && !GGX_BIN_M
+    return s.pdf_o > 0.0f ? bin : ggx_to_uint(GGX_BINS + 1);
+#else
+    return bin;
+#endif
+}
+
+// Invocation `local` of work-group `group` (the invocation y * row_width + x
+// of the 2-D dispatch, split by GGX_GROUP_SIZE) counts samples
+// group * size * per_item + k * size + local (k < per_item) below count.
+void ggx_shader_histogram(ggx_uint group, ggx_uint local)
+{
+    const ggx_uint size = ggx_to_uint(GGX_GROUP_SIZE), per_item = request.stride;
+    for (ggx_uint b = local; b < ggx_to_uint(GGX_COUNTERS); b += size)
+        ggx_local_counts[b] = 0u;
+    GGX_GROUP_BARRIER();
+    const ggx_uint base = group * size * per_item;
+    for (ggx_uint k = 0u; k < per_item; ++k) {
+        const ggx_uint j = base + k * size + local;
+        if (j < request.count)
+            GGX_LOCAL_ADD(ggx_shader_sample_bin(j), 1u);
+    }
+    GGX_GROUP_BARRIER();
+    for (ggx_uint b = local; b < ggx_to_uint(GGX_COUNTERS); b += size)
+        if (ggx_local_counts[b] != 0u)
+            GGX_GLOBAL_ADD(b, ggx_local_counts[b]);
+}
+
+#endif

@@ -4,6 +4,7 @@
 // every check of user_checks.hpp, and --check fails on any that fails.
 #include <iostream>
 
+#include "api_options.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
 #include "histogram_job.hpp"
@@ -15,6 +16,7 @@ namespace {
 
 struct HistogramCommand {
     SampleOptions options;
+    ApiOptions api_options;
     std::string count = "1e6", first = "0", bins_z = "32", bins_phi = "64", check, against, out, of = "o";
     bool no_png = false;
 
@@ -50,13 +52,23 @@ struct HistogramCommand {
     }
 };
 
+// The job on the API chosen, the expectation computed while the device opens.
+HistogramResult run_on_device(const HistogramCommand& command, const HistogramJob& job, const ApiChoice& api)
+{
+    std::future<std::vector<double>> expectation = start_expectation(job);
+    if (api.vulkan) {
+        ggxcl::VulkanSampler sampler(api.selector, api.language);
+        return run_histogram_job(sampler, job, std::move(expectation));
+    }
+    ggxcl::Sampler sampler(command.options.device);
+    return run_histogram_job(sampler, job, std::move(expectation));
+}
+
 // `level`: the --check significance level, 0 when none was given.
-void run_histogram(const HistogramCommand& command, const HistogramJob& job, double level)
+void run_histogram(const HistogramCommand& command, const HistogramJob& job, const ApiChoice& api, double level)
 {
     check_writable_folder("--out", job.prefix);
-    std::future<std::vector<double>> expectation = start_expectation(job);  // while the device opens
-    ggxcl::Sampler sampler(command.options.device);
-    HistogramResult result = run_histogram_job(sampler, job, std::move(expectation));
+    HistogramResult result = run_on_device(command, job, api);
     std::cout << job.prefix << ": chi-square " << result.chi_square << " on " << result.dof << " dof, p = "
               << result.p_value << (result.png.empty() ? "" : ", figure " + result.png) << "\n";
     std::string failed;
@@ -78,6 +90,7 @@ Prepare add_histogram_command(CLI::App& app)
     CLI::App* cmd = app.add_subcommand("histogram", "Bin o (or m) on the device and chi-square test it against the pdf");
     state->options.add_method_options(*cmd);
     state->options.add_view_options(*cmd);
+    state->api_options.add_to(*cmd);
     cmd->add_option("-n,--count", state->count, "number of samples: 1000, 1e9 or 2^30")->capture_default_str();
     cmd->add_option("--first", state->first, "index of the first sample")->capture_default_str();
     cmd->add_option("--bins-z", state->bins_z, "bins over cos theta in [-1, 1]")->capture_default_str();
@@ -96,9 +109,13 @@ Prepare add_histogram_command(CLI::App& app)
         HistogramJob job = state->job();
         if (level > 0.0)
             job.level = level;
+        const ApiChoice api = state->api_options.choose(state->options.device);
+        if (api.vulkan && job.params.method == ggxcl::Method::user)
+            throw UsageError("--sampler", state->options.sampler,
+                             "a built-in --method with --api vulkan (user samplers run on OpenCL for now)");
         if (state->out.empty())  // what is missing, once every value given has been checked
             throw UsageError("--out is required: a path prefix such as results/caps");
-        return Work{[state, job, level] { run_histogram(*state, job, level); }, {{job.params, job.range}}};
+        return Work{[state, job, api, level] { run_histogram(*state, job, api, level); }, {{job.params, job.range}}};
     };
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -24,7 +25,17 @@ std::string file_name(const std::string& path)
     return path.substr(path.rfind('/') + 1);
 }
 
-nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, const ggxcl::Histogram& counts,
+// Where a job's histogram is counted: the device's name and API, its histogram call, the samples
+// of a warm-up run (a whole work-group and a tail), and the OpenCL sampler a user sampler's
+// checks run on (none on Vulkan).
+struct HistogramDevice {
+    std::string name, api;
+    std::function<ggxcl::Histogram(const ggxcl::SampleParams&, const ggxcl::SampleRange&, int, int, ggxcl::Field)> count;
+    std::uint64_t warm_up_samples = 0;
+    ggxcl::Sampler* opencl = nullptr;
+};
+
+nlohmann::json summary(const HistogramDevice& device, const HistogramJob& job, const ggxcl::Histogram& counts,
                        const ggxref::ChiSquare& fit, double seconds)
 {
     nlohmann::json doc = describe_sampling(job.params, job.theta_degrees, job.phi_degrees, job.range);
@@ -43,7 +54,8 @@ nlohmann::json summary(const ggxcl::Sampler& sampler, const HistogramJob& job, c
     doc["pooling"] = "bins expecting fewer than 5 samples are pooled into one";
     doc["observed"] = file_name(job.prefix) + ".observed.npy";
     doc["expected"] = file_name(job.prefix) + ".expected.npy";
-    doc["device"] = sampler.device_name();
+    doc["device"] = device.name;
+    doc["api"] = device.api;
     doc["device_seconds"] = seconds;
     return doc;
 }
@@ -95,24 +107,27 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
     return run_histogram_job(sampler, job, start_expectation(job));
 }
 
-HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job,
-                                  std::future<std::vector<double>> expectation)
+namespace {
+
+HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
+                       std::future<std::vector<double>> expectation)
 {
     // A small warm-up run (a whole work-group and a tail) builds and
     // JIT-compiles the kernels, so the timing below measures sampling and
     // binning alone.
-    sampler.histogram(job.params, {job.range.seed, job.range.first, sampler.work_group_size() + 1}, job.bins_z,
-                      job.bins_phi, job.direction);
+    device.count(job.params, {job.range.seed, job.range.first, device.warm_up_samples}, job.bins_z, job.bins_phi,
+                 job.direction);
     // The expectation, started before, is awaited first: the timing below
     // then measures the device alone, not the device beside the quadrature.
     const std::vector<double> reference = expectation.get();
     auto start = std::chrono::steady_clock::now();
-    ggxcl::Histogram counts = sampler.histogram(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
+    ggxcl::Histogram counts = device.count(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool user = job.params.method == ggxcl::Method::user;
     double quadrature_error = 0.0;
     const std::vector<double> probabilities =
-        user ? ggxbridge::pdf_bin_probabilities(sampler, job.params, job.bins_z, job.bins_phi, quadrature_error) : reference;
+        user ? ggxbridge::pdf_bin_probabilities(*device.opencl, job.params, job.bins_z, job.bins_phi, quadrature_error)
+             : reference;
     ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
 
     std::vector<double> observed(counts.counts.begin(), counts.counts.end()), expected(probabilities.size());
@@ -120,10 +135,10 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
         expected[b] = probabilities[b] * double(job.range.count);
     write_npy_f64(job.prefix + ".observed.npy", job.bins_z, job.bins_phi, observed);
     write_npy_f64(job.prefix + ".expected.npy", job.bins_z, job.bins_phi, expected);
-    nlohmann::json doc = summary(sampler, job, counts, fit, seconds);
+    nlohmann::json doc = summary(device, job, counts, fit, seconds);
     HistogramResult result{fit.statistic, fit.p_value, double(job.range.count) / seconds, fit.dof, "", {}};
     if (user) {
-        result.checks = user_sampler_checks(sampler, job, counts, fit, reference);
+        result.checks = user_sampler_checks(*device.opencl, job, counts, fit, reference);
         result.checks.insert(result.checks.begin() + 1, pdf_integral_check(probabilities, quadrature_error));
         doc["expected_from_pdf_of"] = ggxcl::sampler_name(job.params) + " (its own pdf, integrated over each bin)";
         doc["quadrature_error"] = quadrature_error;
@@ -138,6 +153,29 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
         result.png = job.prefix + ".png";
     }
     return result;
+}
+
+} // namespace
+
+HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job,
+                                  std::future<std::vector<double>> expectation)
+{
+    const HistogramDevice device{sampler.device_name(), "opencl",
+                                 [&](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, int z, int phi,
+                                     ggxcl::Field d) { return sampler.histogram(p, r, z, phi, d); },
+                                 sampler.work_group_size() + 1, &sampler};
+    return run_on(device, job, std::move(expectation));
+}
+
+HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const HistogramJob& job,
+                                  std::future<std::vector<double>> expectation)
+{
+    const HistogramDevice device{sampler.device_name(),
+                                 std::string("vulkan (") + ggxcl::shader_language_name(sampler.language()) + ")",
+                                 [&](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, int z, int phi,
+                                     ggxcl::Field d) { return sampler.histogram(p, r, z, phi, d); },
+                                 65, nullptr};
+    return run_on(device, job, std::move(expectation));
 }
 
 } // namespace ggxapp

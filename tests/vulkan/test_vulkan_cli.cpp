@@ -7,6 +7,9 @@
 //     pdf_o relative 99% <= 1e-4), the uniforms bit for bit, and a sidecar
 //     that names the API and the device;
 //   - shards on Vulkan join to the whole job bit for bit;
+//   - `ggx histogram --api vulkan --check` passes, GLSL and HLSL, conductor and
+//     dielectric, and its summary names the API; negative control: the same
+//     counts tested --against another method's pdf fail (exit 1);
 //   - usage errors (exit 2, naming the flag): --shader-language without
 //     Vulkan, --api opencl with a vulkan: device, --devices with Vulkan,
 //     --sampler with Vulkan, an unknown API;
@@ -125,6 +128,26 @@ TEST_CASE("shards on Vulkan join to the whole job bit for bit")
         joined.insert(joined.end(), a.data.begin(), a.data.end());
     }
     CHECK(joined == whole.data);
+}
+
+TEST_CASE("ggx histogram --api vulkan --check passes, and fails against another method's pdf")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    const std::string common = "histogram --no-png -n 4e5 --check 0.001 --alpha 0.3,0.5 --theta 55 ";
+    for (const std::string api : {"--api vulkan", "--api vulkan --shader-language hlsl"})
+        for (const std::string method : {"--method bounded", "--method caps --eta 1.5"}) {
+            const ggxtest::Run run =
+                ggxtest::run_ggx(common + api + " " + method + " --out " + (scratch / "h").string(), scratch / "err.txt");
+            CAPTURE(api + " " + method);
+            CAPTURE(run.err);
+            CHECK(run.status == 0);
+            const nlohmann::json summary = nlohmann::json::parse(ggxtest::read_all(scratch / "h.json"));
+            CHECK(summary["api"].get<std::string>().rfind("vulkan", 0) == 0);
+        }
+    const ggxtest::Run wrong = ggxtest::run_ggx(common + "--api vulkan --method ndf --against caps --out " +
+                                                    (scratch / "w").string(), scratch / "err.txt");
+    CHECK(wrong.status == 1);
+    CHECK(wrong.err.find("below --check") != std::string::npos);
 }
 
 TEST_CASE("usage errors with Vulkan name the flag (exit 2)")

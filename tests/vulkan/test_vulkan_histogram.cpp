@@ -103,7 +103,8 @@ TEST_CASE("the Vulkan histogram counts OpenCL's but for samples at a bin edge")
             std::uint64_t moved = 0;
             for (std::size_t b = 0; b < v.counts.size(); ++b)
                 moved += v.counts[b] > c.counts[b] ? v.counts[b] - c.counts[b] : c.counts[b] - v.counts[b];
-            INFO(ggxcl::method_name(p.method), " ", ggxcl::field_name(direction), ": ", moved, " samples in another bin");
+            MESSAGE(ggxcl::method_name(p.method) << (p.eta != 0.0f ? " dielectric " : " ") << ggxcl::field_name(direction)
+                                                 << ": " << moved << " of " << range.count << " samples in another bin");
             CHECK(v.total() == c.total());
             CHECK(moved <= 30);  // 1e-4 of the samples
             CHECK(v.invalid == c.invalid);

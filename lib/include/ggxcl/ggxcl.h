@@ -4,6 +4,7 @@
  * caller's OpenCL objects (cl_context, cl_command_queue, cl_mem, cl_event)
  * in and out.  Every enum is made from, or checked against, the device
  * contract <ggxcl/cl/ggx_contract.h> that the kernels and the C++ API use.
+ * It runs on OpenCL; the Vulkan back end (docs/VULKAN.md) is C++ only for now.
  *
  *   ggxcl_sampler* sampler;
  *   if (ggxcl_sampler_create("", &sampler) != GGXCL_SUCCESS)

@@ -11,9 +11,8 @@
 //    (glslangValidator, the front ends shaderc uses; tests/vulkan runs them on a Vulkan device);
 //  - a control: a header that calls sqrt on a float without ggx_platform.h fails the C++ check,
 //    and a header with a C cast fails the GLSL check.
-// The kernel-only headers (ggx_kernel_io.h, ggx_bulk_params.h, ggx_histogram_bin.h) are OpenCL C alone,
-// ggx_bulk_sample.h needs a kernel's GGX_METHOD (the bulk kernels and shaders build it);
-// ggx_platform_shader.h and ggx_bulk_shader.h are GLSL and HLSL alone.
+// Which headers count as public is tests/helpers/header_roles.hpp's rule: the kernel-only ones need
+// a kernel's switches, the *_shader.h ones are GLSL and HLSL alone.
 // ggx_user_sampler.h declares what a user sampler's file defines after it: it compiles
 // with the test samplers of tests/user_samplers (one of whole samples, one of m alone) and the
 // worked example of examples/user_sampler after it.
@@ -33,17 +32,12 @@
 #include <ggxcl/ggxcl.hpp>
 
 #include "scratch.hpp"
+#include "header_roles.hpp"
 #include "test_paths.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// The kernels' own headers: OpenCL C alone, or built with a kernel's switches (GGX_METHOD).
-const std::vector<std::string> kernel_only = {"ggx_kernel_io.h", "ggx_bulk_params.h", "ggx_bulk_sample.h",
-                                              "ggx_histogram_bin.h"};
-// The shading languages' part of ggx_platform.h, which includes it there, and the bulk shaders' body.
-const std::vector<std::string> shader_only = {"ggx_platform_shader.h", "ggx_bulk_shader.h"};
 
 struct Result {
     int status;
@@ -69,9 +63,8 @@ std::vector<std::string> public_headers()
 {
     std::vector<std::string> names;
     for (const fs::directory_entry& e : fs::directory_iterator(ggxtest::kernel_dir()))
-        if (e.path().extension() == ".h" &&
-            std::find(kernel_only.begin(), kernel_only.end(), e.path().filename().string()) == kernel_only.end() &&
-            std::find(shader_only.begin(), shader_only.end(), e.path().filename().string()) == shader_only.end())
+        if (e.path().extension() == ".h" && !ggxtest::is_kernel_only_header(e.path().filename().string()) &&
+            !ggxtest::is_shader_only_header(e.path().filename().string()))
             names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;

@@ -19,6 +19,7 @@
 #include "bit_compare.hpp"
 #include "device_fixture.hpp"
 #include "device_symbols.hpp"
+#include "header_roles.hpp"
 #include "user_samples.hpp"
 
 namespace {
@@ -140,9 +141,8 @@ TEST_CASE("each device header compiles alone, and all of them together")
     const std::string options = "-DGGX_METHOD=3 -DGGX_BINS_Z=4 -DGGX_BINS_PHI=8";
     std::string all;
     for (const std::string& file : ggxcl::kernel_files()) {
-        if (file.size() < 2 || file.substr(file.size() - 2) != ".h" || file == "ggx_platform_shader.h" ||
-            file == "ggx_bulk_shader.h")
-            continue;  // GLSL and HLSL alone: ggx_platform.h includes the first there, the bulk shaders the second
+        if (!ggxtest::ends_with(file, ".h") || ggxtest::is_shader_only_header(file))
+            continue;  // GLSL and HLSL alone
         INFO(file);
         const std::string include = "#include \"" + file + "\"\n";
         // ggx_bulk_params.h and ggx_bulk_sample.h are the bulk kernels' headers: they need the method id; ggx_histogram_bin.h

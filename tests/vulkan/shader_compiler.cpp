@@ -53,11 +53,6 @@ private:
 
 } // namespace
 
-const char* language_name(ShaderLanguage language)
-{
-    return language == ShaderLanguage::hlsl ? "hlsl" : "glsl";
-}
-
 std::string read_text_file(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);

@@ -9,11 +9,13 @@
 #include <utility>
 #include <vector>
 
+#include <ggxcl/vulkan.hpp>
+
 namespace ggxvk {
 
-enum class ShaderLanguage { glsl, hlsl };
+using ShaderLanguage = ggxcl::ShaderLanguage;
 inline constexpr ShaderLanguage all_shader_languages[] = {ShaderLanguage::glsl, ShaderLanguage::hlsl};
-const char* language_name(ShaderLanguage language);  // "glsl", "hlsl"
+inline const char* language_name(ShaderLanguage language) { return ggxcl::shader_language_name(language); }
 
 struct ShaderSource {
     ShaderLanguage language = ShaderLanguage::glsl;

@@ -13,6 +13,7 @@
 
 #include "distribution_check.hpp"
 #include "shader_samples.hpp"
+#include "vulkan_fixture.hpp"
 
 namespace {
 
@@ -23,19 +24,12 @@ constexpr int dielectric_nz = 24, dielectric_nphi = 48;
 
 ggxcl::SampleParams conductor(ggxcl::Method method)
 {
-    ggxcl::SampleParams p;
-    p.method = method;
-    p.alpha_x = 0.35f;
-    p.alpha_y = ggxcl::method_traits(method).isotropic_only ? 0.35f : 0.7f;
-    p.view = ggxcl::unit_vector({0.6f, 0.3f, 0.5f});
-    return p;
+    return ggxvk::chi_square_conductor(method);
 }
 
 ggxcl::SampleParams dielectric(ggxcl::Method method, float eta)
 {
-    ggxcl::SampleParams p = conductor(method);
-    p.eta = eta;
-    return p;
+    return ggxvk::chi_square_dielectric(method, eta);
 }
 
 // The p-value of the shader's conductor samples of `sampled` against `tested`'s pdf.

@@ -17,36 +17,28 @@
 
 #include "device_fixture.hpp"
 #include "distribution_check.hpp"
+#include "vulkan_fixture.hpp"
 
 namespace {
 
 using ggxcl::ShaderLanguage;
 
-constexpr ShaderLanguage languages[] = {ShaderLanguage::glsl, ShaderLanguage::hlsl};
+const auto& languages = ggxvk::all_shader_languages;
 constexpr std::uint64_t dielectric_samples = 400000;
 
 ggxcl::VulkanSampler& vulkan(ShaderLanguage language)
 {
-    static ggxcl::VulkanSampler* samplers[2] = {new ggxcl::VulkanSampler("", ShaderLanguage::glsl),
-                                                new ggxcl::VulkanSampler("", ShaderLanguage::hlsl)};
-    return *samplers[language == ShaderLanguage::hlsl ? 1 : 0];
+    return ggxvk::vulkan_sampler(language);
 }
 
 ggxcl::SampleParams conductor(ggxcl::Method method)
 {
-    ggxcl::SampleParams p;
-    p.method = method;
-    p.alpha_x = 0.35f;
-    p.alpha_y = ggxcl::method_traits(method).isotropic_only ? 0.35f : 0.7f;
-    p.view = ggxcl::unit_vector({0.6f, 0.3f, 0.5f});
-    return p;
+    return ggxvk::chi_square_conductor(method);
 }
 
 ggxcl::SampleParams dielectric(ggxcl::Method method, float eta)
 {
-    ggxcl::SampleParams p = conductor(method);
-    p.eta = eta;
-    return p;
+    return ggxvk::chi_square_dielectric(method, eta);
 }
 
 int tests_in_family()

@@ -25,6 +25,7 @@
 #include "device_fixture.hpp"
 #include "sample_agreement.hpp"
 #include "scratch.hpp"
+#include "vulkan_fixture.hpp"
 #include "vulkan/vulkan_compute.hpp"  // lib/src: the back end's dispatch_shape
 
 namespace {
@@ -32,17 +33,13 @@ namespace {
 using ggxcl::Field;
 using ggxcl::ShaderLanguage;
 
-constexpr ShaderLanguage languages[] = {ShaderLanguage::glsl, ShaderLanguage::hlsl};
+const auto& languages = ggxvk::all_shader_languages;
 const ggxcl::FieldSet every_field{Field::m, Field::o, Field::pdf_m, Field::pdf_o, Field::weight, Field::u};
 constexpr std::uint64_t agreement_samples = 1 << 15;
 
 ggxcl::VulkanSampler& vulkan(ShaderLanguage language)
 {
-    // Never destroyed: destroying the device unloads nothing, but lavapipe's
-    // threads outlive a destroyed device until exit.
-    static ggxcl::VulkanSampler* samplers[2] = {new ggxcl::VulkanSampler("", ShaderLanguage::glsl),
-                                                new ggxcl::VulkanSampler("", ShaderLanguage::hlsl)};
-    return *samplers[language == ShaderLanguage::hlsl ? 1 : 0];
+    return ggxvk::vulkan_sampler(language);
 }
 
 ggxcl::SampleParams request(ggxcl::Method method, float ax, float ay, double theta)

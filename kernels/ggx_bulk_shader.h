@@ -12,7 +12,7 @@
 #ifndef GGX_BULK_SHADER_H
 #define GGX_BULK_SHADER_H
 
-#include "ggx_bulk_sample.h"
+#include "ggx_request_shader.h"
 
 ggx_vec3 ggx_input3(ggx_uint at, ggx_uint j)
 {
@@ -32,42 +32,23 @@ void ggx_output3(ggx_uint at, ggx_uint j, ggx_vec3 v)
 // caller's uniforms with GGX_PER_SAMPLE_UNIFORMS (ggx_load_params in OpenCL C).
 ggx_params ggx_shader_params(ggx_uint j)
 {
-    ggx_params p;
+    ggx_params p = ggx_request_params();
 #if GGX_PER_SAMPLE_VIEW
     p.view = ggx_input3(request.view_at, j);
-#else
-    p.view = ggx_vec3_make(request.view_x, request.view_y, request.view_z);
 #endif
 #if GGX_PER_SAMPLE_ALPHA
     p.ax = inputs[request.alpha_at + j];
     p.ay = GGX_ISOTROPIC != 0 ? p.ax : inputs[request.alpha_at + request.stride + j];
-#else
-    p.ax = request.alpha_x;
-    p.ay = GGX_ISOTROPIC != 0 ? request.alpha_x : request.alpha_y;
 #endif
 #if GGX_PER_SAMPLE_NORMAL
     p.normal = ggx_input3(request.normal_at, j);
-#elif GGX_NORMAL_IS_Z
-    p.normal = ggx_vec3_make(0.0f, 0.0f, 1.0f);
-#else
-    p.normal = ggx_vec3_make(request.normal_x, request.normal_y, request.normal_z);
 #endif
 #if GGX_PER_SAMPLE_UNIFORMS
     p.u1 = inputs[request.uniforms_at + j];
     p.u2 = inputs[request.uniforms_at + request.stride + j];
     p.u3 = GGX_DIELECTRIC != 0 ? inputs[request.uniforms_at + 2u * request.stride + j] : 0.0f;
-#else
-    p.u1 = 0.0f;
-    p.u2 = 0.0f;
-    p.u3 = 0.0f;
 #endif
-    p.eta = request.eta;
     return p;
-}
-
-ggx_ulong ggx_words_to_ulong(ggx_uint lo, ggx_uint hi)
-{
-    return (ggx_to_ulong(hi) << 32) | ggx_to_ulong(lo);
 }
 
 // Sample `j` of the request (nothing past its count) into the requested fields.
@@ -75,9 +56,7 @@ void ggx_shader_sample_bulk(ggx_uint j)
 {
     if (j >= request.count)
         return;
-    const ggx_ulong seed = ggx_words_to_ulong(request.seed_lo, request.seed_hi);
-    const ggx_ulong first = ggx_words_to_ulong(request.first_lo, request.first_hi);
-    const ggx_params p = ggx_bulk_uniforms(seed, first, j, ggx_shader_params(j));
+    const ggx_params p = ggx_bulk_uniforms(ggx_request_seed(), ggx_request_first(), j, ggx_shader_params(j));
     const ggx_sample s = ggx_bulk_sample_of(p);
 #if GGX_WRITE_M
     ggx_output3(request.m_at, j, s.m);

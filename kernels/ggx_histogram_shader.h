@@ -15,37 +15,17 @@
 #ifndef GGX_HISTOGRAM_SHADER_H
 #define GGX_HISTOGRAM_SHADER_H
 
-#include "ggx_bulk_sample.h"
 #include "ggx_histogram_bin.h"
+#include "ggx_request_shader.h"
 
 #ifndef GGX_BIN_M
 #define GGX_BIN_M 0
 #endif
 
-ggx_ulong ggx_histogram_word_pair(ggx_uint lo, ggx_uint hi)
-{
-    return (ggx_to_ulong(hi) << 32) | ggx_to_ulong(lo);
-}
-
 // The counter of sample j of the launch.
 ggx_uint ggx_shader_sample_bin(ggx_uint j)
 {
-    ggx_params p;
-    p.view = ggx_vec3_make(request.view_x, request.view_y, request.view_z);
-    p.ax = request.alpha_x;
-    p.ay = GGX_ISOTROPIC != 0 ? request.alpha_x : request.alpha_y;
-#if GGX_NORMAL_IS_Z
-    p.normal = ggx_vec3_make(0.0f, 0.0f, 1.0f);
-#else
-    p.normal = ggx_vec3_make(request.normal_x, request.normal_y, request.normal_z);
-#endif
-    p.eta = request.eta;
-    p.u1 = 0.0f;
-    p.u2 = 0.0f;
-    p.u3 = 0.0f;
-    const ggx_ulong seed = ggx_histogram_word_pair(request.seed_lo, request.seed_hi);
-    const ggx_ulong first = ggx_histogram_word_pair(request.first_lo, request.first_hi);
-    const ggx_sample s = ggx_bulk_sample(seed, first, j, p);
+    const ggx_sample s = ggx_bulk_sample(ggx_request_seed(), ggx_request_first(), j, ggx_request_params());
     const ggx_uint bin = ggx_bin_of(GGX_BIN_M != 0 ? s.m : s.o);
 #if GGX_DIELECTRIC && !GGX_BIN_M
     return s.pdf_o > 0.0f ? bin : ggx_to_uint(GGX_BINS + 1);

@@ -12,6 +12,7 @@
 #include "ggxcl/error.hpp"
 #include "ggxcl/sampler.hpp"
 #include "device_contract.hpp"
+#include "furnace_sums.hpp"
 #include "kernel_launch.hpp"
 #include "queue_waits.hpp"
 #include "validated_params.hpp"
@@ -29,56 +30,7 @@ detail::ProgramVariant furnace_variant(const SampleParams& params, const DeviceI
     return detail::variant_of(detail::ProgramKind::furnace, params, detail::write_mask({Field::weight}), inputs);
 }
 
-// The planes of partial sums a launch writes: weights, squares, and a dielectric's reflected weights.
-std::size_t sum_planes(const SampleParams& params)
-{
-    return params.eta != 0.0f ? 3 : 2;
-}
-
-// The partial sums of one launch (`planes` planes of `items`) added in
-// double, in work-item order, to `total`; false, with `total` unchanged,
-// if one of them is not finite, unless `keep_any` adds them anyway.
-bool add_partial_sums(const std::vector<float>& host, std::size_t items, std::size_t planes, FurnaceSums& total,
-                      bool keep_any)
-{
-    FurnaceSums sums = total;
-    bool finite = true;
-    for (std::size_t g = 0; g < items; ++g) {
-        const float reflected = planes > 2 ? host[2 * items + g] : 0.0f;
-        finite = finite && std::isfinite(host[g]) && std::isfinite(host[items + g]) && std::isfinite(reflected);
-        sums.sum += host[g];
-        sums.sum_of_squares += host[items + g];
-        sums.reflected_sum += reflected;
-    }
-    if (finite || keep_any)
-        total = sums;
-    return finite;
-}
-
 } // namespace
-
-double FurnaceSums::mean() const
-{
-    return count ? sum / double(count) : 0.0;
-}
-
-double FurnaceSums::reflectance() const
-{
-    return count ? reflected_sum / double(count) : 0.0;
-}
-
-double FurnaceSums::transmittance() const
-{
-    return count ? (sum - reflected_sum) / double(count) : 0.0;
-}
-
-double FurnaceSums::variance() const
-{
-    if (count < 2)
-        return 0.0;
-    double m = mean();
-    return std::max(0.0, (sum_of_squares - double(count) * m * m) / double(count - 1));
-}
 
 std::size_t Sampler::furnace_items(std::uint64_t count) const
 {
@@ -98,7 +50,7 @@ cl::Event Sampler::enqueue_furnace(cl::CommandQueue& queue, const SampleParams& 
         throw InvalidArgument("count", std::to_string(range.count), "1 .. 2^31 per enqueue_furnace");
     return detail::translate_cl_errors([&] {
         detail::check_buffer_sizes(nullptr, inputs, *valid, range.count);
-        detail::check_buffer_size(sums, "sums", int(sum_planes(params)), furnace_items(range.count));
+        detail::check_buffer_size(sums, "sums", int(detail::furnace_sum_planes(params)), furnace_items(range.count));
         return launch_furnace(queue, furnace_variant(*valid, inputs), valid, range, sums, inputs, wait);
     });
 }
@@ -130,7 +82,7 @@ cl::Event Sampler::launch_furnace(cl::CommandQueue& queue, const detail::Program
 void Sampler::add_furnace_launch(const detail::ValidatedParams& params, const SampleRange& range,
                                  const cl::Buffer& sums, std::vector<float>& host, FurnaceSums& total)
 {
-    const std::size_t used = furnace_items(range.count), planes = sum_planes(*params);
+    const std::size_t used = furnace_items(range.count), planes = detail::furnace_sum_planes(*params);
     SampleParams unguarded = *params, guarded = *params;
     unguarded.guards = false;
     guarded.guards = true;
@@ -138,7 +90,7 @@ void Sampler::add_furnace_launch(const detail::ValidatedParams& params, const Sa
         launch_furnace(queue_, variant, params, range, sums, {}, nullptr);
         detail::read_and_wait(queue_, sums, 0, planes * used * sizeof(float), host.data());
         // One order of additions, whatever the launches; the guarded pass counts even if not finite.
-        if (add_partial_sums(host, used, planes, total, variant.guards) || variant.guards)
+        if (detail::add_furnace_partial_sums(host.data(), used, planes, total, variant.guards) || variant.guards)
             return;
     }
 }
@@ -152,7 +104,7 @@ FurnaceSums Sampler::furnace(const SampleParams& params, const SampleRange& rang
     detail::translate_cl_errors([&] {
         std::uint64_t start = 0, launch_size = std::min(samples_per_launch, range.count);
         auto run_launches = [&](std::uint64_t per_launch) {
-            std::size_t floats = sum_planes(*valid) * furnace_items(per_launch);
+            std::size_t floats = detail::furnace_sum_planes(*valid) * furnace_items(per_launch);
             cl::Buffer sums = detail::device_buffer(context_, CL_MEM_WRITE_ONLY, floats * sizeof(float));
             std::vector<float> host(floats);
             for (; start < range.count; start += per_launch) {  // start: the first sample not summed

@@ -60,7 +60,7 @@ VulkanDeviceInfo select_vulkan_device(const std::string& selector = "");
 // cached on disk as SPIR-V beside the OpenCL binaries (GGXCL_PROGRAM_CACHE).
 // A shader that does not compile is a BuildError naming its file and line.
 // Not yet on Vulkan: user samplers (InvalidArgument), the caller's buffers, pdf
-// and eval, the fused furnace.
+// and eval.
 // One VulkanSampler is used by one thread at a time.
 class VulkanSampler {
 public:
@@ -89,6 +89,10 @@ public:
     // counters fit the device's shared memory (InvalidArgument otherwise).
     Histogram histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
                         Field direction = Field::o);
+
+    // The fused white-furnace estimator, as Sampler::furnace: the same
+    // samples per invocation, so the sums do not depend on the chunk size.
+    FurnaceSums furnace(const SampleParams& params, const SampleRange& range);
 
     std::size_t shaders_built() const;     // pipelines made so far
     std::size_t shaders_from_disk() const;  // of those, SPIR-V read from the cache

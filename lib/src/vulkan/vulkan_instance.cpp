@@ -110,8 +110,11 @@ std::string lowercase(std::string text)
 
 std::shared_ptr<VulkanInstance> vulkan_instance()
 {
+    // Never destroyed: the loader (dlopen'ed by vk::raii::Context) stays loaded to the end, so a
+    // sampler destroyed by another static's destructor still finds its instance, and LeakSanitizer
+    // can name the driver's frames.
     static std::mutex mutex;
-    static std::shared_ptr<VulkanInstance> shared;
+    static std::shared_ptr<VulkanInstance>& shared = *new std::shared_ptr<VulkanInstance>;
     std::lock_guard<std::mutex> lock(mutex);
     if (!shared) {
         try {

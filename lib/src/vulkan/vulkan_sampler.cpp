@@ -4,12 +4,14 @@
 // by chunk through two mapped buffers: the per-sample inputs' planes and the
 // requested fields' planes.  A histogram runs the histogram shader
 // (kernels/ggx_histogram.comp or .hlsl) in passes whose 32-bit counts are
-// summed on the host.
+// summed on the host; the furnace the furnace shader (ggx_furnace.comp or
+// .hlsl), whose partial sums are added on the host as OpenCL's are.
 #include <algorithm>
 #include <cstring>
 #include <map>
 
 #include "device_contract.hpp"
+#include "furnace_sums.hpp"
 #include "histogram_bins.hpp"
 #include "planar_inputs.hpp"
 #include "program_variant.hpp"
@@ -104,7 +106,7 @@ struct VulkanSampler::State {
             return found->second;
         detail::ShaderDefines defines = detail::variant_define_list(variant);
         defines.emplace_back("GGX_GROUP_SIZE", long(group_size));
-        const std::string file = std::string(variant.kind == detail::ProgramKind::histogram ? "ggx_histogram" : "ggx_bulk") +
+        const std::string file = std::string("ggx_") + detail::program_kind_name(variant.kind) +
                                  (language == ShaderLanguage::hlsl ? ".hlsl" : ".comp");
         const detail::CompiledShader shader = detail::compile_shader(language, file, defines);
         from_disk += shader.from_disk ? 1 : 0;
@@ -267,6 +269,47 @@ Histogram VulkanSampler::histogram(const SampleParams& params, const SampleRange
         }
     });
     return result;
+}
+
+// Dispatches of the furnace shader whose partial sums are added in double:
+// each unguarded first, and again with the guards if a sum is not finite.
+FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange& range)
+{
+    const detail::ValidatedParams valid = detail::validated(params);
+    validate(range);
+    refuse_user_sampler(params);
+    State& s = *state_;
+    const std::uint64_t per_item = detail::furnace_per_item, planes = detail::furnace_sum_planes(*valid);
+    // Samples per dispatch: a multiple of the samples per invocation, their sums within one storage buffer.
+    const std::uint64_t items_fit = device().max_storage_buffer_range / sizeof(float) / planes;
+    const std::uint64_t per_dispatch = std::max(per_item, std::min(s.chunk_size, items_fit * per_item) / per_item * per_item);
+    FurnaceSums total;
+    total.count = range.count;
+    translate_vulkan_errors(device().name, [&] {
+        detail::MappedBuffer unused = s.compute->buffer(1), sums = s.compute->buffer(planes * (per_dispatch / per_item));
+        BulkRequest request = request_of(*valid, range.seed);
+        for (std::uint64_t done = 0; done < range.count;) {
+            const std::uint64_t n = std::min(per_dispatch, range.count - done), items = (n + per_item - 1) / per_item;
+            request.first_lo = low_word(range.first + done);
+            request.first_hi = high_word(range.first + done);
+            request.count = std::uint32_t(n);
+            request.stride = std::uint32_t(items);
+            const detail::DispatchShape shape =
+                detail::dispatch_shape(items, group_size, device().max_work_groups_x, device().max_work_groups_y);
+            request.row_width = shape.row_width;
+            for (bool guards : {false, true}) {
+                SampleParams p = *valid;
+                p.guards = guards;
+                const detail::ProgramVariant variant =
+                    detail::variant_of(detail::ProgramKind::furnace, p, detail::write_mask({Field::weight}));
+                s.compute->dispatch(s.pipeline(variant), &request, sizeof request, unused, sums, shape);
+                if (detail::add_furnace_partial_sums(sums.data, std::size_t(items), std::size_t(planes), total, guards))
+                    break;
+            }
+            done += n;
+        }
+    });
+    return total;
 }
 
 } // namespace ggxcl

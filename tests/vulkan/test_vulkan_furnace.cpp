@@ -1,0 +1,91 @@
+// test_vulkan_furnace.cpp - the fused white-furnace estimator on a Vulkan
+// device (VulkanSampler::furnace, kernels/ggx_furnace.comp and .hlsl;
+// lavapipe in CI), in GLSL and HLSL:
+//   - every method's sums, conductor and dielectric, agree with OpenCL's
+//     furnace of the same request (the same samples, float rounding apart):
+//     the albedo, its per-sample variance and a dielectric's reflectance;
+//   - the sums are bit-identical however the range is split into
+//     dispatches (chunk sizes, counts not a multiple of the samples per
+//     invocation), and a range's halves sum to the whole;
+//   - negative control: another seed moves the sums by more than the tolerance.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "device_fixture.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace {
+
+using ggxcl::ShaderLanguage;
+
+constexpr std::uint64_t samples = 200003;  // not a multiple of the samples per invocation
+constexpr double tolerance = 2e-5;  // relative: float weights summed per invocation, then in double
+
+void check_close(double vulkan, double opencl, const char* what)
+{
+    INFO(what << ": Vulkan " << vulkan << ", OpenCL " << opencl);
+    CHECK(std::fabs(vulkan - opencl) <= tolerance * std::fabs(opencl) + 1e-12);
+}
+
+void check_against_opencl(ShaderLanguage language, const ggxcl::SampleParams& p)
+{
+    const ggxcl::SampleRange range{11, 5, samples};
+    const ggxcl::FurnaceSums vk = ggxvk::vulkan_sampler(language).furnace(p, range);
+    const ggxcl::FurnaceSums cl = ggxtest::sampler().furnace(p, range);
+    CHECK(vk.count == samples);
+    check_close(vk.mean(), cl.mean(), "albedo");
+    check_close(vk.sum_of_squares, cl.sum_of_squares, "sum of squares");
+    check_close(vk.reflected_sum, cl.reflected_sum, "reflected sum");
+    CHECK(vk.mean() > 0.3);  // energy kept: 0.64 for the conductor, 0.42 for the dielectric in radiance
+    CHECK(vk.mean() <= 1.0);
+}
+
+} // namespace
+
+TEST_CASE("every method's furnace on Vulkan agrees with OpenCL's, conductor and dielectric")
+{
+    for (ShaderLanguage language : ggxvk::all_shader_languages)
+        for (ggxcl::Method method : ggxcl::all_methods) {
+            CAPTURE(std::string(ggxcl::shader_language_name(language)));
+            CAPTURE(ggxcl::method_name(method));
+            check_against_opencl(language, ggxvk::chi_square_conductor(method));
+            if (ggxcl::method_traits(method).dielectric)
+                check_against_opencl(language, ggxvk::chi_square_dielectric(method, 1.5f));
+        }
+}
+
+TEST_CASE("the furnace's sums do not depend on how the range is split into dispatches")
+{
+    for (ShaderLanguage language : ggxvk::all_shader_languages) {
+        CAPTURE(std::string(ggxcl::shader_language_name(language)));
+        ggxcl::VulkanSampler& vk = ggxvk::vulkan_sampler(language);
+        const ggxcl::SampleParams p = ggxvk::chi_square_dielectric(ggxcl::Method::caps, 1.33f);
+        const ggxcl::SampleRange range{3, 64, samples};
+        const std::uint64_t chunk = vk.chunk_size();
+        const ggxcl::FurnaceSums whole = vk.furnace(p, range);
+        for (std::uint64_t size : {std::uint64_t(8), std::uint64_t(4096), std::uint64_t(50001)}) {
+            CAPTURE(size);
+            vk.set_chunk_size(size);  // 50001: rounded down to a multiple of the samples per invocation
+            const ggxcl::FurnaceSums split = vk.furnace(p, range);
+            CHECK(split.sum == whole.sum);
+            CHECK(split.sum_of_squares == whole.sum_of_squares);
+            CHECK(split.reflected_sum == whole.reflected_sum);
+        }
+        vk.set_chunk_size(chunk);
+        // Halves that start at a multiple of the samples per invocation sum to the whole.
+        const std::uint64_t half = 100000;
+        const ggxcl::FurnaceSums first = vk.furnace(p, {3, 64, half});
+        const ggxcl::FurnaceSums second = vk.furnace(p, {3, 64 + half, samples - half});
+        CHECK(std::fabs(first.sum + second.sum - whole.sum) <= 1e-9 * whole.sum);
+    }
+}
+
+TEST_CASE("negative control: another seed moves the furnace's sums past the tolerance")
+{
+    const ggxcl::SampleParams p = ggxvk::chi_square_conductor(ggxcl::Method::heitz);
+    ggxcl::VulkanSampler& vk = ggxvk::vulkan_sampler(ShaderLanguage::glsl);
+    const ggxcl::FurnaceSums a = vk.furnace(p, {11, 5, samples}), b = vk.furnace(p, {12, 5, samples});
+    CHECK(std::fabs(a.sum_of_squares - b.sum_of_squares) > tolerance * std::fabs(a.sum_of_squares));
+}

@@ -24,7 +24,9 @@
 #include "bench_plan.hpp"
 #include "bench_report.hpp"
 #include "bench_startup.hpp"
+#include "api_options.hpp"
 #include "bench_apps.hpp"
+#include "bench_vulkan.hpp"
 #include "bench_enqueue.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
@@ -353,6 +355,34 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
     write_outputs(cmd, report);
 }
 
+// --api vulkan: the write and furnace jobs on the Vulkan device beside the OpenCL one.
+void run_vulkan_bench(const BenchCommand& cmd, const BenchPlan& plan, const ApiChoice& api)
+{
+    for (const auto& [path, flag] : {std::pair{cmd.csv, "--csv"}, {cmd.markdown, "--markdown"}})
+        if (!path.empty())
+            check_writable_folder(flag, path);
+    const ApiBenchReport report = measure_api_bench(plan, api.selector, api.language);
+    if (!cmd.csv.empty())
+        write_text_file(cmd.csv, api_bench_csv(report));
+    const std::string md = api_bench_markdown(report);
+    if (!cmd.markdown.empty())
+        write_text_file(cmd.markdown, md);
+    std::cout << md;
+}
+
+// The plan of --api vulkan: its jobs (write and furnace by default), and no option it cannot honour.
+BenchPlan vulkan_plan(const BenchCommand& cmd, BenchPlan plan, bool jobs_given)
+{
+    for (const auto& [value, flag] : {std::pair{cmd.charts, "--charts"}, {cmd.html, "--html"}})
+        if (!value.empty())
+            throw UsageError(flag, value, "no charts or page with --api vulkan (its report is --markdown and --csv)");
+    if (!cmd.user.files.empty())
+        throw UsageError("--sampler", cmd.user.files.front(),
+                         "built-in methods with --api vulkan (user samplers run on OpenCL for now)");
+    plan.jobs = vulkan_bench_jobs(plan.jobs, jobs_given);
+    return plan;
+}
+
 // The speed runs: every method in every precision mode, and with --eta every method but bounded
 // as a dielectric.
 std::vector<Batch> timed_batches(const BenchPlan& plan)
@@ -393,8 +423,9 @@ Prepare add_bench_command(CLI::App& app)
     cmd->add_option("--precisions", s->precisions, "comma-separated precision modes")->capture_default_str();
     cmd->add_option("--sequences", s->sequences, "sequences of uniforms timed in precise mode (write and furnace "
                                                  "jobs): philox (always), sobol")->capture_default_str();
-    cmd->add_option("--jobs", s->jobs, "comma-separated jobs: write (m + pdf_m), furnace (fused estimator), "
-                                       "world (world-space o), per-sample (a view and alpha per sample read)")->capture_default_str();
+    CLI::Option* jobs = cmd->add_option("--jobs", s->jobs, "comma-separated jobs: write (m + pdf_m), furnace (fused estimator), "
+                                       "world (world-space o), per-sample (a view and alpha per sample read); with "
+                                       "--api vulkan write and furnace")->capture_default_str();
     cmd->add_option("-n,--count", s->count, "samples per timed device run")->capture_default_str();
     cmd->add_option("--native-count", s->native_count, "samples per timed native run")->capture_default_str();
     cmd->add_option("--repeats", s->repeats, "timed runs per row, 5..101 (median reported)")->capture_default_str();
@@ -418,10 +449,17 @@ Prepare add_bench_command(CLI::App& app)
     cmd->add_option("--charts", s->charts, "write PREFIX-speed-error.png and PREFIX-speed-rmse.png");
     cmd->add_option("--markdown", s->markdown, "write the report to this Markdown file");
     cmd->add_option("--html", s->html, "write the report as a web page (with its charts; beside it unless --charts)");
-    return [cmd, s]() -> std::optional<Work> {
+    auto api = std::make_shared<ApiOptions>();
+    api->add_to(*cmd);
+    return [cmd, s, api, jobs]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
         BenchPlan plan = plan_bench(*s);
+        const ApiChoice choice = api->choose(s->device);
+        if (choice.vulkan) {
+            plan = vulkan_plan(*s, plan, jobs->count() > 0);
+            return Work{[s, plan, choice] { run_vulkan_bench(*s, plan, choice); }, timed_batches(plan)};
+        }
         return Work{[s, plan] { run_bench(*s, plan); }, timed_batches(plan)};
     };
 }

@@ -10,6 +10,9 @@
 //   - `ggx histogram --api vulkan --check` passes, GLSL and HLSL, conductor and
 //     dielectric, and its summary names the API; negative control: the same
 //     counts tested --against another method's pdf fail (exit 1);
+//   - `ggx bench --api vulkan` (GLSL and HLSL) times the write and furnace jobs
+//     on Vulkan and OpenCL and writes their rows and ratio (CSV, Markdown);
+//     --jobs world and --html are refused with it;
 //   - usage errors (exit 2, naming the flag): --shader-language without
 //     Vulkan, --api opencl with a vulkan: device, --devices with Vulkan,
 //     --sampler with Vulkan, an unknown API;
@@ -19,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include <ggxcl/ggxcl.hpp>
@@ -148,6 +152,48 @@ TEST_CASE("ggx histogram --api vulkan --check passes, and fails against another 
                                                     (scratch / "w").string(), scratch / "err.txt");
     CHECK(wrong.status == 1);
     CHECK(wrong.err.find("below --check") != std::string::npos);
+}
+
+TEST_CASE("ggx bench --api vulkan times each job on Vulkan and OpenCL, with their ratio")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    for (const std::string language : {"glsl", "hlsl"}) {
+        const fs::path csv = scratch / ("bench-" + language + ".csv"), md = scratch / ("bench-" + language + ".md");
+        const ggxtest::Run run = ggxtest::run_ggx("bench --api vulkan --shader-language " + language +
+                                                      " -n 2^12 --repeats 5 --methods caps,ndf --precisions precise "
+                                                      "--eta 1.5 --csv " + csv.string() + " --markdown " + md.string(),
+                                                  scratch / "err.txt");
+        CAPTURE(language);
+        CAPTURE(run.err);
+        REQUIRE(run.status == 0);
+        std::istringstream rows(ggxtest::read_all(csv));
+        std::string line;
+        std::getline(rows, line);
+        CHECK(line.rfind("method,precision,job,eta,vulkan_ns", 0) == 0);
+        int count = 0;
+        while (std::getline(rows, line)) {
+            ++count;
+            CAPTURE(line);
+            std::vector<std::string> cells;
+            std::istringstream fields(line);
+            for (std::string cell; std::getline(fields, cell, ',');)
+                cells.push_back(cell);
+            REQUIRE(cells.size() >= 11);
+            CHECK(std::stod(cells[4]) > 0.0);   // Vulkan ns per sample
+            CHECK(std::stod(cells[7]) > 0.0);   // OpenCL's
+            CHECK(std::stod(cells[10]) > 0.0);  // their ratio
+        }
+        CHECK(count == 6);  // caps and ndf: write, furnace, the dielectric's furnace
+        const std::string report = ggxtest::read_all(md);
+        CHECK(report.find("| Vulkan / OpenCL |") != std::string::npos);
+        CHECK(report.find("shaders in " + language) != std::string::npos);
+    }
+    for (const std::string& args : {std::string("--jobs world"), "--html " + (scratch / "b.html").string()}) {
+        const ggxtest::Run run = ggxtest::run_ggx("bench --api vulkan -n 2^12 " + args, scratch / "err.txt");
+        CAPTURE(args);
+        CHECK(run.status == 2);
+        CHECK(run.err.find(args.substr(0, args.find(' '))) != std::string::npos);
+    }
 }
 
 TEST_CASE("usage errors with Vulkan name the flag (exit 2)")

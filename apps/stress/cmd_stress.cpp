@@ -14,6 +14,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "api_options.hpp"
 #include "atomic_file.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
@@ -32,6 +33,7 @@ struct StressCommand {
     std::string methods = "all", precision = "precise", device, out, eta, html;
     UserSamplerOptions user;
     bool no_png = false;
+    ApiOptions api;
 };
 
 std::vector<ggxcl::Method> parse_methods(const std::string& text)
@@ -131,6 +133,7 @@ struct StressPlan {
     std::vector<std::shared_ptr<const ggxcl::UserSampler>> users;  // their device maps after the methods
     ggxcl::Precision precision = ggxcl::Precision::precise;
     std::vector<float> etas;  // empty: the conductor's map
+    ApiChoice api;
 };
 
 StressPlan plan_stress(const StressCommand& cmd)
@@ -148,6 +151,10 @@ StressPlan plan_stress(const StressCommand& cmd)
     if (!plan.users.empty() && !plan.etas.empty())
         throw UsageError("--eta", cmd.eta,
                          "no --eta with --sampler: " + std::string(ggxcl::method_traits(ggxcl::Method::user).limits));
+    plan.api = cmd.api.choose(cmd.device);
+    if (plan.api.vulkan && !plan.users.empty())
+        throw UsageError("--sampler", cmd.user.files.front(),
+                         "built-in methods with --api vulkan (user samplers run on OpenCL for now)");
     return plan;
 }
 
@@ -173,7 +180,7 @@ void write_headers(std::ostringstream& csv, std::ostream& out)
     print_table_header(out, "method", failure_kinds, failure_name);
 }
 
-void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Sampler& sampler, std::ostream& out)
+void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, StressDevice sampler, std::ostream& out)
 {
     StressAxes axes = stress_axes();
     std::ostringstream csv;
@@ -221,7 +228,7 @@ void print_eta_totals(std::ostream& out, const StressAxes& axes, const std::vect
         }
 }
 
-void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Sampler& sampler, std::ostream& out)
+void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, StressDevice sampler, std::ostream& out)
 {
     StressAxes axes = dielectric_axes(plan.etas);
     std::ostringstream csv;
@@ -291,17 +298,24 @@ void run_stress(const StressCommand& cmd, const StressPlan& plan)
     check_writable_folder("--out", cmd.out + ".csv");
     if (!cmd.html.empty())
         check_writable_folder("--html", cmd.html);
-    ggxcl::Sampler sampler(cmd.device);
+    std::unique_ptr<ggxcl::Sampler> opencl;
+    std::unique_ptr<ggxcl::VulkanSampler> vulkan;
+    if (plan.api.vulkan)
+        vulkan = std::make_unique<ggxcl::VulkanSampler>(plan.api.selector, plan.api.language);
+    else
+        opencl = std::make_unique<ggxcl::Sampler>(cmd.device);
+    const StressDevice device = vulkan ? StressDevice(*vulkan) : StressDevice(*opencl);
     std::ostringstream totals;
     if (plan.etas.empty())
-        run_conductor_stress(cmd, plan, sampler, totals);
+        run_conductor_stress(cmd, plan, device, totals);
     else
-        run_dielectric_stress(cmd, plan, sampler, totals);
+        run_dielectric_stress(cmd, plan, device, totals);
     std::cout << totals.str();
     if (!cmd.no_png)
         run_plot_script("plot_stress.py", {cmd.out + ".csv", cmd.out});
+    const std::string name = device.name() + (plan.api.vulkan ? " (" + plan.api.name() + ")" : "");
     if (!cmd.html.empty())
-        write_markdown_page(cmd.html, stress_markdown(cmd, plan, sampler.device_name(), totals.str()));
+        write_markdown_page(cmd.html, stress_markdown(cmd, plan, name, totals.str()));
 }
 
 } // namespace
@@ -323,6 +337,7 @@ Prepare add_stress_command(CLI::App& app)
     cmd->add_option("--out", s->out, "output prefix: PREFIX.csv and PREFIX-METHOD.png; required");
     cmd->add_flag("--no-png", s->no_png, "write the CSV only (no Python needed)");
     cmd->add_option("--html", s->html, "write a web page of the totals and the maps");
+    s->api.add_to(*cmd);
     return [cmd, s]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;

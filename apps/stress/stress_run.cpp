@@ -125,13 +125,27 @@ std::array<bool, failure_kinds> classify(const StressOutcome& s, const ggxcl::Ve
     return kinds;
 }
 
-StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+std::string StressDevice::name() const
+{
+    return opencl_ ? opencl_->device_name() : vulkan_->device_name();
+}
+
+std::vector<float> StressDevice::run(ggxcl::Method method, ggxcl::Precision precision, bool guards, bool dielectric,
+                                     const ggxcl::UserSampler* user, const std::vector<float>& in, std::size_t count,
+                                     int output_planes) const
+{
+    if (vulkan_)  // one SPIR-V for every precision mode
+        return vulkan_->stress(method, guards, dielectric, in, std::uint32_t(count));
+    const std::string defines = stress_defines(method, guards, user) + (dielectric ? " -DGGX_DIELECTRIC=1" : "");
+    return run_stress_kernel(*opencl_, stress_options(opencl_->device(), defines, precision), in, count, output_planes);
+}
+
+StressMap device_stress_map(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards,
                             const ggxcl::UserSampler* user)
 {
     const std::size_t n = cases.size();
-    const std::string options = stress_options(sampler.device(), stress_defines(method, guards, user), precision);
-    std::vector<float> out = run_stress_kernel(sampler, options, planar_inputs(cases), n, output_planes);
+    std::vector<float> out = device.run(method, precision, guards, false, user, planar_inputs(cases), n, output_planes);
     StressMap map(axes.alphas.size() * axes.cos_theta.size());
     for (std::size_t j = 0; j < n; ++j) {
         auto at = [&](int k) { return double(out[k * n + j]); };
@@ -344,8 +358,6 @@ void count(Map& map, const StressAxes& axes, const StressCase& c, const StressOu
         cell.failures[k] += found[k];
 }
 
-std::string defines(ggxcl::Method method, bool guards) { return stress_defines(method, guards) + " -DGGX_DIELECTRIC=1"; }
-
 namespace {
 
 std::vector<float> planar_inputs(const std::vector<StressCase>& cases)
@@ -364,12 +376,11 @@ std::vector<float> planar_inputs(const std::vector<StressCase>& cases)
 
 } // namespace
 
-std::vector<StressOutcome> device_outcomes(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+std::vector<StressOutcome> device_outcomes(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
                                            const std::vector<StressCase>& cases, bool guards)
 {
     const std::size_t n = cases.size();
-    const std::string options = stress_options(sampler.device(), defines(method, guards), precision);
-    std::vector<float> out = run_stress_kernel(sampler, options, planar_inputs(cases), n, output_planes);
+    std::vector<float> out = device.run(method, precision, guards, true, nullptr, planar_inputs(cases), n, output_planes);
     std::vector<StressOutcome> outcomes(n);
     for (std::size_t j = 0; j < n; ++j) {
         auto at = [&](int k) { return double(out[k * n + j]); };
@@ -378,10 +389,10 @@ std::vector<StressOutcome> device_outcomes(ggxcl::Sampler& sampler, ggxcl::Metho
     return outcomes;
 }
 
-Map device_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+Map device_map(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
                const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
 {
-    return map_of(device_outcomes(sampler, method, precision, cases, guards), cases, axes);
+    return map_of(device_outcomes(device, method, precision, cases, guards), cases, axes);
 }
 
 std::vector<StressOutcome> host_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases)

@@ -48,9 +48,28 @@ using CellCounts = Counts<failure_kinds>;
 // Counts per cell, row-major: cell (row, column) at row * columns + column.
 using StressMap = std::vector<CellCounts>;
 
+// Where the map's cases run: kernels/ggx_stress.cl on an OpenCL device, or
+// its shader (ggx_stress.comp, .hlsl) on a Vulkan one (`--api vulkan`; the
+// built-in methods alone).  Made from either sampler, which it borrows.
+class StressDevice {
+public:
+    StressDevice(ggxcl::Sampler& sampler) : opencl_(&sampler) {}
+    StressDevice(ggxcl::VulkanSampler& sampler) : vulkan_(&sampler) {}
+    std::string name() const;
+    // The kernel for `method` (a user sampler's with `user`) over `count`
+    // cases of planar inputs (in[k * count + j]): its `output_planes` planes.
+    std::vector<float> run(ggxcl::Method method, ggxcl::Precision precision, bool guards, bool dielectric,
+                           const ggxcl::UserSampler* user, const std::vector<float>& in, std::size_t count,
+                           int output_planes) const;
+
+private:
+    ggxcl::Sampler* opencl_ = nullptr;
+    ggxcl::VulkanSampler* vulkan_ = nullptr;
+};
+
 // guards = false builds the kernel with GGX_GUARDS=0 (what the map looks like without them).
 // Method::user runs `user`'s device functions.
-StressMap device_stress_map(ggxcl::Sampler& sampler, ggxcl::Method method, ggxcl::Precision precision,
+StressMap device_stress_map(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true,
                             const ggxcl::UserSampler* user = nullptr);
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);

@@ -22,8 +22,8 @@ inline bool is_shader_only_header(const std::string& file) { return ends_with(fi
 // A header included only by the bulk kernels and shaders, built with their switches.
 inline bool is_kernel_only_header(const std::string& file)
 {
-    static const std::array<const char*, 4> names = {"ggx_kernel_io.h", "ggx_bulk_params.h", "ggx_bulk_sample.h",
-                                                     "ggx_histogram_bin.h"};
+    static const std::array<const char*, 5> names = {"ggx_kernel_io.h", "ggx_bulk_params.h", "ggx_bulk_sample.h",
+                                                     "ggx_histogram_bin.h", "ggx_stress_case.h"};
     return std::find(names.begin(), names.end(), file) != names.end();
 }
 

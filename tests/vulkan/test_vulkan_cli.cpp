@@ -13,6 +13,8 @@
 //   - `ggx bench --api vulkan` (GLSL and HLSL) times the write and furnace jobs
 //     on Vulkan and OpenCL and writes their rows and ratio (CSV, Markdown);
 //     --jobs world and --html are refused with it;
+//   - `ggx stress --api vulkan` writes the map (CSV, page naming the Vulkan
+//     device), conductor and dielectric, GLSL and HLSL;
 //   - usage errors (exit 2, naming the flag): --shader-language without
 //     Vulkan, --api opencl with a vulkan: device, --devices with Vulkan,
 //     --sampler with Vulkan, an unknown API;
@@ -193,6 +195,23 @@ TEST_CASE("ggx bench --api vulkan times each job on Vulkan and OpenCL, with thei
         CAPTURE(args);
         CHECK(run.status == 2);
         CHECK(run.err.find(args.substr(0, args.find(' '))) != std::string::npos);
+    }
+}
+
+TEST_CASE("ggx stress --api vulkan writes the map of every method asked, conductor and dielectric")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    for (const std::string args : {"--methods caps,ndf", "--methods heitz --eta 1.5 --shader-language hlsl"}) {
+        const ggxtest::Run run = ggxtest::run_ggx("stress --api vulkan --no-png " + args + " --out " +
+                                                      (scratch / "s").string() + " --html " + (scratch / "s.html").string(),
+                                                  scratch / "err.txt");
+        CAPTURE(args);
+        CAPTURE(run.err);
+        REQUIRE(run.status == 0);
+        const std::string csv = ggxtest::read_all(scratch / "s.csv");
+        CHECK(csv.find("\n" + args.substr(10, 4)) != std::string::npos);  // the first method's rows
+        CHECK(csv.find(",device,") != std::string::npos);
+        CHECK(ggxtest::read_all(scratch / "s.html").find("vulkan:") != std::string::npos);
     }
 }
 

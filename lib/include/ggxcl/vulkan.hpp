@@ -94,6 +94,14 @@ public:
     // samples per invocation, so the sums do not depend on the chunk size.
     FurnaceSums furnace(const SampleParams& params, const SampleRange& range);
 
+    // The stability map's cases (`ggx stress`): kernels/ggx_stress.comp or
+    // .hlsl for `method`, with or without the guards, a rough dielectric's
+    // with `dielectric`, over `count` cases of planar inputs as
+    // ggx_stress.cl reads them (in[k * count + j]: 10 planes, 12 for a
+    // dielectric); returns its output planes (10, 11 for a dielectric) alike.
+    std::vector<float> stress(Method method, bool guards, bool dielectric, const std::vector<float>& in,
+                              std::uint32_t count);
+
     std::size_t shaders_built() const;     // pipelines made so far
     std::size_t shaders_from_disk() const;  // of those, SPIR-V read from the cache
 

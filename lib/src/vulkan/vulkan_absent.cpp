@@ -37,6 +37,8 @@ void VulkanSampler::generate_chunks(const SampleParams&, const SampleRange&, Fie
     not_built();
 }
 Histogram VulkanSampler::histogram(const SampleParams&, const SampleRange&, int, int, Field) { not_built(); }
+FurnaceSums VulkanSampler::furnace(const SampleParams&, const SampleRange&) { not_built(); }
+std::vector<float> VulkanSampler::stress(Method, bool, bool, const std::vector<float>&, std::uint32_t) { not_built(); }
 std::size_t VulkanSampler::shaders_built() const { not_built(); }
 std::size_t VulkanSampler::shaders_from_disk() const { not_built(); }
 

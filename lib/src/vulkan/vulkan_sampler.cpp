@@ -95,22 +95,30 @@ struct VulkanSampler::State {
     std::unique_ptr<detail::VulkanCompute> compute;
     ShaderLanguage language = ShaderLanguage::glsl;
     std::uint64_t chunk_size = 1u << 20;
-    std::map<std::string, vk::raii::Pipeline> pipelines;  // by variant key
+    std::map<std::string, vk::raii::Pipeline> pipelines;  // by program and defines
     std::size_t from_disk = 0;
 
-    const vk::raii::Pipeline& pipeline(const detail::ProgramVariant& variant)
+    // The pipeline of shader `program` (kernels/<program>.comp or .hlsl) built with `defines`.
+    const vk::raii::Pipeline& shader_pipeline(const std::string& program, detail::ShaderDefines defines)
     {
-        const std::string key = detail::variant_key(variant);
+        defines.emplace_back("GGX_GROUP_SIZE", long(group_size));
+        std::string key = program;
+        for (const auto& [name, value] : defines)
+            key += " " + name + "=" + std::to_string(value);
         auto found = pipelines.find(key);
         if (found != pipelines.end())
             return found->second;
-        detail::ShaderDefines defines = detail::variant_define_list(variant);
-        defines.emplace_back("GGX_GROUP_SIZE", long(group_size));
-        const std::string file = std::string("ggx_") + detail::program_kind_name(variant.kind) +
-                                 (language == ShaderLanguage::hlsl ? ".hlsl" : ".comp");
+        const std::string file = program + (language == ShaderLanguage::hlsl ? ".hlsl" : ".comp");
         const detail::CompiledShader shader = detail::compile_shader(language, file, defines);
         from_disk += shader.from_disk ? 1 : 0;
         return pipelines.emplace(key, compute->pipeline(shader.spirv)).first->second;
+    }
+
+    // A request variant's: the shader of its kind with its switches.
+    const vk::raii::Pipeline& pipeline(const detail::ProgramVariant& variant)
+    {
+        return shader_pipeline(std::string("ggx_") + detail::program_kind_name(variant.kind),
+                               detail::variant_define_list(variant));
     }
 
     // Samples per chunk: the chunk size, within one storage buffer of the device.
@@ -310,6 +318,43 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
         }
     });
     return total;
+}
+
+std::vector<float> VulkanSampler::stress(Method method, bool guards, bool dielectric, const std::vector<float>& in,
+                                         std::uint32_t count)
+{
+    if (method == Method::user)
+        throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
+    const std::uint64_t in_planes = dielectric ? 12 : 10, out_planes = dielectric ? 11 : 10;
+    if (in.size() != in_planes * count)
+        throw InvalidArgument("stress inputs", std::to_string(in.size()) + " floats",
+                              std::to_string(in_planes * count) + " (" + std::to_string(in_planes) + " planes of " +
+                                  std::to_string(count) + " cases)");
+    State& s = *state_;
+    const detail::ShaderDefines defines = {{"GGX_METHOD", detail::method_id(method)}, {"GGX_GUARDS", guards ? 1 : 0},
+                                           {"GGX_DIELECTRIC", dielectric ? 1 : 0}};
+    const std::uint64_t capacity = s.capacity(in_planes);
+    std::vector<float> out(out_planes * count);
+    translate_vulkan_errors(device().name, [&] {
+        const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_stress", defines);
+        detail::MappedBuffer inputs = s.compute->buffer(in_planes * capacity);
+        detail::MappedBuffer outputs = s.compute->buffer(out_planes * capacity);
+        BulkRequest request{};
+        for (std::uint64_t start = 0; start < count;) {  // the planes of cases [start, start + n) packed
+            const std::uint64_t n = std::min<std::uint64_t>(capacity, count - start);
+            for (std::uint64_t k = 0; k < in_planes; ++k)
+                std::copy_n(in.begin() + std::ptrdiff_t(k * count + start), n, inputs.data + k * n);
+            request.count = std::uint32_t(n);
+            const detail::DispatchShape shape =
+                detail::dispatch_shape(n, group_size, device().max_work_groups_x, device().max_work_groups_y);
+            request.row_width = shape.row_width;
+            s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
+            for (std::uint64_t k = 0; k < out_planes; ++k)
+                std::copy_n(outputs.data + k * n, n, out.begin() + std::ptrdiff_t(k * count + start));
+            start += n;
+        }
+    });
+    return out;
 }
 
 } // namespace ggxcl

@@ -1,7 +1,8 @@
-// ggx_stress.comp - the stress shader in GLSL 4.50 (Vulkan): the
-// request as push constants, the inputs and outputs as storage buffers, and
-// ggx_stress_shader.h's body per invocation (`ggx stress --api vulkan`).  The runtime
-// compiles it with shaderc after "#version 450" and the defines of ggx_stress.cl
+// ggx_stress.comp - the stress shader in GLSL 4.50 (Vulkan; `ggx stress
+// --api vulkan`): the request as push constants, the cases' inputs and
+// outputs as storage buffers, and ggx_stress_shader.h's body per
+// invocation.  The runtime compiles it with shaderc after "#version 450"
+// and the defines of ggx_stress.cl (GGX_METHOD, GGX_GUARDS, GGX_DIELECTRIC)
 // and GGX_GROUP_SIZE.
 #extension GL_GOOGLE_include_directive : require
 #include "ggx_contract.h"

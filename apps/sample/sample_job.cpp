@@ -196,10 +196,7 @@ void run_sample_job(ggxcl::VulkanSampler& sampler, const SampleJob& job)
 {
     const std::string api = std::string("vulkan (") + ggxcl::shader_language_name(sampler.language()) + ")";
     write_samples(job, sampler.device_name(), api, [&](const ggxcl::Sampler::ChunkViewSink& sink) {
-        sampler.generate_chunks(job.params, job.range, ggxcl::FieldSet(job.fields),
-                                [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
-                                    sink(ggxcl::view_of(chunk), offset);
-                                }, job.per_sample);
+        sampler.generate_chunk_views(job.params, job.range, ggxcl::FieldSet(job.fields), sink, job.per_sample);
     });
 }
 

@@ -83,6 +83,11 @@ public:
     using ChunkSink = std::function<void(const SampleSet& chunk, std::uint64_t offset)>;
     void generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
                          const ChunkSink& sink, const PerSampleInputs& per_sample = {});
+    // The same without a copy: each chunk's planes where the device wrote
+    // them (stride >= count), valid during the call of `sink`.
+    using ChunkViewSink = Sampler::ChunkViewSink;
+    void generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                              const ChunkViewSink& sink, const PerSampleInputs& per_sample = {});
 
     // Bins the directions (Field::o or Field::m) of `range` on the device, as
     // Sampler::histogram: only the counts come back; bins_z * bins_phi + 2

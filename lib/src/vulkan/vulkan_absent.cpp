@@ -36,6 +36,11 @@ void VulkanSampler::generate_chunks(const SampleParams&, const SampleRange&, Fie
 {
     not_built();
 }
+void VulkanSampler::generate_chunk_views(const SampleParams&, const SampleRange&, FieldSet, const ChunkViewSink&,
+                                         const PerSampleInputs&)
+{
+    not_built();
+}
 Histogram VulkanSampler::histogram(const SampleParams&, const SampleRange&, int, int, Field) { not_built(); }
 FurnaceSums VulkanSampler::furnace(const SampleParams&, const SampleRange&) { not_built(); }
 std::vector<float> VulkanSampler::stress(Method, bool, bool, const std::vector<float>&, std::uint32_t) { not_built(); }

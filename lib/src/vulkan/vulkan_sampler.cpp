@@ -166,12 +166,12 @@ SampleSet VulkanSampler::generate(const SampleParams& params, const SampleRange&
     for (Field f : all_fields)
         if (fields.has(f))
             all.column_source(f).resize(std::size_t(field_columns(f, dielectric) * range.count));
-    generate_chunks(params, range, fields, [&](const SampleSet& chunk, std::uint64_t offset) {
+    generate_chunk_views(params, range, fields, [&](const SampleView& chunk, std::uint64_t offset) {
         for (Field f : all_fields) {
             if (!fields.has(f))
                 continue;
             for (int c = 0; c < field_columns(f, dielectric); ++c)
-                std::copy_n(chunk.column_source(f).begin() + std::ptrdiff_t(c * chunk.count), chunk.count,
+                std::copy_n(chunk.column_source(f) + c * chunk.stride, chunk.count,
                             all.column_source(f).begin() + std::ptrdiff_t(c * range.count + offset));
         }
     }, per_sample);
@@ -180,6 +180,27 @@ SampleSet VulkanSampler::generate(const SampleParams& params, const SampleRange&
 
 void VulkanSampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
                                     const ChunkSink& sink, const PerSampleInputs& per_sample)
+{
+    const bool dielectric = params.eta != 0.0f;
+    SampleSet chunk;
+    generate_chunk_views(params, range, fields, [&](const SampleView& view, std::uint64_t offset) {
+        chunk.count = view.count;
+        for (Field f : all_fields) {
+            if (!fields.has(f))
+                continue;
+            std::vector<float>& planes = chunk.column_source(f);
+            const int columns = field_columns(f, dielectric);
+            planes.resize(std::size_t(columns) * view.count);
+            for (int c = 0; c < columns; ++c)
+                std::copy_n(view.column_source(f) + c * view.stride, view.count,
+                            planes.begin() + std::ptrdiff_t(c * view.count));
+        }
+        sink(chunk, offset);
+    }, per_sample);
+}
+
+void VulkanSampler::generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
+                                         const ChunkViewSink& sink, const PerSampleInputs& per_sample)
 {
     const detail::ValidatedParams valid = detail::validated_request(params, range, fields, per_sample);
     refuse_user_sampler(params);
@@ -203,7 +224,11 @@ void VulkanSampler::generate_chunks(const SampleParams& params, const SampleRang
         for (Field f : all_fields)
             if (fields.has(f))
                 *field_at[int(f)] = at, at += std::uint32_t(field_columns(f, dielectric) * capacity);
-        SampleSet chunk;
+        SampleView chunk;  // the planes in the mapped buffer, stride = capacity
+        chunk.stride = capacity;
+        for (Field f : all_fields)
+            if (fields.has(f))
+                chunk.column_source(f) = outputs.data + *field_at[int(f)];
         for (std::uint64_t done = 0; done < range.count;) {
             const std::uint64_t n = std::min(capacity, range.count - done);
             std::uint32_t in_at = 0;
@@ -224,15 +249,6 @@ void VulkanSampler::generate_chunks(const SampleParams& params, const SampleRang
             request.row_width = shape.row_width;
             s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
             chunk.count = n;
-            for (Field f : all_fields) {
-                if (!fields.has(f))
-                    continue;
-                std::vector<float>& planes = chunk.column_source(f);
-                const int columns = field_columns(f, dielectric);
-                planes.resize(std::size_t(columns * n));
-                for (int c = 0; c < columns; ++c)
-                    std::copy_n(outputs.data + *field_at[int(f)] + c * capacity, n, planes.begin() + std::ptrdiff_t(c * n));
-            }
             sink(chunk, done);
             done += n;
         }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "api_options.hpp"
 #include "atomic_file.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
@@ -36,22 +37,33 @@ void draw_charts(const std::string& charts, const std::string& csv, const std::s
     std::filesystem::remove(speeds_path);
 }
 
-void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan)
+void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan, const ApiChoice& api)
 {
     for (const auto& [path, flag] : {std::pair{cmd.csv, "--csv"}, {cmd.markdown, "--markdown"}, {cmd.charts, "--charts"},
                                      {cmd.html, "--html"}})
         if (!path.empty())
             check_writable_folder(flag, path);
-    ggxcl::Sampler sampler(cmd.device);
-    std::cerr << "converge: " << plan.methods.size() * plan.sequences.size() * plan.configs.size() << " cells of "
-              << plan.randomizations << " streams of 2^" << plan.max_exponent << " samples on "
-              << sampler.device_name() << "\n";
-    std::vector<ConvergeSpeed> speeds = measure_speeds(sampler, plan);
-    std::vector<ConvergeCurve> curves = measure_convergence(sampler, plan);
+    std::vector<ConvergeSpeed> speeds;
+    std::vector<ConvergeCurve> curves;
+    std::string device;
+    const auto measure = [&](auto& sampler) {
+        device = sampler.device_name() + (api.vulkan ? " (" + api.name() + ")" : "");
+        std::cerr << "converge: " << plan.methods.size() * plan.sequences.size() * plan.configs.size() << " cells of "
+                  << plan.randomizations << " streams of 2^" << plan.max_exponent << " samples on " << device << "\n";
+        speeds = measure_speeds(sampler, plan);
+        curves = measure_convergence(sampler, plan);
+    };
+    if (api.vulkan) {
+        ggxcl::VulkanSampler sampler(api.selector, api.language);
+        measure(sampler);
+    } else {
+        ggxcl::Sampler sampler(cmd.device);
+        measure(sampler);
+    }
     const std::string csv = converge_csv(curves, plan.randomizations);
     if (!cmd.csv.empty())
         write_text_file(cmd.csv, csv);
-    ConvergeReportInfo info{command_line(), utc_now(), sampler.device_name(), "", plan.randomizations};
+    ConvergeReportInfo info{command_line(), utc_now(), device, "", plan.randomizations};
     const std::string charts = charts_prefix(cmd.charts, cmd.html);
     if (!charts.empty())
         draw_charts(charts, csv, speeds_csv(speeds), info.device);
@@ -107,11 +119,17 @@ Prepare add_converge_command(CLI::App& app)
     cmd->add_option("--charts", s->charts, "write PREFIX-<integrand>.png and PREFIX-time.png");
     cmd->add_option("--markdown", s->markdown, "write the report to this Markdown file");
     cmd->add_option("--html", s->html, "write the report as a web page (with its charts; beside it unless --charts)");
-    return [cmd, s]() -> std::optional<Work> {
+    auto api_options = std::make_shared<ApiOptions>();
+    api_options->add_to(*cmd);
+    return [cmd, s, api_options]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
         ConvergePlan plan = plan_convergence(*s);
-        return Work{[s, plan] { run_converge(*s, plan); }, converge_batches(plan)};
+        const ApiChoice api = api_options->choose(s->device);
+        if (api.vulkan && !s->user.files.empty())
+            throw UsageError("--sampler", s->user.files.front(),
+                             "built-in methods with --api vulkan (user samplers run on OpenCL for now)");
+        return Work{[s, plan, api] { run_converge(*s, plan, api); }, converge_batches(plan)};
     };
 }
 

@@ -1,6 +1,7 @@
 // converge_run.cpp - drawing the streams and forming the errors of `ggx converge`.
 #include "converge_run.hpp"
 
+#include <chrono>
 #include <cmath>
 
 #include "bench_speed.hpp"
@@ -51,8 +52,10 @@ void add_chunk(const ggxcl::SampleView& s, std::uint64_t offset, const ConvergeP
     }
 }
 
-// The curves of one method, sequence and configuration: R streams of 2^max samples.
-std::vector<ConvergeCurve> measure_cell(ggxcl::Sampler& sampler, const ConvergePlan& plan, const SamplerChoice& method,
+// The curves of one method, sequence and configuration: R streams of 2^max
+// samples.  Api: ggxcl::Sampler or ggxcl::VulkanSampler.
+template <class Api>
+std::vector<ConvergeCurve> measure_cell(Api& sampler, const ConvergePlan& plan, const SamplerChoice& method,
                                         ggxcl::Sequence sequence, const ConvergeConfig& config)
 {
     const ggxcl::SampleParams p = converge_params(method, sequence, config, plan.precision);
@@ -104,7 +107,8 @@ double log_log_slope(const std::vector<std::uint64_t>& x, const std::vector<doub
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-std::vector<ConvergeCurve> measure_convergence(ggxcl::Sampler& sampler, const ConvergePlan& plan)
+template <class Api>
+std::vector<ConvergeCurve> measure_all_cells(Api& sampler, const ConvergePlan& plan)
 {
     sampler.set_chunk_size(std::uint64_t(1) << plan.max_exponent);  // a stream in one chunk
     std::vector<ConvergeCurve> curves;
@@ -114,6 +118,16 @@ std::vector<ConvergeCurve> measure_convergence(ggxcl::Sampler& sampler, const Co
                 for (ConvergeCurve& c : measure_cell(sampler, plan, method, sequence, config))
                     curves.push_back(std::move(c));
     return curves;
+}
+
+std::vector<ConvergeCurve> measure_convergence(ggxcl::Sampler& sampler, const ConvergePlan& plan)
+{
+    return measure_all_cells(sampler, plan);
+}
+
+std::vector<ConvergeCurve> measure_convergence(ggxcl::VulkanSampler& sampler, const ConvergePlan& plan)
+{
+    return measure_all_cells(sampler, plan);
 }
 
 std::vector<ConvergeSpeed> measure_speeds(ggxcl::Sampler& sampler, const ConvergePlan& plan)
@@ -131,6 +145,31 @@ std::vector<ConvergeSpeed> measure_speeds(ggxcl::Sampler& sampler, const Converg
     std::vector<Timing> timings = timer.time_interleaved(tasks, 5);
     for (std::size_t t = 0; t < tasks.size(); ++t)
         speeds[t].ns_per_sample = timings[t].median;
+    return speeds;
+}
+
+std::vector<ConvergeSpeed> measure_speeds(ggxcl::VulkanSampler& sampler, const ConvergePlan& plan)
+{
+    if (plan.speed_count == 0)
+        return {};
+    std::vector<ConvergeSpeed> speeds;
+    std::vector<ggxcl::SampleParams> params;
+    for (const SamplerChoice& method : plan.methods)
+        for (ggxcl::Sequence sequence : plan.sequences) {
+            params.push_back(converge_params(method, sequence, plan.configs.front(), plan.precision));
+            speeds.push_back({method, sequence, 0.0});
+            sampler.furnace(params.back(), {1, 0, 1024});  // builds the shader
+        }
+    std::vector<std::vector<double>> ns(params.size());
+    for (int round = 0; round < 5; ++round)
+        for (std::size_t t = 0; t < params.size(); ++t) {
+            const auto start = std::chrono::steady_clock::now();
+            sampler.furnace(params[t], {1, 0, plan.speed_count});
+            const std::chrono::duration<double, std::nano> took = std::chrono::steady_clock::now() - start;
+            ns[t].push_back(took.count() / double(plan.speed_count));
+        }
+    for (std::size_t t = 0; t < params.size(); ++t)
+        speeds[t].ns_per_sample = summarize(ns[t]).median;
     return speeds;
 }
 

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "api_options.hpp"
 #include "atomic_file.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
@@ -30,6 +31,7 @@ struct DemoCommand {
     UserSamplerOptions user;  // --sampler FILE.h: added to the methods
     std::string count = "1e5", histogram_count = "1e6", cloud_points = "10000", out = "ggx-demo";
     bool no_png = false, no_html = false;
+    ApiOptions api;  // --api, --shader-language
 };
 
 struct MethodResult {
@@ -164,13 +166,13 @@ DemoCounts check_demo(const DemoCommand& demo, std::vector<Batch>& batches)
     return counts;
 }
 
-void run_demo(const DemoCommand& demo, DemoCounts counts)
+// Every method's files and the pages, drawn by `sampler` (ggxcl::Sampler or ggxcl::VulkanSampler)
+// named `device`.
+template <class Api>
+void run_demo_on(Api& sampler, const std::string& device, const DemoCommand& demo, DemoCounts counts)
 {
     const std::uint64_t count = counts.cloud, histogram_count = counts.histogram;
-    std::filesystem::create_directories(demo.out);
-    check_writable_folder("--out", demo.out + "/index.md");
-    ggxcl::Sampler sampler(demo.options.device);
-    std::cout << "device: " << sampler.device_name() << "\n";
+    std::cout << "device: " << device << "\n";
     std::vector<MethodResult> results;
     for (const SamplerChoice& method : demo_methods(demo)) {
         SampleOptions options = demo.options.for_method(method.method);
@@ -193,7 +195,7 @@ void run_demo(const DemoCommand& demo, DemoCounts counts)
         std::cout << method.name() << ": samples in " << base << ".npy and " << base << ".ply, histogram "
                   << h.prefix << (h.png ? ".png" : ".json") << " (p = " << results.back().histogram.p_value << ")\n";
     }
-    write_text_file(demo.out + "/index.md", summary_page(demo, results, sampler.device_name()));
+    write_text_file(demo.out + "/index.md", summary_page(demo, results, device));
     std::cout << "summary: " << demo.out << "/index.md\n";
     if (demo.no_html)
         return;
@@ -201,8 +203,21 @@ void run_demo(const DemoCommand& demo, DemoCounts counts)
     for (MethodResult& r : results)
         page.push_back({r.method.name(), r.histogram, std::move(r.cloud)});
     const ggxcl::SampleParams first = demo.options.params_for(ggxcl::Method::caps, nullptr);
-    write_demo_page(demo.out + "/index.html", summary_table(demo, results, sampler.device_name()), page, first.view);
+    write_demo_page(demo.out + "/index.html", summary_table(demo, results, device), page, first.view);
     std::cout << "page: " << demo.out << "/index.html (open it in a browser; three.js in " << demo.out << "/three)\n";
+}
+
+void run_demo(const DemoCommand& demo, DemoCounts counts, const ApiChoice& api)
+{
+    std::filesystem::create_directories(demo.out);
+    check_writable_folder("--out", demo.out + "/index.md");
+    if (api.vulkan) {
+        ggxcl::VulkanSampler sampler(api.selector, api.language);
+        run_demo_on(sampler, sampler.device_name() + " (" + api.name() + ")", demo, counts);
+    } else {
+        ggxcl::Sampler sampler(demo.options.device);
+        run_demo_on(sampler, sampler.device_name(), demo, counts);
+    }
 }
 
 } // namespace
@@ -221,12 +236,17 @@ Prepare add_demo_command(CLI::App& app)
     cmd->add_flag("--no-html", state->no_html, "skip index.html (no three.js needed)");
     cmd->add_option("--out", state->out, "output folder")->capture_default_str();
     state->user.add_to(*cmd);
+    state->api.add_to(*cmd);
     return [cmd, state]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
         std::vector<Batch> batches;
         DemoCounts counts = check_demo(*state, batches);
-        return Work{[state, counts] { run_demo(*state, counts); }, batches};
+        const ApiChoice api = state->api.choose(state->options.device);
+        if (api.vulkan && !state->user.files.empty())
+            throw UsageError("--sampler", state->user.files.front(),
+                             "built-in methods with --api vulkan (user samplers run on OpenCL for now)");
+        return Work{[state, counts, api] { run_demo(*state, counts, api); }, batches};
     };
 }
 

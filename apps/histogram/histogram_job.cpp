@@ -107,6 +107,11 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
     return run_histogram_job(sampler, job, start_expectation(job));
 }
 
+HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const HistogramJob& job)
+{
+    return run_histogram_job(sampler, job, start_expectation(job));
+}
+
 namespace {
 
 HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,

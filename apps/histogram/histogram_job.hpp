@@ -49,5 +49,6 @@ HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const Histogram
                                   std::future<std::vector<double>> expectation);
 // Starts the expectation itself, beside the warm-up run.
 HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job);
+HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const HistogramJob& job);
 
 } // namespace ggxapp

@@ -15,6 +15,9 @@
 //     --jobs world and --html are refused with it;
 //   - `ggx stress --api vulkan` writes the map (CSV, page naming the Vulkan
 //     device), conductor and dielectric, GLSL and HLSL;
+//   - `ggx converge --api vulkan` (HLSL) writes OpenCL's curves within float
+//     rounding; `ggx demo --api vulkan` writes every method's files and a
+//     summary naming the API;
 //   - usage errors (exit 2, naming the flag): --shader-language without
 //     Vulkan, --api opencl with a vulkan: device, --devices with Vulkan,
 //     --sampler with Vulkan, an unknown API;
@@ -213,6 +216,61 @@ TEST_CASE("ggx stress --api vulkan writes the map of every method asked, conduct
         CHECK(csv.find(",device,") != std::string::npos);
         CHECK(ggxtest::read_all(scratch / "s.html").find("vulkan:") != std::string::npos);
     }
+}
+
+TEST_CASE("ggx converge --api vulkan gives OpenCL's curves")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    const std::string common = "converge --methods caps,ndf --sequences philox,sobol --integrands albedo,lobe "
+                               "--alphas 0.3 --thetas 45 --max-n 2^10 --randomizations 4 --speed-n 2^12 --csv ";
+    std::string csv[2];
+    for (int api = 0; api < 2; ++api) {
+        const fs::path path = scratch / (api ? "vk.csv" : "cl.csv");
+        const ggxtest::Run run =
+            ggxtest::run_ggx(common + path.string() + (api ? " --api vulkan --shader-language hlsl" : ""),
+                             scratch / "err.txt");
+        CAPTURE(run.err);
+        REQUIRE(run.status == 0);
+        csv[api] = ggxtest::read_all(path);
+        if (api)
+            CHECK(run.err.find("vulkan (hlsl)") != std::string::npos);  // the progress line names the API
+    }
+    // The same rows; every number within float rounding of the samples (the last columns: rmse, mean, ...).
+    std::istringstream cl_rows(csv[0]), vk_rows(csv[1]);
+    std::string cl_line, vk_line;
+    int rows = 0;
+    while (std::getline(cl_rows, cl_line)) {
+        REQUIRE(std::getline(vk_rows, vk_line));
+        ++rows;
+        std::istringstream a(cl_line), b(vk_line);
+        for (std::string x, y; std::getline(a, x, ',') && std::getline(b, y, ',');) {
+            CAPTURE(cl_line);
+            CAPTURE(vk_line);
+            char* end = nullptr;
+            const double vx = std::strtod(x.c_str(), &end);
+            if (end == x.c_str() || *end != '\0')
+                CHECK(x == y);  // a name
+            else
+                CHECK(std::fabs(vx - std::stod(y)) <= 1e-4 * std::fabs(vx) + 1e-7);
+        }
+    }
+    CHECK(rows > 1);
+}
+
+TEST_CASE("ggx demo --api vulkan writes every method's files and a summary naming the API")
+{
+    const ggxtest::ScratchFolder scratch("vulkan-cli");
+    const ggxtest::Run run = ggxtest::run_ggx("demo --api vulkan --no-png --no-html -n 1000 --histogram-n 1e5 --out " +
+                                                  (scratch / "demo").string(),
+                                              scratch / "err.txt");
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    for (ggxcl::Method method : ggxcl::all_methods) {
+        const std::string name(ggxcl::method_name(method));
+        CHECK(fs::exists(scratch / "demo" / (name + ".npy")));
+        CHECK(fs::exists(scratch / "demo" / (name + ".hist.json")));
+    }
+    CHECK(ggxtest::read_all(scratch / "demo" / "index.md").find("vulkan (glsl)") != std::string::npos);
 }
 
 TEST_CASE("usage errors with Vulkan name the flag (exit 2)")

@@ -1,6 +1,7 @@
 // ggx_bulk_shader.h - the bulk sampling shader's body, one text for GLSL
 // (ggx_bulk.comp) and HLSL (ggx_bulk.hlsl): per invocation what ggx_bulk.cl's
-// ggx_sample_bulk does per work-item, with the same build switches
+// ggx_sample_bulk does per work-item (and the pdf shader's, ggx_pdf.comp
+// and .hlsl: what ggx_pdf_bulk does), with the same build switches
 // (ggx_bulk_sample.h) and the same bits of every sample up to contraction.
 // The including shader declares first `request` (push constants: the
 // members of ggx_contract.h's GGX_BULK_REQUEST_MEMBERS), `inputs` (the per-sample planes) and
@@ -79,6 +80,23 @@ void ggx_shader_sample_bulk(ggx_uint j)
 #if GGX_DIELECTRIC
     outputs[request.u_at + 2u * request.stride + j] = p.u3;
 #endif
+#endif
+}
+
+// The pdf (GGX_EVAL=0) or the BSDF value f |cos| (GGX_EVAL=1) of direction j
+// of the request, what ggx_bulk.cl's ggx_pdf_bulk computes: the directions'
+// planes in `inputs` at request.o_at, the values into `outputs` at
+// request.pdf_o_at.
+void ggx_shader_pdf(ggx_uint j)
+{
+    if (j >= request.count)
+        return;
+    const ggx_params p = ggx_shader_params(j);
+    const ggx_vec3 o = ggx_input3(request.o_at, j);
+#if GGX_EVAL
+    outputs[request.pdf_o_at + j] = ggx_bulk_eval(p, o);
+#else
+    outputs[request.pdf_o_at + j] = ggx_bulk_pdf(p, o);
 #endif
 }
 

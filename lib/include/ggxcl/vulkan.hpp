@@ -59,8 +59,7 @@ VulkanDeviceInfo select_vulkan_device(const std::string& selector = "");
 // are built per request variant (the switches of the OpenCL programs) and
 // cached on disk as SPIR-V beside the OpenCL binaries (GGXCL_PROGRAM_CACHE).
 // A shader that does not compile is a BuildError naming its file and line.
-// Not yet on Vulkan: user samplers (InvalidArgument), the caller's buffers, pdf
-// and eval.
+// Not yet on Vulkan: user samplers (InvalidArgument), the caller's buffers.
 // One VulkanSampler is used by one thread at a time.
 class VulkanSampler {
 public:
@@ -89,6 +88,13 @@ public:
     void generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
                               const ChunkViewSink& sink, const PerSampleInputs& per_sample = {});
 
+    // The pdf, and the BSDF value f |cos|, of each direction o, as
+    // Sampler::pdf and Sampler::eval (kernels/ggx_pdf.comp or .hlsl).
+    std::vector<float> pdf(const SampleParams& params, const std::vector<Vec3>& directions,
+                           const PerSampleInputs& per_sample = {});
+    std::vector<float> eval(const SampleParams& params, const std::vector<Vec3>& directions,
+                            const PerSampleInputs& per_sample = {});
+
     // Bins the directions (Field::o or Field::m) of `range` on the device, as
     // Sampler::histogram: only the counts come back; bins_z * bins_phi + 2
     // counters fit the device's shared memory (InvalidArgument otherwise).
@@ -113,6 +119,8 @@ public:
     struct State;  // the Vulkan objects (lib/src/vulkan/)
 
 private:
+    std::vector<float> of_directions(const SampleParams& params, const std::vector<Vec3>& directions,
+                                     const PerSampleInputs& per_sample, bool eval);
     std::unique_ptr<State> state_;
 };
 

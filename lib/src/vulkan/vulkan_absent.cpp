@@ -41,6 +41,19 @@ void VulkanSampler::generate_chunk_views(const SampleParams&, const SampleRange&
 {
     not_built();
 }
+std::vector<float> VulkanSampler::pdf(const SampleParams&, const std::vector<Vec3>&, const PerSampleInputs&)
+{
+    not_built();
+}
+std::vector<float> VulkanSampler::eval(const SampleParams&, const std::vector<Vec3>&, const PerSampleInputs&)
+{
+    not_built();
+}
+std::vector<float> VulkanSampler::of_directions(const SampleParams&, const std::vector<Vec3>&,
+                                                const PerSampleInputs&, bool)
+{
+    not_built();
+}
 Histogram VulkanSampler::histogram(const SampleParams&, const SampleRange&, int, int, Field) { not_built(); }
 FurnaceSums VulkanSampler::furnace(const SampleParams&, const SampleRange&) { not_built(); }
 std::vector<float> VulkanSampler::stress(Method, bool, bool, const std::vector<float>&, std::uint32_t) { not_built(); }

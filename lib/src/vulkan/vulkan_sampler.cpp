@@ -75,6 +75,25 @@ void refuse_user_sampler(const SampleParams& params)
         throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
 }
 
+// Entries [done, done + n) of the caller's per-sample inputs as planes of
+// stride `capacity`, one input after another in `inputs`, their offsets in
+// `request`; returns the floats used.
+std::uint32_t put_inputs(const PerSampleInputs& in, std::uint64_t done, std::uint64_t n, std::uint64_t capacity,
+                         detail::MappedBuffer& inputs, BulkRequest& request)
+{
+    std::uint32_t at = 0;
+    auto put = [&](std::uint32_t& offset, const std::vector<float>& planes) {
+        offset = at;
+        std::memcpy(inputs.data + at, planes.data(), planes.size() * sizeof(float));
+        at += std::uint32_t(planes.size());
+    };
+    if (!in.views.empty()) put(request.view_at, detail::planar_units(in.views, done, n, capacity));
+    if (!in.alphas.empty()) put(request.alpha_at, detail::planar_pairs(in.alphas, done, n, capacity));
+    if (!in.normals.empty()) put(request.normal_at, detail::planar_units(in.normals, done, n, capacity));
+    if (!in.uniforms.empty()) put(request.uniforms_at, detail::planar_uniforms(in, done, n, capacity));
+    return at;
+}
+
 // The push constants every shader reads of a request: its seed and uniform parameters.
 BulkRequest request_of(const SampleParams& p, std::uint64_t seed)
 {
@@ -231,16 +250,7 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
                 chunk.column_source(f) = outputs.data + *field_at[int(f)];
         for (std::uint64_t done = 0; done < range.count;) {
             const std::uint64_t n = std::min(capacity, range.count - done);
-            std::uint32_t in_at = 0;
-            auto put = [&](std::uint32_t& offset, const std::vector<float>& planes) {
-                offset = in_at;
-                std::memcpy(inputs.data + in_at, planes.data(), planes.size() * sizeof(float));
-                in_at += std::uint32_t(planes.size());
-            };
-            if (!per_sample.views.empty()) put(request.view_at, detail::planar_units(per_sample.views, done, n, capacity));
-            if (!per_sample.alphas.empty()) put(request.alpha_at, detail::planar_pairs(per_sample.alphas, done, n, capacity));
-            if (!per_sample.normals.empty()) put(request.normal_at, detail::planar_units(per_sample.normals, done, n, capacity));
-            if (!per_sample.uniforms.empty()) put(request.uniforms_at, detail::planar_uniforms(per_sample, done, n, capacity));
+            put_inputs(per_sample, done, n, capacity, inputs, request);
             request.first_lo = low_word(range.first + done);
             request.first_hi = high_word(range.first + done);
             request.count = std::uint32_t(n);
@@ -253,6 +263,56 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
             done += n;
         }
     });
+}
+
+std::vector<float> VulkanSampler::pdf(const SampleParams& params, const std::vector<Vec3>& directions,
+                                      const PerSampleInputs& per_sample)
+{
+    return of_directions(params, directions, per_sample, false);
+}
+
+std::vector<float> VulkanSampler::eval(const SampleParams& params, const std::vector<Vec3>& directions,
+                                       const PerSampleInputs& per_sample)
+{
+    return of_directions(params, directions, per_sample, true);
+}
+
+// The pdf shader (kernels/ggx_pdf.comp, .hlsl) over the directions, chunk by
+// chunk: the per-sample inputs' planes, then the directions', in `inputs`.
+std::vector<float> VulkanSampler::of_directions(const SampleParams& params, const std::vector<Vec3>& directions,
+                                                const PerSampleInputs& per_sample, bool eval)
+{
+    const detail::ValidatedParams valid = detail::validated(params);
+    refuse_user_sampler(params);
+    const std::uint64_t count = directions.size();
+    if (count == 0)
+        throw InvalidArgument("directions", "0 entries", "at least one direction");
+    validate(per_sample, *valid, count);
+    detail::ProgramVariant variant = detail::variant_of_host_inputs(detail::ProgramKind::bulk, *valid, 0, per_sample);
+    variant.eval = eval;
+    State& s = *state_;
+    const std::uint64_t in_per_sample = input_floats(per_sample) + 3, capacity = s.capacity(in_per_sample);
+    std::vector<float> result(count);
+    translate_vulkan_errors(device().name, [&] {
+        const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_pdf", detail::variant_define_list(variant));
+        detail::MappedBuffer inputs = s.compute->buffer(in_per_sample * capacity), outputs = s.compute->buffer(capacity);
+        BulkRequest request = request_of(*valid, 0);
+        request.stride = std::uint32_t(capacity);
+        for (std::uint64_t done = 0; done < count;) {
+            const std::uint64_t n = std::min(capacity, count - done);
+            request.o_at = put_inputs(per_sample, done, n, capacity, inputs, request);
+            const std::vector<float> planes = detail::planar_units(directions, done, n, capacity);
+            std::memcpy(inputs.data + request.o_at, planes.data(), planes.size() * sizeof(float));
+            request.count = std::uint32_t(n);
+            const detail::DispatchShape shape =
+                detail::dispatch_shape(n, group_size, device().max_work_groups_x, device().max_work_groups_y);
+            request.row_width = shape.row_width;
+            s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
+            std::copy_n(outputs.data, n, result.begin() + std::ptrdiff_t(done));
+            done += n;
+        }
+    });
+    return result;
 }
 
 Histogram VulkanSampler::histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,

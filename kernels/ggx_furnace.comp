@@ -1,21 +1,13 @@
-// ggx_furnace.comp - the fused white-furnace shader in GLSL 4.50 (Vulkan):
-// the request as push constants, the partial sums as a storage buffer, and
+// ggx_furnace.comp - the fused white-furnace shader in GLSL 4.50 (Vulkan): the
+// request (ggx_request_shader.h), the planes (ggx_planes_shader.h) and
 // ggx_furnace_shader.h's body per invocation.  The runtime compiles it with
-// shaderc after "#version 450" and the variant's defines (as for
-// ggx_furnace.cl) and GGX_GROUP_SIZE.
+// shaderc after "#version 450" and its defines (those of the OpenCL program,
+// ggx_furnace.cl) and GGX_GROUP_SIZE; ggx_furnace.hlsl is the same in HLSL.
 #extension GL_GOOGLE_include_directive : require
-#include "ggx_contract.h"
-#ifndef GGX_GROUP_SIZE
-#define GGX_GROUP_SIZE 64
-#endif
-
-layout(local_size_x = GGX_GROUP_SIZE) in;
-layout(push_constant) uniform GgxBulkRequest { GGX_BULK_REQUEST_MEMBERS } request;
-layout(std430, set = 0, binding = 1) writeonly buffer GgxOutputs { float outputs[]; };
-
+#include "ggx_planes_shader.h"
 #include "ggx_furnace_shader.h"
 
-void main()
+GGX_COMPUTE_MAIN
 {
-    ggx_shader_furnace(gl_GlobalInvocationID.y * request.row_width + gl_GlobalInvocationID.x);
+    ggx_shader_furnace(GGX_INVOCATION);
 }

@@ -4,9 +4,8 @@
 // switches and the same samples per invocation (GGX_FURNACE_PER_ITEM), so
 // that the partial sums do not depend on how a range is split into
 // dispatches that start at multiples of it.
-// The including shader declares first `request` (push constants:
-// GGX_BULK_REQUEST_MEMBERS, `stride` being the invocations that write sums)
-// and `outputs`, a float storage buffer: sums[item] = the sum of its
+// The including shader declares first `ggx_outputs` (ggx_planes_shader.h);
+// ggx_request.stride is the invocations that write sums: sums[item] = the sum of its
 // weights, sums[items + item] = of their squares, and with GGX_DIELECTRIC
 // sums[2 items + item] = of its reflected samples' weights.
 #ifndef GGX_FURNACE_SHADER_H
@@ -17,7 +16,7 @@
 // Invocation `item` sums samples GGX_FURNACE_PER_ITEM * item + k (k < GGX_FURNACE_PER_ITEM) below count.
 void ggx_shader_furnace(ggx_uint item)
 {
-    const ggx_uint items = request.stride;
+    const ggx_uint items = ggx_request.stride;
     if (item >= items)
         return;
     const ggx_params p = ggx_request_params();
@@ -25,7 +24,7 @@ void ggx_shader_furnace(ggx_uint item)
     float w_total = 0.0f, w2_total = 0.0f, reflected_total = 0.0f;
     for (ggx_uint k = 0u; k < ggx_to_uint(GGX_FURNACE_PER_ITEM); ++k) {
         const ggx_uint index = item * ggx_to_uint(GGX_FURNACE_PER_ITEM) + k;
-        if (index >= request.count)
+        if (index >= ggx_request.count)
             break;
         const ggx_sample s = ggx_bulk_sample(seed, first, index, p);
         w_total += s.weight;
@@ -34,10 +33,10 @@ void ggx_shader_furnace(ggx_uint item)
         reflected_total += ggx_bulk_reflected(p, s) ? s.weight : 0.0f;
 #endif
     }
-    outputs[item] = w_total;
-    outputs[items + item] = w2_total;
+    ggx_outputs[item] = w_total;
+    ggx_outputs[items + item] = w2_total;
 #if GGX_DIELECTRIC
-    outputs[2u * items + item] = reflected_total;
+    ggx_outputs[2u * items + item] = reflected_total;
 #else
     GGX_UNUSED(reflected_total);
 #endif

@@ -1,17 +1,8 @@
 // ggx_histogram.hlsl - ggx_histogram.comp in HLSL (glslang's HLSL front end
-// through shaderc, GGX_HLSL=1): the same push constants and buffers, the same
-// body (ggx_histogram_shader.h).
+// through shaderc, GGX_HLSL=1): the same request, counters and body.
 #include "ggx_contract.h"
-#ifndef GGX_GROUP_SIZE
-#define GGX_GROUP_SIZE 64
-#endif
 #define GGX_COUNTERS (GGX_BINS_Z * GGX_BINS_PHI + 2)
 
-struct GgxBulkRequest {
-    GGX_BULK_REQUEST_MEMBERS
-};
-// ConstantBuffer<T>: glslang puts a plain struct global with this attribute in $Global, a uniform buffer.
-[[vk::push_constant]] ConstantBuffer<GgxBulkRequest> request;
 [[vk::binding(1, 0)]] RWStructuredBuffer<uint> ggx_counts;
 groupshared uint ggx_local_counts[GGX_COUNTERS];
 #define GGX_LOCAL_ADD(index, value) InterlockedAdd(ggx_local_counts[index], value)
@@ -20,9 +11,8 @@ groupshared uint ggx_local_counts[GGX_COUNTERS];
 
 #include "ggx_histogram_shader.h"
 
-[numthreads(GGX_GROUP_SIZE, 1, 1)]
-void main(uint3 id : SV_DispatchThreadID)
+GGX_COMPUTE_MAIN
 {
-    const uint i = id.y * request.row_width + id.x;
+    const uint i = GGX_INVOCATION;
     ggx_shader_histogram(i / GGX_GROUP_SIZE, i % GGX_GROUP_SIZE);
 }

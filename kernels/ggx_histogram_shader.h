@@ -6,12 +6,11 @@
 // directions that are not finite, then a dielectric's invalid samples.
 // Build switches: those of ggx_bulk_sample.h, GGX_BINS_Z, GGX_BINS_PHI,
 // GGX_BIN_M=0|1 (1 bins m) and GGX_GROUP_SIZE.
-// The including shader declares first `request` (push constants:
-// GGX_BULK_REQUEST_MEMBERS, `stride` being the samples per invocation),
-// `ggx_counts` (a uint storage buffer of GGX_COUNTERS) and
+// The including shader declares first `ggx_counts` (a uint storage buffer
+// of GGX_COUNTERS) and
 // `ggx_local_counts` (uint[GGX_COUNTERS] of shared memory), and the
 // language's GGX_LOCAL_ADD(index, value), GGX_GLOBAL_ADD(index, value) and
-// GGX_GROUP_BARRIER().
+// GGX_GROUP_BARRIER(); ggx_request.stride is the samples per invocation.
 #ifndef GGX_HISTOGRAM_SHADER_H
 #define GGX_HISTOGRAM_SHADER_H
 
@@ -39,14 +38,14 @@ ggx_uint ggx_shader_sample_bin(ggx_uint j)
 // group * size * per_item + k * size + local (k < per_item) below count.
 void ggx_shader_histogram(ggx_uint group, ggx_uint local)
 {
-    const ggx_uint size = ggx_to_uint(GGX_GROUP_SIZE), per_item = request.stride;
+    const ggx_uint size = ggx_to_uint(GGX_GROUP_SIZE), per_item = ggx_request.stride;
     for (ggx_uint b = local; b < ggx_to_uint(GGX_COUNTERS); b += size)
         ggx_local_counts[b] = 0u;
     GGX_GROUP_BARRIER();
     const ggx_uint base = group * size * per_item;
     for (ggx_uint k = 0u; k < per_item; ++k) {
         const ggx_uint j = base + k * size + local;
-        if (j < request.count)
+        if (j < ggx_request.count)
             GGX_LOCAL_ADD(ggx_shader_sample_bin(j), 1u);
     }
     GGX_GROUP_BARRIER();

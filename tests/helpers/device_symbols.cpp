@@ -190,8 +190,17 @@ private:
         last_.clear();
     }
 
-    // Names a declaration can introduce: not reserved (__kernel, __attribute__, ...) nor empty.
-    static bool declarable(const std::string& name) { return !name.empty() && name.rfind("__", 0) != 0; }
+    // Names a declaration can introduce: not reserved (__kernel, __attribute__, ...), not the
+    // shading languages' qualifiers and attributes (GLSL `layout(...) in`, HLSL `[[vk::binding(...)]]`),
+    // nor empty.
+    static bool declarable(const std::string& name)
+    {
+        static const char* qualifiers[] = {"layout", "in", "binding", "push_constant", "numthreads"};
+        for (const char* q : qualifiers)
+            if (name == q)
+                return false;
+        return !name.empty() && name.rfind("__", 0) != 0;
+    }
 };
 
 } // namespace

@@ -13,15 +13,6 @@ namespace ggxcl {
 
 namespace {
 
-using detail::BulkRequest;
-using detail::group_size;
-using detail::high_word;
-using detail::low_word;
-using detail::put_inputs;
-using detail::refuse_user_sampler;
-using detail::request_of;
-using detail::translate_vulkan_errors;
-
 constexpr std::uint32_t histogram_per_item = 64;           // samples per invocation of the histogram shader
 constexpr std::uint64_t histogram_pass = 1u << 30;         // keeps every 32-bit count below 2^32
 
@@ -32,27 +23,27 @@ Histogram VulkanSampler::histogram(const SampleParams& params, const SampleRange
 {
     const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
-    refuse_user_sampler(params);
+    detail::refuse_user_sampler(params);
     detail::check_histogram_bins(bins_z, bins_phi, direction, device().max_shared_memory);
     detail::ProgramVariant variant = detail::variant_of(detail::ProgramKind::histogram, *valid, 0);
     variant.bins = {bins_z, bins_phi, direction == Field::m};
     const std::size_t bins = std::size_t(bins_z) * std::size_t(bins_phi);
     Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0, 0};
     State& s = *state_;
-    translate_vulkan_errors(device().name, [&] {
+    detail::translate_vulkan_errors(device().name, [&] {
         const vk::raii::Pipeline& pipeline = s.pipeline(variant);
         detail::MappedBuffer unused = s.compute->buffer(1), counts = s.compute->buffer(bins + 2);
-        BulkRequest request = request_of(*valid, range.seed);
+        detail::BulkRequest request = detail::request_of(*valid, range.seed);
         request.stride = histogram_per_item;
         std::vector<std::uint32_t> pass_counts(bins + 2);
         for (std::uint64_t start = 0; start < range.count;) {
             const std::uint64_t n = std::min(histogram_pass, range.count - start);
             std::memset(counts.data, 0, (bins + 2) * sizeof(std::uint32_t));
-            request.first_lo = low_word(range.first + start);
-            request.first_hi = high_word(range.first + start);
+            request.first_lo = detail::low_word(range.first + start);
+            request.first_hi = detail::high_word(range.first + start);
             request.count = std::uint32_t(n);
-            const std::uint64_t groups = (n + group_size * histogram_per_item - 1) / (group_size * histogram_per_item);
-            const detail::DispatchShape shape = detail::dispatch_shape(groups * group_size, group_size,
+            const std::uint64_t groups = (n + detail::group_size * histogram_per_item - 1) / (detail::group_size * histogram_per_item);
+            const detail::DispatchShape shape = detail::dispatch_shape(groups * detail::group_size, detail::group_size,
                                                                        device().max_work_groups_x, device().max_work_groups_y);
             request.row_width = shape.row_width;
             s.compute->dispatch(pipeline, &request, sizeof request, unused, counts, shape);
@@ -73,7 +64,7 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
 {
     const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
-    refuse_user_sampler(params);
+    detail::refuse_user_sampler(params);
     State& s = *state_;
     const std::uint64_t per_item = detail::furnace_per_item, planes = detail::furnace_sum_planes(*valid);
     // Samples per dispatch: a multiple of the samples per invocation, their sums within one storage buffer.
@@ -81,17 +72,17 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
     const std::uint64_t per_dispatch = std::max(per_item, std::min(s.chunk_size, items_fit * per_item) / per_item * per_item);
     FurnaceSums total;
     total.count = range.count;
-    translate_vulkan_errors(device().name, [&] {
+    detail::translate_vulkan_errors(device().name, [&] {
         detail::MappedBuffer unused = s.compute->buffer(1), sums = s.compute->buffer(planes * (per_dispatch / per_item));
-        BulkRequest request = request_of(*valid, range.seed);
+        detail::BulkRequest request = detail::request_of(*valid, range.seed);
         for (std::uint64_t done = 0; done < range.count;) {
             const std::uint64_t n = std::min(per_dispatch, range.count - done), items = (n + per_item - 1) / per_item;
-            request.first_lo = low_word(range.first + done);
-            request.first_hi = high_word(range.first + done);
+            request.first_lo = detail::low_word(range.first + done);
+            request.first_hi = detail::high_word(range.first + done);
             request.count = std::uint32_t(n);
             request.stride = std::uint32_t(items);
             const detail::DispatchShape shape =
-                detail::dispatch_shape(items, group_size, device().max_work_groups_x, device().max_work_groups_y);
+                detail::dispatch_shape(items, detail::group_size, device().max_work_groups_x, device().max_work_groups_y);
             request.row_width = shape.row_width;
             for (bool guards : {false, true}) {
                 SampleParams p = *valid;
@@ -123,18 +114,18 @@ std::vector<float> VulkanSampler::stress(Method method, bool guards, bool dielec
                                            {"GGX_DIELECTRIC", dielectric ? 1 : 0}};
     const std::uint64_t capacity = s.capacity(in_planes);
     std::vector<float> out(out_planes * count);
-    translate_vulkan_errors(device().name, [&] {
+    detail::translate_vulkan_errors(device().name, [&] {
         const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_stress", defines);
         detail::MappedBuffer inputs = s.compute->buffer(in_planes * capacity);
         detail::MappedBuffer outputs = s.compute->buffer(out_planes * capacity);
-        BulkRequest request{};
+        detail::BulkRequest request{};
         for (std::uint64_t start = 0; start < count;) {  // the planes of cases [start, start + n) packed
             const std::uint64_t n = std::min<std::uint64_t>(capacity, count - start);
             for (std::uint64_t k = 0; k < in_planes; ++k)
                 std::copy_n(in.begin() + std::ptrdiff_t(k * count + start), n, inputs.data + k * n);
             request.count = std::uint32_t(n);
             const detail::DispatchShape shape =
-                detail::dispatch_shape(n, group_size, device().max_work_groups_x, device().max_work_groups_y);
+                detail::dispatch_shape(n, detail::group_size, device().max_work_groups_x, device().max_work_groups_y);
             request.row_width = shape.row_width;
             s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
             for (std::uint64_t k = 0; k < out_planes; ++k)

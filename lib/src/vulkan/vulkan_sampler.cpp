@@ -12,15 +12,6 @@ namespace ggxcl {
 
 namespace {
 
-using detail::BulkRequest;
-using detail::group_size;
-using detail::high_word;
-using detail::low_word;
-using detail::put_inputs;
-using detail::refuse_user_sampler;
-using detail::request_of;
-using detail::translate_vulkan_errors;
-
 // Floats per sample of the requested fields, and of the per-sample inputs.
 std::uint64_t output_floats(FieldSet fields, bool dielectric)
 {
@@ -44,7 +35,7 @@ VulkanSampler::VulkanSampler(const std::string& selector, ShaderLanguage languag
     const VulkanDeviceInfo info = select_vulkan_device(selector);
     state_->vulkan = detail::vulkan_instance();
     state_->language = language;
-    state_->compute = translate_vulkan_errors(info.name, [&] {
+    state_->compute = detail::translate_vulkan_errors(info.name, [&] {
         return std::make_unique<detail::VulkanCompute>(state_->vulkan, info);
     });
 }
@@ -113,7 +104,7 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
                                          const ChunkViewSink& sink, const PerSampleInputs& per_sample)
 {
     const detail::ValidatedParams valid = detail::validated_request(params, range, fields, per_sample);
-    refuse_user_sampler(params);
+    detail::refuse_user_sampler(params);
     const SampleParams& p = *valid;
     const bool dielectric = p.eta != 0.0f;
     const detail::ProgramVariant variant =
@@ -121,11 +112,11 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
     State& s = *state_;
     const std::uint64_t out_per_sample = output_floats(fields, dielectric), in_per_sample = input_floats(per_sample);
     const std::uint64_t capacity = s.capacity(std::max(out_per_sample, in_per_sample));
-    translate_vulkan_errors(device().name, [&] {
+    detail::translate_vulkan_errors(device().name, [&] {
         const vk::raii::Pipeline& pipeline = s.pipeline(variant);
         detail::MappedBuffer inputs = s.compute->buffer(in_per_sample * capacity);
         detail::MappedBuffer outputs = s.compute->buffer(out_per_sample * capacity);
-        BulkRequest request = request_of(p, range.seed);
+        detail::BulkRequest request = detail::request_of(p, range.seed);
         request.stride = std::uint32_t(capacity);
         // Each field's and input's planes, one after another in their buffer.
         std::uint32_t at = 0;
@@ -141,12 +132,12 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
                 chunk.column_source(f) = outputs.data + *field_at[int(f)];
         for (std::uint64_t done = 0; done < range.count;) {
             const std::uint64_t n = std::min(capacity, range.count - done);
-            put_inputs(per_sample, done, n, capacity, inputs, request);
-            request.first_lo = low_word(range.first + done);
-            request.first_hi = high_word(range.first + done);
+            detail::put_inputs(per_sample, done, n, capacity, inputs, request);
+            request.first_lo = detail::low_word(range.first + done);
+            request.first_hi = detail::high_word(range.first + done);
             request.count = std::uint32_t(n);
             const detail::DispatchShape shape =
-                detail::dispatch_shape(n, group_size, device().max_work_groups_x, device().max_work_groups_y);
+                detail::dispatch_shape(n, detail::group_size, device().max_work_groups_x, device().max_work_groups_y);
             request.row_width = shape.row_width;
             s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
             chunk.count = n;
@@ -174,7 +165,7 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams& params, cons
                                                 const PerSampleInputs& per_sample, bool eval)
 {
     const detail::ValidatedParams valid = detail::validated(params);
-    refuse_user_sampler(params);
+    detail::refuse_user_sampler(params);
     const std::uint64_t count = directions.size();
     if (count == 0)
         throw InvalidArgument("directions", "0 entries", "at least one direction");
@@ -184,19 +175,19 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams& params, cons
     State& s = *state_;
     const std::uint64_t in_per_sample = input_floats(per_sample) + 3, capacity = s.capacity(in_per_sample);
     std::vector<float> result(count);
-    translate_vulkan_errors(device().name, [&] {
+    detail::translate_vulkan_errors(device().name, [&] {
         const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_pdf", detail::variant_define_list(variant));
         detail::MappedBuffer inputs = s.compute->buffer(in_per_sample * capacity), outputs = s.compute->buffer(capacity);
-        BulkRequest request = request_of(*valid, 0);
+        detail::BulkRequest request = detail::request_of(*valid, 0);
         request.stride = std::uint32_t(capacity);
         for (std::uint64_t done = 0; done < count;) {
             const std::uint64_t n = std::min(capacity, count - done);
-            request.o_at = put_inputs(per_sample, done, n, capacity, inputs, request);
+            request.o_at = detail::put_inputs(per_sample, done, n, capacity, inputs, request);
             const std::vector<float> planes = detail::planar_units(directions, done, n, capacity);
             std::memcpy(inputs.data + request.o_at, planes.data(), planes.size() * sizeof(float));
             request.count = std::uint32_t(n);
             const detail::DispatchShape shape =
-                detail::dispatch_shape(n, group_size, device().max_work_groups_x, device().max_work_groups_y);
+                detail::dispatch_shape(n, detail::group_size, device().max_work_groups_x, device().max_work_groups_y);
             request.row_width = shape.row_width;
             s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
             std::copy_n(outputs.data, n, result.begin() + std::ptrdiff_t(done));

@@ -113,6 +113,13 @@ Timing summarize(std::vector<double> ns)
     return {ns[ns.size() / 2], ns.front(), ns.back()};
 }
 
+double wall_ns_per_sample(const std::function<void()>& call, std::uint64_t count)
+{
+    const auto start = std::chrono::steady_clock::now();
+    call();
+    return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / double(count);
+}
+
 DeviceTimer::DeviceTimer(ggxcl::Sampler& sampler, std::uint32_t count)
     : sampler_(sampler), count_(count), world_count_(std::min(count, world_count_limit))
 {

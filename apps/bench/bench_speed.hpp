@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct Timing {
     double median = 0, low = 0, high = 0;
 };
 Timing summarize(std::vector<double> ns_per_sample);
+
+// Nanoseconds per sample of one call of `call`, which draws `count` samples, by wall clock.
+double wall_ns_per_sample(const std::function<void()>& call, std::uint64_t count);
 
 // The world job's inputs: planar unit normals over the sphere (away from the
 // pole -z, where caps-iso is singular) and unit views at 0..87 degrees from them.

@@ -2,8 +2,6 @@
 // timed on both APIs, their report and CSV.
 #include "bench_vulkan.hpp"
 
-#include <chrono>
-#include <functional>
 #include <iostream>
 #include <sstream>
 
@@ -39,14 +37,6 @@ std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::str
                 }
             }
     return tasks;
-}
-
-// Nanoseconds per sample of one call of the whole job.
-double time_call(const std::function<void()>& call, std::uint64_t count)
-{
-    const auto start = std::chrono::steady_clock::now();
-    call();
-    return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / double(count);
 }
 
 // The job of `task` on one API; Api is ggxcl::Sampler or ggxcl::VulkanSampler.
@@ -105,9 +95,9 @@ ApiBenchReport measure_api_bench(const BenchPlan& plan, const std::string& vulka
     std::cerr << "timing " << tasks.size() << " jobs x 2 APIs, " << report.repeats << " interleaved rounds\n";
     for (int round = 0; round < report.repeats; ++round)
         for (std::size_t t = 0; t < tasks.size(); ++t) {
-            vk_ns[t].push_back(time_call([&] { run_task(vulkan, tasks[t], report.count); }, report.count));
+            vk_ns[t].push_back(wall_ns_per_sample([&] { run_task(vulkan, tasks[t], report.count); }, report.count));
             if (opencl)
-                cl_ns[t].push_back(time_call([&] { run_task(*opencl, tasks[t], report.count); }, report.count));
+                cl_ns[t].push_back(wall_ns_per_sample([&] { run_task(*opencl, tasks[t], report.count); }, report.count));
         }
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         const ggxcl::SampleParams& p = tasks[t].params;

@@ -371,14 +371,12 @@ void run_vulkan_bench(const BenchCommand& cmd, const BenchPlan& plan, const ApiC
 }
 
 // The plan of --api vulkan: its jobs (write and furnace by default), and no option it cannot honour.
-BenchPlan vulkan_plan(const BenchCommand& cmd, BenchPlan plan, bool jobs_given)
+BenchPlan vulkan_plan(const BenchCommand& cmd, BenchPlan plan, bool jobs_given, const ApiChoice& api)
 {
     for (const auto& [value, flag] : {std::pair{cmd.charts, "--charts"}, {cmd.html, "--html"}})
         if (!value.empty())
             throw UsageError(flag, value, "no charts or page with --api vulkan (its report is --markdown and --csv)");
-    if (!cmd.user.files.empty())
-        throw UsageError("--sampler", cmd.user.files.front(),
-                         "built-in methods with --api vulkan (user samplers run on OpenCL for now)");
+    api.refuse_user_samplers(cmd.user.files);
     plan.jobs = vulkan_bench_jobs(plan.jobs, jobs_given);
     return plan;
 }
@@ -457,7 +455,7 @@ Prepare add_bench_command(CLI::App& app)
         BenchPlan plan = plan_bench(*s);
         const ApiChoice choice = api->choose(s->device);
         if (choice.vulkan) {
-            plan = vulkan_plan(*s, plan, jobs->count() > 0);
+            plan = vulkan_plan(*s, plan, jobs->count() > 0, choice);
             return Work{[s, plan, choice] { run_vulkan_bench(*s, plan, choice); }, timed_batches(plan)};
         }
         return Work{[s, plan] { run_bench(*s, plan); }, timed_batches(plan)};

@@ -14,6 +14,18 @@ std::string ApiChoice::name() const
     return vulkan ? std::string("vulkan (") + ggxcl::shader_language_name(language) + ")" : "opencl";
 }
 
+std::string ApiChoice::device_label(const std::string& device_name) const
+{
+    return vulkan ? device_name + " (" + name() + ")" : device_name;
+}
+
+void ApiChoice::refuse_user_samplers(const std::vector<std::string>& files) const
+{
+    if (vulkan && !files.empty())
+        throw UsageError("--sampler", files.front(),
+                         "a built-in --method with --api vulkan (user samplers run on OpenCL for now)");
+}
+
 void ApiOptions::add_to(CLI::App& cmd)
 {
     api_option = cmd.add_option("--api", api,

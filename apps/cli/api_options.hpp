@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <ggxcl/ggxcl.hpp>
@@ -15,6 +16,11 @@ struct ApiChoice {
     std::string selector;  // the device selector without its prefix
     ggxcl::ShaderLanguage language = ggxcl::ShaderLanguage::glsl;
     std::string name() const;  // "opencl", or "vulkan (glsl)"
+    // How reports name the device: "NAME", or on Vulkan "NAME (vulkan (glsl))".
+    std::string device_label(const std::string& device_name) const;
+    // UsageError naming --sampler when Vulkan is chosen with user samplers
+    // (they run on OpenCL for now); `files` may be empty.
+    void refuse_user_samplers(const std::vector<std::string>& files) const;
 };
 
 struct ApiOptions {

@@ -47,7 +47,7 @@ void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan, const Ap
     std::vector<ConvergeCurve> curves;
     std::string device;
     const auto measure = [&](auto& sampler) {
-        device = sampler.device_name() + (api.vulkan ? " (" + api.name() + ")" : "");
+        device = api.device_label(sampler.device_name());
         std::cerr << "converge: " << plan.methods.size() * plan.sequences.size() * plan.configs.size() << " cells of "
                   << plan.randomizations << " streams of 2^" << plan.max_exponent << " samples on " << device << "\n";
         speeds = measure_speeds(sampler, plan);
@@ -126,9 +126,7 @@ Prepare add_converge_command(CLI::App& app)
             return std::nullopt;
         ConvergePlan plan = plan_convergence(*s);
         const ApiChoice api = api_options->choose(s->device);
-        if (api.vulkan && !s->user.files.empty())
-            throw UsageError("--sampler", s->user.files.front(),
-                             "built-in methods with --api vulkan (user samplers run on OpenCL for now)");
+        api.refuse_user_samplers(s->user.files);
         return Work{[s, plan, api] { run_converge(*s, plan, api); }, converge_batches(plan)};
     };
 }

@@ -1,7 +1,6 @@
 // converge_run.cpp - drawing the streams and forming the errors of `ggx converge`.
 #include "converge_run.hpp"
 
-#include <chrono>
 #include <cmath>
 
 #include "bench_speed.hpp"
@@ -162,12 +161,9 @@ std::vector<ConvergeSpeed> measure_speeds(ggxcl::VulkanSampler& sampler, const C
         }
     std::vector<std::vector<double>> ns(params.size());
     for (int round = 0; round < 5; ++round)
-        for (std::size_t t = 0; t < params.size(); ++t) {
-            const auto start = std::chrono::steady_clock::now();
-            sampler.furnace(params[t], {1, 0, plan.speed_count});
-            const std::chrono::duration<double, std::nano> took = std::chrono::steady_clock::now() - start;
-            ns[t].push_back(took.count() / double(plan.speed_count));
-        }
+        for (std::size_t t = 0; t < params.size(); ++t)
+            ns[t].push_back(
+                wall_ns_per_sample([&] { sampler.furnace(params[t], {1, 0, plan.speed_count}); }, plan.speed_count));
     for (std::size_t t = 0; t < params.size(); ++t)
         speeds[t].ns_per_sample = summarize(ns[t]).median;
     return speeds;

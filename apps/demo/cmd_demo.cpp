@@ -213,7 +213,7 @@ void run_demo(const DemoCommand& demo, DemoCounts counts, const ApiChoice& api)
     check_writable_folder("--out", demo.out + "/index.md");
     if (api.vulkan) {
         ggxcl::VulkanSampler sampler(api.selector, api.language);
-        run_demo_on(sampler, sampler.device_name() + " (" + api.name() + ")", demo, counts);
+        run_demo_on(sampler, api.device_label(sampler.device_name()), demo, counts);
     } else {
         ggxcl::Sampler sampler(demo.options.device);
         run_demo_on(sampler, sampler.device_name(), demo, counts);
@@ -243,9 +243,7 @@ Prepare add_demo_command(CLI::App& app)
         std::vector<Batch> batches;
         DemoCounts counts = check_demo(*state, batches);
         const ApiChoice api = state->api.choose(state->options.device);
-        if (api.vulkan && !state->user.files.empty())
-            throw UsageError("--sampler", state->user.files.front(),
-                             "built-in methods with --api vulkan (user samplers run on OpenCL for now)");
+        api.refuse_user_samplers(state->user.files);
         return Work{[state, counts, api] { run_demo(*state, counts, api); }, batches};
     };
 }

@@ -110,9 +110,8 @@ Prepare add_histogram_command(CLI::App& app)
         if (level > 0.0)
             job.level = level;
         const ApiChoice api = state->api_options.choose(state->options.device);
-        if (api.vulkan && job.params.method == ggxcl::Method::user)
-            throw UsageError("--sampler", state->options.sampler,
-                             "a built-in --method with --api vulkan (user samplers run on OpenCL for now)");
+        if (job.params.method == ggxcl::Method::user)
+            api.refuse_user_samplers({state->options.sampler});
         if (state->out.empty())  // what is missing, once every value given has been checked
             throw UsageError("--out is required: a path prefix such as results/caps");
         return Work{[state, job, api, level] { run_histogram(*state, job, api, level); }, {{job.params, job.range}}};

@@ -92,8 +92,7 @@ struct SampleCommand {
             throw UsageError(all_devices ? "--all-devices" : "--devices", all_devices ? "" : devices,
                              "one device with --api vulkan: give it with --device");
         if (!options.sampler.empty())
-            throw UsageError("--sampler", options.sampler,
-                             "a built-in --method with --api vulkan (user samplers run on OpenCL for now)");
+            choice.refuse_user_samplers({options.sampler});
         return choice;
     }
 

@@ -152,9 +152,7 @@ StressPlan plan_stress(const StressCommand& cmd)
         throw UsageError("--eta", cmd.eta,
                          "no --eta with --sampler: " + std::string(ggxcl::method_traits(ggxcl::Method::user).limits));
     plan.api = cmd.api.choose(cmd.device);
-    if (plan.api.vulkan && !plan.users.empty())
-        throw UsageError("--sampler", cmd.user.files.front(),
-                         "built-in methods with --api vulkan (user samplers run on OpenCL for now)");
+    plan.api.refuse_user_samplers(cmd.user.files);
     return plan;
 }
 
@@ -313,9 +311,8 @@ void run_stress(const StressCommand& cmd, const StressPlan& plan)
     std::cout << totals.str();
     if (!cmd.no_png)
         run_plot_script("plot_stress.py", {cmd.out + ".csv", cmd.out});
-    const std::string name = device.name() + (plan.api.vulkan ? " (" + plan.api.name() + ")" : "");
     if (!cmd.html.empty())
-        write_markdown_page(cmd.html, stress_markdown(cmd, plan, name, totals.str()));
+        write_markdown_page(cmd.html, stress_markdown(cmd, plan, plan.api.device_label(device.name()), totals.str()));
 }
 
 } // namespace

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstddef>
-#include <vector>
 
 #include "ggxcl/params.hpp"
 #include "ggxcl/sampler.hpp"

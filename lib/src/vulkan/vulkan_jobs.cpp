@@ -43,10 +43,7 @@ Histogram VulkanSampler::histogram(const SampleParams& params, const SampleRange
             request.first_hi = detail::high_word(range.first + start);
             request.count = std::uint32_t(n);
             const std::uint64_t groups = (n + detail::group_size * histogram_per_item - 1) / (detail::group_size * histogram_per_item);
-            const detail::DispatchShape shape = detail::dispatch_shape(groups * detail::group_size, detail::group_size,
-                                                                       device().max_work_groups_x, device().max_work_groups_y);
-            request.row_width = shape.row_width;
-            s.compute->dispatch(pipeline, &request, sizeof request, unused, counts, shape);
+            s.dispatch(pipeline, request, groups * detail::group_size, unused, counts);
             std::memcpy(pass_counts.data(), counts.data, pass_counts.size() * sizeof(std::uint32_t));
             for (std::size_t b = 0; b < bins; ++b)
                 result.counts[b] += pass_counts[b];
@@ -70,9 +67,17 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
     // Samples per dispatch: a multiple of the samples per invocation, their sums within one storage buffer.
     const std::uint64_t items_fit = device().max_storage_buffer_range / sizeof(float) / planes;
     const std::uint64_t per_dispatch = std::max(per_item, std::min(s.chunk_size, items_fit * per_item) / per_item * per_item);
+    // The unguarded program, and the guarded one built only when a sum is not finite.
+    SampleParams unguarded = *valid, guarded = *valid;
+    unguarded.guards = false;
+    guarded.guards = true;
+    const unsigned weights = detail::write_mask({Field::weight});
+    const detail::ProgramVariant variants[] = {detail::variant_of(detail::ProgramKind::furnace, unguarded, weights),
+                                               detail::variant_of(detail::ProgramKind::furnace, guarded, weights)};
     FurnaceSums total;
     total.count = range.count;
     detail::translate_vulkan_errors(device().name, [&] {
+        const vk::raii::Pipeline* pipelines[] = {&s.pipeline(variants[0]), nullptr};
         detail::MappedBuffer unused = s.compute->buffer(1), sums = s.compute->buffer(planes * (per_dispatch / per_item));
         detail::BulkRequest request = detail::request_of(*valid, range.seed);
         for (std::uint64_t done = 0; done < range.count;) {
@@ -81,16 +86,12 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
             request.first_hi = detail::high_word(range.first + done);
             request.count = std::uint32_t(n);
             request.stride = std::uint32_t(items);
-            const detail::DispatchShape shape =
-                detail::dispatch_shape(items, detail::group_size, device().max_work_groups_x, device().max_work_groups_y);
-            request.row_width = shape.row_width;
-            for (bool guards : {false, true}) {
-                SampleParams p = *valid;
-                p.guards = guards;
-                const detail::ProgramVariant variant =
-                    detail::variant_of(detail::ProgramKind::furnace, p, detail::write_mask({Field::weight}));
-                s.compute->dispatch(s.pipeline(variant), &request, sizeof request, unused, sums, shape);
-                if (detail::add_furnace_partial_sums(sums.data, std::size_t(items), std::size_t(planes), total, guards))
+            for (int guards = 0; guards < 2; ++guards) {
+                if (!pipelines[guards])
+                    pipelines[guards] = &s.pipeline(variants[guards]);
+                s.dispatch(*pipelines[guards], request, items, unused, sums);
+                if (detail::add_furnace_partial_sums(sums.data, std::size_t(items), std::size_t(planes), total,
+                                                     guards == 1))
                     break;
             }
             done += n;
@@ -102,8 +103,7 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
 std::vector<float> VulkanSampler::stress(Method method, bool guards, bool dielectric, const std::vector<float>& in,
                                          std::uint32_t count)
 {
-    if (method == Method::user)
-        throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
+    detail::refuse_user_sampler(method);
     const std::uint64_t in_planes = dielectric ? 12 : 10, out_planes = dielectric ? 11 : 10;
     if (in.size() != in_planes * count)
         throw InvalidArgument("stress inputs", std::to_string(in.size()) + " floats",
@@ -124,10 +124,7 @@ std::vector<float> VulkanSampler::stress(Method method, bool guards, bool dielec
             for (std::uint64_t k = 0; k < in_planes; ++k)
                 std::copy_n(in.begin() + std::ptrdiff_t(k * count + start), n, inputs.data + k * n);
             request.count = std::uint32_t(n);
-            const detail::DispatchShape shape =
-                detail::dispatch_shape(n, detail::group_size, device().max_work_groups_x, device().max_work_groups_y);
-            request.row_width = shape.row_width;
-            s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
+            s.dispatch(pipeline, request, n, inputs, outputs);
             for (std::uint64_t k = 0; k < out_planes; ++k)
                 std::copy_n(outputs.data + k * n, n, out.begin() + std::ptrdiff_t(k * count + start));
             start += n;

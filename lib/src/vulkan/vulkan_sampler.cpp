@@ -136,10 +136,7 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
             request.first_lo = detail::low_word(range.first + done);
             request.first_hi = detail::high_word(range.first + done);
             request.count = std::uint32_t(n);
-            const detail::DispatchShape shape =
-                detail::dispatch_shape(n, detail::group_size, device().max_work_groups_x, device().max_work_groups_y);
-            request.row_width = shape.row_width;
-            s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
+            s.dispatch(pipeline, request, n, inputs, outputs);
             chunk.count = n;
             sink(chunk, done);
             done += n;
@@ -186,10 +183,7 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams& params, cons
             const std::vector<float> planes = detail::planar_units(directions, done, n, capacity);
             std::memcpy(inputs.data + request.o_at, planes.data(), planes.size() * sizeof(float));
             request.count = std::uint32_t(n);
-            const detail::DispatchShape shape =
-                detail::dispatch_shape(n, detail::group_size, device().max_work_groups_x, device().max_work_groups_y);
-            request.row_width = shape.row_width;
-            s.compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
+            s.dispatch(pipeline, request, n, inputs, outputs);
             std::copy_n(outputs.data, n, result.begin() + std::ptrdiff_t(done));
             done += n;
         }

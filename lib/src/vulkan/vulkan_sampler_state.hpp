@@ -50,10 +50,16 @@ auto translate_vulkan_errors(const std::string& device, Call&& call)
     }
 }
 
+// User samplers run on OpenCL for now: InvalidArgument for Method::user or a request that carries one.
+inline void refuse_user_sampler(Method method, bool has_user_sampler = false)
+{
+    if (method == Method::user || has_user_sampler)
+        throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
+}
+
 inline void refuse_user_sampler(const SampleParams& params)
 {
-    if (params.method == Method::user || params.user_sampler)
-        throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
+    refuse_user_sampler(params.method, params.user_sampler != nullptr);
 }
 
 // Entries [done, done + n) of the caller's per-sample inputs as planes of
@@ -119,6 +125,19 @@ struct VulkanSampler::State {
     {
         return shader_pipeline(std::string("ggx_") + detail::program_kind_name(variant.kind),
                                detail::variant_define_list(variant));
+    }
+
+    // Runs `pipeline` over `invocations` (a 2-D dispatch where the device
+    // caps work-groups per dimension: request.row_width set to its rows'
+    // width) with `request` as push constants; waits.
+    void dispatch(const vk::raii::Pipeline& pipeline, detail::BulkRequest& request, std::uint64_t invocations,
+                  const detail::MappedBuffer& inputs, const detail::MappedBuffer& outputs)
+    {
+        const VulkanDeviceInfo& info = compute->info();
+        const detail::DispatchShape shape =
+            detail::dispatch_shape(invocations, detail::group_size, info.max_work_groups_x, info.max_work_groups_y);
+        request.row_width = shape.row_width;
+        compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
     }
 
     // Samples per chunk: the chunk size, within one storage buffer of the device.

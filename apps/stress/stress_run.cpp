@@ -135,7 +135,7 @@ std::vector<float> StressDevice::run(ggxcl::Method method, ggxcl::Precision prec
                                      int output_planes) const
 {
     if (vulkan_)  // one SPIR-V for every precision mode
-        return vulkan_->stress(method, guards, dielectric, in, std::uint32_t(count));
+        return vulkan_->stress(method, guards, dielectric, in, std::uint32_t(count), user);
     const std::string defines = stress_defines(method, guards, user) + (dielectric ? " -DGGX_DIELECTRIC=1" : "");
     return run_stress_kernel(*opencl_, stress_options(opencl_->device(), defines, precision), in, count, output_planes);
 }

@@ -49,8 +49,8 @@ using CellCounts = Counts<failure_kinds>;
 using StressMap = std::vector<CellCounts>;
 
 // Where the map's cases run: kernels/ggx_stress.cl on an OpenCL device, or
-// its shader (ggx_stress.comp, .hlsl) on a Vulkan one (`--api vulkan`; the
-// built-in methods alone).  Made from either sampler, which it borrows.
+// its shader (ggx_stress.comp, .hlsl) on a Vulkan one (`--api vulkan`; a
+// user sampler in GLSL or HLSL there).  Made from either sampler, which it borrows.
 class StressDevice {
 public:
     StressDevice(ggxcl::Sampler& sampler) : opencl_(&sampler) {}

@@ -27,7 +27,16 @@ namespace {
 struct Expansion {
     std::string source, own_code;
     std::set<std::string> seen;
+    bool shader = false;  // GLSL or HLSL: the lines shader_only_line() names are left out
 };
+
+// A line a shader file has for a shader of its own, which the program it joins already has:
+// `#version`, `#extension GL_GOOGLE_include_directive`, `#pragma once`.
+bool shader_only_line(const std::string& line)
+{
+    static const std::regex own(R"re(^\s*#\s*(version\b|extension\s+GL_GOOGLE_include_directive\b|pragma\s+once\b).*)re");
+    return std::regex_match(line, own);
+}
 
 bool is_device_header(const std::string& name)
 {
@@ -74,7 +83,7 @@ void expand(const fs::path& path, const std::string& included_from, Expansion& o
         ++number;
         std::smatch match;
         if (!std::regex_match(line, match, include_line)) {
-            out.source += line + "\n";
+            out.source += (out.shader && shader_only_line(line) ? std::string() : line) + "\n";
             continue;
         }
         const std::string name = match[1];
@@ -135,20 +144,44 @@ std::string location_first(const std::string& line)
     return match[2].str() + " " + match[1].str() + ": " + match.suffix().str();
 }
 
+// What follows the kernel file in a program built with a user sampler, and whence it came.
+struct UserPart {
+    std::string source, path;
+    std::optional<ShaderLanguage> language;
+};
+
 std::mutex sources_mutex;
-std::map<std::string, std::string>& user_parts()  // by key: what follows the kernel file
+std::map<std::string, UserPart>& user_parts()  // by key
 {
-    static std::map<std::string, std::string> parts;
+    static std::map<std::string, UserPart> parts;
     return parts;
 }
 
 } // namespace
 
-std::shared_ptr<const UserSampler> UserSampler::load(const std::string& path, const std::string& name)
+std::optional<ShaderLanguage> shader_language_of_file(const std::string& path)
+{
+    const std::string extension = fs::path(path).extension().string();
+    if (extension == ".glsl")
+        return ShaderLanguage::glsl;
+    if (extension == ".hlsl")
+        return ShaderLanguage::hlsl;
+    return std::nullopt;
+}
+
+std::string UserSampler::language_name() const
+{
+    return !language_ ? "OpenCL C" : *language_ == ShaderLanguage::hlsl ? "HLSL" : "GLSL";
+}
+
+std::shared_ptr<const UserSampler> UserSampler::load(const std::string& path, const std::string& name,
+                                                     std::optional<ShaderLanguage> language)
 {
     Expansion expansion;
+    expansion.shader = (language ? language : shader_language_of_file(path)).has_value();
     expand(fs::path(path), "", expansion);
     std::shared_ptr<UserSampler> sampler(new UserSampler());
+    sampler->language_ = language ? language : shader_language_of_file(path);
     sampler->path_ = path;
     sampler->name_ = name.empty() ? fs::path(path).stem().string() : name;
     check_name(sampler->name_);
@@ -162,15 +195,16 @@ std::shared_ptr<const UserSampler> UserSampler::load(const std::string& path, co
         throw InvalidArgument("sampler", path,
                               "a file that defines float ggx_user_pdf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)");
     sampler->distribution_ = claimed_distribution(code, path);
-    // The device checks the claim it compiles against the one read here.
+    // The device checks the claim it compiles against the one read here (an #error of plain
+    // words: GLSL has no string literal).
     sampler->source_ = expansion.source + "#if GGX_USER_DISTRIBUTION != " +
                        std::to_string(static_cast<int>(sampler->distribution_)) +
-                       "\n#error \"GGX_USER_DISTRIBUTION: the file states it more than once, or conditionally\"\n#endif\n";
+                       "\n#error GGX_USER_DISTRIBUTION is stated more than once or conditionally\n#endif\n";
     char key[17];
-    std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(detail::fnv1a(sampler->source_)));
+    std::snprintf(key, sizeof key, "%016llx", static_cast<unsigned long long>(detail::fnv1a(sampler->language_name() + "\n" + sampler->source_)));
     sampler->key_ = key;
     std::lock_guard<std::mutex> lock(sources_mutex);
-    user_parts()[sampler->key_] = sampler->source_;
+    user_parts()[sampler->key_] = {sampler->source_, sampler->path_, sampler->language_};
     return sampler;
 }
 
@@ -190,7 +224,13 @@ std::string program_source(const std::string& file, const std::string& options)
     auto found = user_parts().find(match[1]);
     if (found == user_parts().end())
         throw InvalidArgument("options", match[0], "the marker of a sampler loaded in this process (UserSampler::load)");
-    return kernel_source(file) + "\n" + found->second;
+    const UserPart& part = found->second;
+    if (part.language)
+        throw InvalidArgument("sampler", part.path,
+                              "a user sampler in OpenCL C on an OpenCL device (this file is " +
+                                  std::string(*part.language == ShaderLanguage::hlsl ? "HLSL" : "GLSL") +
+                                  ": it runs on Vulkan, VulkanSampler or ggx --api vulkan)");
+    return kernel_source(file) + "\n" + part.source;
 }
 
 std::string user_build_summary(const std::string& log)

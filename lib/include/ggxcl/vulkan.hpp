@@ -21,13 +21,10 @@
 #include "ggxcl/fields.hpp"
 #include "ggxcl/params.hpp"
 #include "ggxcl/sampler.hpp"
+#include "ggxcl/shader_language.hpp"
+#include "ggxcl/user_sampler.hpp"
 
 namespace ggxcl {
-
-enum class ShaderLanguage { glsl, hlsl };
-const char* shader_language_name(ShaderLanguage language);  // "glsl", "hlsl"
-// "glsl" or "hlsl"; InvalidArgument("shader language", ...) otherwise.
-ShaderLanguage parse_shader_language(const std::string& name);
 
 struct VulkanDeviceInfo {
     std::size_t index = 0;  // position in list_vulkan_devices(): a valid selector
@@ -59,7 +56,9 @@ VulkanDeviceInfo select_vulkan_device(const std::string& selector = "");
 // are built per request variant (the switches of the OpenCL programs) and
 // cached on disk as SPIR-V beside the OpenCL binaries (GGXCL_PROGRAM_CACHE).
 // A shader that does not compile is a BuildError naming its file and line.
-// Not yet on Vulkan: user samplers (InvalidArgument), the caller's buffers.
+// User samplers in GLSL or HLSL (UserSampler::load of a .glsl or .hlsl file)
+// run in every call in place of a method, in their file's language; one in
+// OpenCL C is InvalidArgument.  Not yet on Vulkan: the caller's buffers.
 // One VulkanSampler is used by one thread at a time.
 class VulkanSampler {
 public:
@@ -110,8 +109,9 @@ public:
     // with `dielectric`, over `count` cases of planar inputs as
     // ggx_stress.cl reads them (in[k * count + j]: 10 planes, 12 for a
     // dielectric); returns its output planes (10, 11 for a dielectric) alike.
+    // Method::user runs `user` (a GLSL or HLSL sampler), a conductor's map.
     std::vector<float> stress(Method method, bool guards, bool dielectric, const std::vector<float>& in,
-                              std::uint32_t count);
+                              std::uint32_t count, const UserSampler* user = nullptr);
 
     std::size_t shaders_built() const;     // pipelines made so far
     std::size_t shaders_from_disk() const;  // of those, SPIR-V read from the cache

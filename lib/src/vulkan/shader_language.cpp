@@ -1,7 +1,7 @@
 // shader_language.cpp - the names of the shading languages (built with or
 // without the Vulkan back end).
 #include "ggxcl/error.hpp"
-#include "ggxcl/vulkan.hpp"
+#include "ggxcl/shader_language.hpp"
 
 namespace ggxcl {
 

@@ -78,11 +78,10 @@ std::vector<std::uint32_t> run_shaderc(ShaderLanguage language, const std::strin
     return {result.cbegin(), result.cend()};
 }
 
-} // namespace
-
-CompiledShader compile_shader(ShaderLanguage language, const std::string& file, const ShaderDefines& defines)
+// `text` compiled, or read from the disk cache.
+CompiledShader compiled_text(ShaderLanguage language, const std::string& file, const ShaderDefines& defines,
+                             const std::string& text)
 {
-    const std::string text = shader_text(language, file);
     const std::string key = cache_key(language, file, defines, text);
     std::vector<unsigned char> bytes;
     CompiledShader shader;
@@ -97,6 +96,25 @@ CompiledShader compile_shader(ShaderLanguage language, const std::string& file, 
     std::memcpy(bytes.data(), shader.spirv.data(), bytes.size());
     store_program_binary(key, bytes);
     return shader;
+}
+
+} // namespace
+
+CompiledShader compile_shader(ShaderLanguage language, const std::string& file, const ShaderDefines& defines)
+{
+    return compiled_text(language, file, defines, shader_text(language, file));
+}
+
+CompiledShader compile_user_shader(const UserSampler& user, const std::string& file, const ShaderDefines& defines)
+{
+    const ShaderLanguage language = user.shader_language().value_or(ShaderLanguage::glsl);
+    try {
+        return compiled_text(language, file, defines, shader_text(language, file) + "\n" + user.source());
+    } catch (const BuildError& error) {
+        throw BuildError(user_build_summary(error.log()) + "\n(" + user.path() + " as " +
+                             user.language_name() + ", in " + file + ")",
+                         error.log());
+    }
 }
 
 } // namespace ggxcl::detail

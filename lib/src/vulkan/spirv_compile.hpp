@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "ggxcl/user_sampler.hpp"
 #include "ggxcl/vulkan.hpp"
 
 namespace ggxcl::detail {
@@ -28,5 +29,10 @@ struct CompiledShader {
 // error with its file and line (the embedded `#line` markers), then
 // shaderc's whole log.
 CompiledShader compile_shader(ShaderLanguage language, const std::string& file, const ShaderDefines& defines);
+
+// The same with a user sampler's file after the embedded one, in the user's
+// language (its defines given by the caller).  BuildError when it does not
+// compile: "the user sampler does not compile: FILE:LINE: error: ...".
+CompiledShader compile_user_shader(const UserSampler& user, const std::string& file, const ShaderDefines& defines);
 
 } // namespace ggxcl::detail

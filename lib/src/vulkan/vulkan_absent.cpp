@@ -56,7 +56,10 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams&, const std::
 }
 Histogram VulkanSampler::histogram(const SampleParams&, const SampleRange&, int, int, Field) { not_built(); }
 FurnaceSums VulkanSampler::furnace(const SampleParams&, const SampleRange&) { not_built(); }
-std::vector<float> VulkanSampler::stress(Method, bool, bool, const std::vector<float>&, std::uint32_t) { not_built(); }
+std::vector<float> VulkanSampler::stress(Method, bool, bool, const std::vector<float>&, std::uint32_t, const UserSampler*)
+{
+    not_built();
+}
 std::size_t VulkanSampler::shaders_built() const { not_built(); }
 std::size_t VulkanSampler::shaders_from_disk() const { not_built(); }
 

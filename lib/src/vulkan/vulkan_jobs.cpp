@@ -23,7 +23,6 @@ Histogram VulkanSampler::histogram(const SampleParams& params, const SampleRange
 {
     const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
-    detail::refuse_user_sampler(params);
     detail::check_histogram_bins(bins_z, bins_phi, direction, device().max_shared_memory);
     detail::ProgramVariant variant = detail::variant_of(detail::ProgramKind::histogram, *valid, 0);
     variant.bins = {bins_z, bins_phi, direction == Field::m};
@@ -61,7 +60,6 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
 {
     const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
-    detail::refuse_user_sampler(params);
     State& s = *state_;
     const std::uint64_t per_item = detail::furnace_per_item, planes = detail::furnace_sum_planes(*valid);
     // Samples per dispatch: a multiple of the samples per invocation, their sums within one storage buffer.
@@ -101,9 +99,14 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
 }
 
 std::vector<float> VulkanSampler::stress(Method method, bool guards, bool dielectric, const std::vector<float>& in,
-                                         std::uint32_t count)
+                                         std::uint32_t count, const UserSampler* user)
 {
-    detail::refuse_user_sampler(method);
+    if ((method == Method::user) != (user != nullptr))
+        throw InvalidArgument("stress user sampler", user ? user->name() : "none",
+                              "a user sampler exactly when the method is user");
+    if (user && dielectric)
+        throw InvalidArgument("stress dielectric", "true", std::string("false for a user sampler (") + user->name() +
+                                                               "): " + std::string(method_traits(Method::user).limits));
     const std::uint64_t in_planes = dielectric ? 12 : 10, out_planes = dielectric ? 11 : 10;
     if (in.size() != in_planes * count)
         throw InvalidArgument("stress inputs", std::to_string(in.size()) + " floats",
@@ -115,7 +118,7 @@ std::vector<float> VulkanSampler::stress(Method method, bool guards, bool dielec
     const std::uint64_t capacity = s.capacity(in_planes);
     std::vector<float> out(out_planes * count);
     detail::translate_vulkan_errors(device().name, [&] {
-        const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_stress", defines);
+        const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_stress", defines, user);
         detail::MappedBuffer inputs = s.compute->buffer(in_planes * capacity);
         detail::MappedBuffer outputs = s.compute->buffer(out_planes * capacity);
         detail::BulkRequest request{};

@@ -104,7 +104,6 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
                                          const ChunkViewSink& sink, const PerSampleInputs& per_sample)
 {
     const detail::ValidatedParams valid = detail::validated_request(params, range, fields, per_sample);
-    detail::refuse_user_sampler(params);
     const SampleParams& p = *valid;
     const bool dielectric = p.eta != 0.0f;
     const detail::ProgramVariant variant =
@@ -162,7 +161,6 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams& params, cons
                                                 const PerSampleInputs& per_sample, bool eval)
 {
     const detail::ValidatedParams valid = detail::validated(params);
-    detail::refuse_user_sampler(params);
     const std::uint64_t count = directions.size();
     if (count == 0)
         throw InvalidArgument("directions", "0 entries", "at least one direction");
@@ -173,7 +171,7 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams& params, cons
     const std::uint64_t in_per_sample = input_floats(per_sample) + 3, capacity = s.capacity(in_per_sample);
     std::vector<float> result(count);
     detail::translate_vulkan_errors(device().name, [&] {
-        const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_pdf", detail::variant_define_list(variant));
+        const vk::raii::Pipeline& pipeline = s.pipeline(variant, "ggx_pdf");
         detail::MappedBuffer inputs = s.compute->buffer(in_per_sample * capacity), outputs = s.compute->buffer(capacity);
         detail::BulkRequest request = detail::request_of(*valid, 0);
         request.stride = std::uint32_t(capacity);

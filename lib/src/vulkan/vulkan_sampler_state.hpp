@@ -18,6 +18,7 @@
 #include "vulkan_compute.hpp"
 #include "vulkan_instance.hpp"
 #include "ggxcl/error.hpp"
+#include "ggxcl/user_sampler.hpp"
 #include "ggxcl/vulkan.hpp"
 
 namespace ggxcl {
@@ -50,16 +51,13 @@ auto translate_vulkan_errors(const std::string& device, Call&& call)
     }
 }
 
-// User samplers run on OpenCL for now: InvalidArgument for Method::user or a request that carries one.
-inline void refuse_user_sampler(Method method, bool has_user_sampler = false)
+// A user sampler's file in the language Vulkan compiles: InvalidArgument for one in OpenCL C.
+inline void check_shader_sampler(const UserSampler& user)
 {
-    if (method == Method::user || has_user_sampler)
-        throw InvalidArgument("method", "user", "a built-in method on Vulkan (user samplers run on OpenCL for now)");
-}
-
-inline void refuse_user_sampler(const SampleParams& params)
-{
-    refuse_user_sampler(params.method, params.user_sampler != nullptr);
+    if (!user.shader_language())
+        throw InvalidArgument("sampler", user.path(),
+                              "a user sampler in GLSL or HLSL on Vulkan (this file is OpenCL C: it runs on Sampler; "
+                              "UserSampler::load reads it as a shader with a shader language)");
 }
 
 // Entries [done, done + n) of the caller's per-sample inputs as planes of
@@ -104,27 +102,39 @@ struct VulkanSampler::State {
     std::map<std::string, vk::raii::Pipeline> pipelines;  // by program and defines
     std::size_t from_disk = 0;
 
-    // The pipeline of shader `program` (kernels/<program>.comp or .hlsl) built with `defines`.
-    const vk::raii::Pipeline& shader_pipeline(const std::string& program, detail::ShaderDefines defines)
+    // The pipeline of shader `program` (kernels/<program>.comp or .hlsl) built with `defines`;
+    // with a user sampler, in its file's language with its file after the program's text
+    // (as OpenCL's user programs, ggx_user_sampler.h).
+    const vk::raii::Pipeline& shader_pipeline(const std::string& program, detail::ShaderDefines defines,
+                                              const UserSampler* user = nullptr)
     {
         defines.emplace_back("GGX_GROUP_SIZE", long(detail::group_size));
-        std::string key = program;
+        ShaderLanguage shader_language = language;
+        if (user) {
+            detail::check_shader_sampler(*user);
+            shader_language = *user->shader_language();
+            defines.emplace_back("GGX_USER_SAMPLER", 1);
+            defines.emplace_back("GGX_USER_SAMPLES_M", user->samples_m() ? 1 : 0);
+        }
+        std::string key = program + " " + shader_language_name(shader_language) + (user ? " " + user->key() : "");
         for (const auto& [name, value] : defines)
             key += " " + name + "=" + std::to_string(value);
         auto found = pipelines.find(key);
         if (found != pipelines.end())
             return found->second;
-        const std::string file = program + (language == ShaderLanguage::hlsl ? ".hlsl" : ".comp");
-        const detail::CompiledShader shader = detail::compile_shader(language, file, defines);
+        const std::string file = program + (shader_language == ShaderLanguage::hlsl ? ".hlsl" : ".comp");
+        const detail::CompiledShader shader =
+            user ? detail::compile_user_shader(*user, file, defines) : detail::compile_shader(shader_language, file, defines);
         from_disk += shader.from_disk ? 1 : 0;
         return pipelines.emplace(key, compute->pipeline(shader.spirv)).first->second;
     }
 
-    // A request variant's: the shader of its kind with its switches.
-    const vk::raii::Pipeline& pipeline(const detail::ProgramVariant& variant)
+    // A request variant's: the shader of its kind with its switches (and its user sampler).
+    const vk::raii::Pipeline& pipeline(const detail::ProgramVariant& variant, std::string program = "")
     {
-        return shader_pipeline(std::string("ggx_") + detail::program_kind_name(variant.kind),
-                               detail::variant_define_list(variant));
+        if (program.empty())
+            program = std::string("ggx_") + detail::program_kind_name(variant.kind);
+        return shader_pipeline(program, detail::variant_define_list(variant), variant.user.get());
     }
 
     // Runs `pipeline` over `invocations` (a 2-D dispatch where the device

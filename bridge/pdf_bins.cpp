@@ -28,7 +28,7 @@ template <int N> void unit_rule(std::vector<double>& nodes, std::vector<double>&
 }
 
 // int over each bin of pdf(o) dz dphi (dw = dz dphi), the rule's nodes in z and in phi.
-std::vector<double> bins_by_rule(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params, int bins_z, int bins_phi,
+std::vector<double> bins_by_rule(const DirectionPdf& pdf, const ggxcl::SampleParams& params, int bins_z, int bins_phi,
                                  const std::vector<double>& nodes, const std::vector<double>& weights)
 {
     const double dz = 2.0 / bins_z, dphi = 2.0 * pi / bins_phi;
@@ -41,7 +41,7 @@ std::vector<double> bins_by_rule(ggxcl::Sampler& sampler, const ggxcl::SamplePar
                     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
                     directions.push_back({float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)});
                 }
-    const std::vector<float> pdfs = sampler.pdf(params, directions);
+    const std::vector<float> pdfs = pdf(params, directions);
     std::vector<double> probabilities(std::size_t(bins_z) * bins_phi, 0.0);
     std::size_t k = 0;
     for (double& bin : probabilities)
@@ -53,14 +53,14 @@ std::vector<double> bins_by_rule(ggxcl::Sampler& sampler, const ggxcl::SamplePar
 
 } // namespace
 
-std::vector<double> pdf_bin_probabilities(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params, int bins_z,
+std::vector<double> pdf_bin_probabilities(const DirectionPdf& pdf, const ggxcl::SampleParams& params, int bins_z,
                                           int bins_phi, double& quadrature_error)
 {
     std::vector<double> nodes, weights;
     unit_rule<8>(nodes, weights);
-    const std::vector<double> coarse = bins_by_rule(sampler, params, bins_z, bins_phi, nodes, weights);
+    const std::vector<double> coarse = bins_by_rule(pdf, params, bins_z, bins_phi, nodes, weights);
     unit_rule<16>(nodes, weights);
-    std::vector<double> fine = bins_by_rule(sampler, params, bins_z, bins_phi, nodes, weights);
+    std::vector<double> fine = bins_by_rule(pdf, params, bins_z, bins_phi, nodes, weights);
     quadrature_error = 0.0;
     for (std::size_t b = 0; b < fine.size(); ++b)
         quadrature_error += std::fabs(fine[b] - coarse[b]);

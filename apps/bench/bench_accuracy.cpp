@@ -10,6 +10,7 @@
 
 #include "ggx_quadrature.hpp"
 #include "reference_bridge.hpp"
+#include "user_checks.hpp"
 
 namespace ggxapp {
 
@@ -104,7 +105,8 @@ std::vector<ggxcl::SampleParams> accuracy_configs(const ggxcl::SampleParams& who
     return configs;
 }
 
-NumericalError numerical_error(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
+template <class Api>
+NumericalError numerical_error(Api& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
                                ggxcl::Precision precision, ggxcl::Sequence sequence)
 {
     std::vector<double> angles, pdfs;
@@ -121,7 +123,20 @@ NumericalError numerical_error(ggxcl::Sampler& sampler, const ggxcl::SampleParam
     return error;
 }
 
-SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who,
+template <class Api>
+double pdf_disagreement(Api& sampler, const ggxcl::SampleParams& who)
+{
+    double disagree = 0.0, with_density = 0.0;
+    for (const ggxcl::SampleParams& p : accuracy_configs(who, who.precision))
+        for (const PdfAgreement& a : pdf_agreements(pdf_device(sampler), p, {accuracy_seed, 0, accuracy_samples}, nullptr)) {
+            disagree += double(a.disagree);
+            with_density += double(a.with_density);
+        }
+    return with_density > 0.0 ? disagree / with_density : 1.0;
+}
+
+template <class Api>
+SceneVariance albedo_scene_variance(Api& sampler, const ggxcl::SampleParams& who,
                                     ggxcl::Precision precision, int size, std::uint64_t samples_per_cell)
 {
     SceneVariance scene;
@@ -148,7 +163,8 @@ std::vector<double> albedo_table(int size)
     return exact;
 }
 
-double albedo_table_rmse(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
+template <class Api>
+double albedo_table_rmse(Api& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
                          ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
                          const std::vector<double>& exact)
 {
@@ -189,5 +205,18 @@ DielectricAccuracy dielectric_accuracy(ggxcl::Sampler& sampler, const ggxcl::Sam
     a.measured = true;
     return a;
 }
+
+// The two APIs' builds of the templates above.
+#define GGX_BENCH_ACCURACY_FOR(Api)                                                                               \
+    template NumericalError numerical_error<Api>(Api&, const ggxcl::SampleParams&, ggxcl::Method, ggxcl::Precision, \
+                                                 ggxcl::Sequence);                                               \
+    template double pdf_disagreement<Api>(Api&, const ggxcl::SampleParams&);                                     \
+    template SceneVariance albedo_scene_variance<Api>(Api&, const ggxcl::SampleParams&, ggxcl::Precision, int,    \
+                                                      std::uint64_t);                                            \
+    template double albedo_table_rmse<Api>(Api&, const ggxcl::SampleParams&, ggxcl::Precision, ggxcl::Sequence,  \
+                                           int, std::uint64_t, int, const std::vector<double>&);
+GGX_BENCH_ACCURACY_FOR(ggxcl::Sampler)
+GGX_BENCH_ACCURACY_FOR(ggxcl::VulkanSampler)
+#undef GGX_BENCH_ACCURACY_FOR
 
 } // namespace ggxapp

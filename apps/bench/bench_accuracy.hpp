@@ -10,6 +10,8 @@
 //    the table a renderer precomputes for energy compensation; and the
 //    table's RMSE measured against its exact albedos at a sample count.
 //  Both take the device's uniforms from the u field, so any sequence works.
+//  - A user sampler's pdf self-consistency: the samples' pdf_o against the
+//    pdf its own function recomputes from (i, o).
 //  - A rough dielectric's fused furnace: its reflectance and transmittance
 //    against the reference's quadrature (ggxref::dielectric_albedo), the
 //    errors in standard errors from the spread of independent streams.
@@ -30,10 +32,19 @@ struct NumericalError {
     std::uint64_t non_finite = 0;
 };
 
+// The functions below that take a device's sampler (Api) are built for ggxcl::Sampler (OpenCL)
+// and ggxcl::VulkanSampler.
+
 // `who`'s sampler (its method and user sampler) against the reference of `method` on the same
 // uniforms: for a built-in method, who.method itself; for a user sampler, the map it reproduces.
-NumericalError numerical_error(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
+template <class Api>
+NumericalError numerical_error(Api& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
                                ggxcl::Precision precision, ggxcl::Sequence sequence = ggxcl::Sequence::philox);
+
+// The fraction of samples with a density whose pdf recomputed from (i, o) by who's own pdf
+// function differs from pdf_o by more than 1e-3 (relative), over the accuracy configurations.
+template <class Api>
+double pdf_disagreement(Api& sampler, const ggxcl::SampleParams& who);
 
 // What the device and the native baseline are both measured on: the 9
 // configurations (normalized parameters), samples 0 .. 2^13 - 1 of this seed.
@@ -54,7 +65,8 @@ struct SceneVariance {
 };
 
 // Of `who`'s sampler (its method and user sampler), as below.
-SceneVariance albedo_scene_variance(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who,
+template <class Api>
+SceneVariance albedo_scene_variance(Api& sampler, const ggxcl::SampleParams& who,
                                     ggxcl::Precision precision, int size, std::uint64_t samples_per_cell);
 
 // The exact albedo of every cell of the size x size table (reference
@@ -64,7 +76,8 @@ std::vector<double> albedo_table(int size);
 // The table's RMSE against `exact` from `samples_per_cell` samples per cell
 // of `sequence`, over `streams` independent streams (seeds; for Sobol points
 // independent scrambles) of each cell: measured, for any sequence.
-double albedo_table_rmse(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
+template <class Api>
+double albedo_table_rmse(Api& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
                          ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
                          const std::vector<double>& exact);
 

@@ -37,11 +37,11 @@ BenchJob job_named(const std::string& name)
 }
 
 // --sampler, --sampler-name and --reproduces (the k-th for the k-th sampler; none: no map).
-void plan_user_samplers(const BenchCommand& cmd, BenchPlan& plan)
+void plan_user_samplers(const BenchCommand& cmd, const ApiChoice& api, BenchPlan& plan)
 {
     if (cmd.reproduces.size() > cmd.user.files.size())
         throw UsageError("--reproduces", cmd.reproduces.back(), "at most one per --sampler");
-    for (const auto& loaded : cmd.user.load()) {
+    for (const auto& loaded : cmd.user.load(api)) {
         BenchUserSampler user{loaded};
         const std::size_t k = plan.users.size();
         if (k < cmd.reproduces.size() && cmd.reproduces[k] != "none") {
@@ -56,7 +56,7 @@ void plan_user_samplers(const BenchCommand& cmd, BenchPlan& plan)
     }
 }
 
-BenchPlan plan_bench(const BenchCommand& cmd)
+BenchPlan plan_bench(const BenchCommand& cmd, const ApiChoice& api)
 {
     BenchPlan plan;
     plan.methods = parse_name_list("--methods", cmd.methods, method_names());
@@ -81,7 +81,7 @@ BenchPlan plan_bench(const BenchCommand& cmd)
         throw UsageError("--transport", cmd.transport, "one of radiance, importance");
     }
     plan.settings.transport = std::string(ggxcl::transport_name(plan.transport));
-    plan_user_samplers(cmd, plan);
+    plan_user_samplers(cmd, api, plan);
     return plan;
 }
 

@@ -46,8 +46,8 @@ struct BenchPlan {
     std::vector<BenchUserSampler> users;  // conductor rows beside the methods' (no world job, no native row)
 };
 
-// Throws UsageError naming the first bad option.
-BenchPlan plan_bench(const BenchCommand& cmd);
+// Throws UsageError naming the first bad option; `api` reads the --sampler files.
+BenchPlan plan_bench(const BenchCommand& cmd, const ApiChoice& api);
 
 BenchJob job_named(const std::string& name);
 

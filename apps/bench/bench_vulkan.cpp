@@ -1,5 +1,5 @@
 // bench_vulkan.cpp - `ggx bench --api vulkan` (bench_vulkan.hpp): the jobs
-// timed on both APIs, their report and CSV.
+// timed on both APIs, the accuracy on Vulkan, their report and CSV.
 #include "bench_vulkan.hpp"
 
 #include <iostream>
@@ -18,12 +18,13 @@ constexpr std::uint64_t bench_seed = 1;
 struct ApiTask {
     std::string job;
     ggxcl::SampleParams params;
+    const BenchUserSampler* user = nullptr;  // a user sampler's task: Vulkan alone
 };
 
 std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::string>& jobs)
 {
     std::vector<ApiTask> tasks;
-    for (const std::string& mode : plan.precisions)
+    for (const std::string& mode : plan.precisions) {
         for (const std::string& name : plan.methods)
             for (const std::string& job : jobs) {
                 ggxcl::SampleParams p = plan.base;
@@ -36,7 +37,48 @@ std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::str
                     tasks.push_back({job, p});
                 }
             }
+        for (const BenchUserSampler& user : plan.users)  // conductors only
+            for (const std::string& job : jobs) {
+                ggxcl::SampleParams p = plan.base;
+                p.method = ggxcl::Method::user;
+                p.user_sampler = user.sampler;
+                p.precision = ggxcl::parse_precision(mode);
+                tasks.push_back({job, p, &user});
+            }
+    }
     return tasks;
+}
+
+// The accuracy of a precise conductor row on the Vulkan device: the write row's numerical
+// error (a user sampler's where it reproduces a method) and a user sampler's pdf
+// self-consistency; the furnace row's albedo variance and the table's RMSE at the budget,
+// spent at the row's speed.  `exact`: the table's exact albedos, computed when first needed.
+void add_accuracy(ggxcl::VulkanSampler& vulkan, const ApiTask& task, const ApiBenchReport& report,
+                  std::vector<double>& exact, ApiBenchRow& row)
+{
+    const ggxcl::SampleParams& p = task.params;
+    if (p.eta != 0.0f || p.precision != ggxcl::Precision::precise)
+        return;
+    if (task.job == "write") {
+        if (task.user)
+            row.pdf_disagreement = pdf_disagreement(vulkan, p);
+        if (!task.user || task.user->reproduces) {
+            row.has_error = true;
+            row.error = numerical_error(vulkan, p, task.user ? task.user->method : p.method, p.precision);
+        }
+        return;
+    }
+    row.variance = albedo_scene_variance(vulkan, p, p.precision, report.scene_size, report.samples_per_cell).variance;
+    BenchRow timed;  // the budget's arithmetic of the OpenCL report, on the Vulkan timing
+    timed.timing = row.vulkan;
+    BenchReport budget;
+    budget.scene_size = report.scene_size;
+    budget.budget_ms = report.budget_ms;
+    row.samples_per_cell = samples_at_budget(timed, budget);
+    if (exact.empty())
+        exact = albedo_table(report.scene_size);
+    row.rmse_measured = albedo_table_rmse(vulkan, p, p.precision, p.sequence, report.scene_size, row.samples_per_cell,
+                                          report.rmse_streams, exact);
 }
 
 // The job of `task` on one API; Api is ggxcl::Sampler or ggxcl::VulkanSampler.
@@ -63,7 +105,7 @@ std::vector<std::string> vulkan_bench_jobs(const std::vector<std::string>& plann
 }
 
 ApiBenchReport measure_api_bench(const BenchPlan& plan, const std::string& vulkan_selector,
-                                 ggxcl::ShaderLanguage language)
+                                 ggxcl::ShaderLanguage language, bool accuracy)
 {
     ApiBenchReport report;
     report.command = command_line();
@@ -73,6 +115,11 @@ ApiBenchReport measure_api_bench(const BenchPlan& plan, const std::string& vulka
     report.repeats = plan.settings.repeats;
     report.alpha = plan.settings.alpha;
     report.theta = plan.settings.theta;
+    report.accuracy = accuracy;
+    report.scene_size = plan.settings.scene_size;
+    report.samples_per_cell = plan.settings.samples_per_cell;
+    report.budget_ms = plan.settings.budget_ms;
+    report.rmse_streams = plan.settings.rmse_streams;
     ggxcl::VulkanSampler vulkan(vulkan_selector, language);
     report.vulkan_device = vulkan.device_name();
     report.language = ggxcl::shader_language_name(language);
@@ -88,7 +135,7 @@ ApiBenchReport measure_api_bench(const BenchPlan& plan, const std::string& vulka
     std::cerr << "warming up " << tasks.size() << " jobs on each API (builds the shaders and kernels)\n";
     for (const ApiTask& task : tasks) {
         run_task(vulkan, task, std::min<std::uint64_t>(report.count, 1u << 16));
-        if (opencl)
+        if (opencl && !task.user)
             run_task(*opencl, task, std::min<std::uint64_t>(report.count, 1u << 16));
     }
     std::vector<std::vector<double>> vk_ns(tasks.size()), cl_ns(tasks.size());
@@ -96,18 +143,75 @@ ApiBenchReport measure_api_bench(const BenchPlan& plan, const std::string& vulka
     for (int round = 0; round < report.repeats; ++round)
         for (std::size_t t = 0; t < tasks.size(); ++t) {
             vk_ns[t].push_back(wall_ns_per_sample([&] { run_task(vulkan, tasks[t], report.count); }, report.count));
-            if (opencl)
+            if (opencl && !tasks[t].user)
                 cl_ns[t].push_back(wall_ns_per_sample([&] { run_task(*opencl, tasks[t], report.count); }, report.count));
         }
+    if (accuracy)
+        std::cerr << "measuring the accuracy columns on the Vulkan device\n";
+    std::vector<double> exact;
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         const ggxcl::SampleParams& p = tasks[t].params;
-        ApiBenchRow row{std::string(ggxcl::method_name(p.method)), std::string(ggxcl::precision_name(p.precision)),
-                        tasks[t].job, p.eta,
-                        summarize(vk_ns[t]), opencl ? summarize(cl_ns[t]) : Timing{}};
+        ApiBenchRow row;
+        row.method = ggxcl::sampler_name(p);
+        row.precision = ggxcl::precision_name(p.precision);
+        row.job = tasks[t].job;
+        row.eta = p.eta;
+        row.vulkan = summarize(vk_ns[t]);
+        row.opencl = cl_ns[t].empty() ? Timing{} : summarize(cl_ns[t]);
+        row.user = tasks[t].user != nullptr;
+        if (accuracy)
+            add_accuracy(vulkan, tasks[t], report, exact, row);
         report.rows.push_back(row);
     }
     return report;
 }
+
+namespace {
+
+bool has_user_rows(const ApiBenchReport& r)
+{
+    for (const ApiBenchRow& row : r.rows)
+        if (row.user)
+            return true;
+    return false;
+}
+
+// The accuracy section: a line per sampler of its precise conductor write and furnace rows.
+std::string accuracy_markdown(const ApiBenchReport& r)
+{
+    std::ostringstream md;
+    md << "\n## Accuracy on the Vulkan device\n\n"
+       << "Precise mode, conductors, measured on " << r.vulkan_device << " as `ggx bench` measures it on OpenCL. "
+       << "Error: the samples against the double-precision reference on the same uniforms (a user sampler's only "
+          "with --reproduces), angle of m and o and relative pdf, 99th percentile. pdf off: the fraction of a user "
+          "sampler's pdf_o that its own pdf function, from (i, o), puts more than 1e-3 away. Variance: the albedo "
+          "estimator's per sample over a "
+       << r.scene_size << " x " << r.scene_size << " table (" << r.samples_per_cell
+       << " samples per cell). RMSE at equal time: the table's, measured over " << r.rmse_streams
+       << " streams, with " << readable_number(r.budget_ms)
+       << " ms of furnace time for the whole table at the Vulkan row's speed: lower is better.\n\n"
+       << "| sampler | angle error p99 (rad) | pdf error p99 | pdf off | variance | furnace ns/sample | samples per "
+          "cell | RMSE at equal time |\n"
+       << "|---|---|---|---|---|---|---|---|\n";
+    const auto cell = [](bool has, double value) { return has ? readable_number(value) : std::string("–"); };
+    for (const ApiBenchRow& furnace : r.rows) {
+        if (furnace.job != "furnace" || furnace.eta != 0.0f || furnace.precision != "precise")
+            continue;
+        const ApiBenchRow* write = nullptr;
+        for (const ApiBenchRow& row : r.rows)
+            if (row.job == "write" && row.method == furnace.method && row.precision == "precise")
+                write = &row;
+        const bool error = write && write->has_error, pdf = write && write->pdf_disagreement >= 0;
+        md << "| " << furnace.method << " | " << cell(error, error ? write->error.angle_p99 : 0) << " | "
+           << cell(error, error ? write->error.pdf_p99 : 0) << " | "
+           << cell(pdf, pdf ? write->pdf_disagreement : 0) << " | " << cell(furnace.variance > 0, furnace.variance)
+           << " | " << readable_number(furnace.vulkan.median) << " | " << furnace.samples_per_cell << " | "
+           << cell(furnace.rmse_measured > 0, furnace.rmse_measured) << " |\n";
+    }
+    return md.str();
+}
+
+} // namespace
 
 std::string api_bench_markdown(const ApiBenchReport& r)
 {
@@ -121,7 +225,8 @@ std::string api_bench_markdown(const ApiBenchReport& r)
        << " degrees from the normal; the median of " << r.repeats
        << " wall-clock runs of the whole library call (fastest–slowest), both APIs timed back to back in "
           "each round.  write: m and pdf_m into host memory; furnace: the fused white-furnace estimator.\n"
-       << "- Vulkan / OpenCL below 1: Vulkan is faster.\n\n"
+       << "- Vulkan / OpenCL below 1: Vulkan is faster."
+       << (has_user_rows(r) ? "  User samplers in GLSL or HLSL run on Vulkan alone." : "") << "\n\n"
        << "| method | precision | job | Vulkan ns/sample | OpenCL ns/sample | Vulkan / OpenCL |\n"
        << "|---|---|---|---|---|---|\n";
     const auto timing = [](const Timing& t) {
@@ -133,6 +238,8 @@ std::string api_bench_markdown(const ApiBenchReport& r)
            << (row.eta != 0.0f ? " (dielectric, eta " + readable_number(row.eta) + ")" : "") << " | "
            << timing(row.vulkan) << " | " << timing(row.opencl) << " | "
            << (row.ratio() > 0 ? readable_number(row.ratio()) : "–") << " |\n";
+    if (r.accuracy)
+        md << accuracy_markdown(r);
     return md.str();
 }
 
@@ -140,12 +247,15 @@ std::string api_bench_csv(const ApiBenchReport& r)
 {
     std::ostringstream csv;
     csv << "method,precision,job,eta,vulkan_ns,vulkan_low,vulkan_high,opencl_ns,opencl_low,opencl_high,ratio,"
-           "vulkan_device,opencl_device\n";
+           "vulkan_device,opencl_device,user,angle_p99,pdf_p99,pdf_disagreement,variance,samples_per_cell,"
+           "rmse_measured\n";
     for (const ApiBenchRow& row : r.rows)
         csv << row.method << "," << row.precision << "," << row.job << "," << row.eta << "," << row.vulkan.median << ","
             << row.vulkan.low << "," << row.vulkan.high << "," << row.opencl.median << "," << row.opencl.low << ","
             << row.opencl.high << "," << row.ratio() << ",\"" << r.vulkan_device << "\",\"" << r.opencl_device
-            << "\"\n";
+            << "\"," << (row.user ? 1 : 0) << "," << (row.has_error ? row.error.angle_p99 : -1.0) << ","
+            << (row.has_error ? row.error.pdf_p99 : -1.0) << "," << row.pdf_disagreement << "," << row.variance << ","
+            << row.samples_per_cell << "," << row.rmse_measured << "\n";
     return csv.str();
 }
 

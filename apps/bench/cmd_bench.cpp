@@ -167,19 +167,6 @@ bool reproduced_method(const std::vector<BenchUserSampler>& users, const ggxcl::
     return false;
 }
 
-// The fraction of samples with a density whose pdf recomputed from (i, o) differs from pdf_o by more
-// than 1e-3 (relative), over the accuracy configurations.
-double pdf_disagreement(ggxcl::Sampler& sampler, const ggxcl::SampleParams& who)
-{
-    double disagree = 0.0, with_density = 0.0;
-    for (const ggxcl::SampleParams& p : accuracy_configs(who, who.precision))
-        for (const PdfAgreement& a : pdf_agreements(sampler, p, {accuracy_seed, 0, accuracy_samples}, nullptr)) {
-            disagree += double(a.disagree);
-            with_density += double(a.with_density);
-        }
-    return with_density > 0.0 ? disagree / with_density : 1.0;
-}
-
 // The reference's values the accuracy columns compare with, each computed once, when first needed.
 struct ExactValues {
     std::vector<double> albedo_table;
@@ -361,7 +348,7 @@ void run_vulkan_bench(const BenchCommand& cmd, const BenchPlan& plan, const ApiC
     for (const auto& [path, flag] : {std::pair{cmd.csv, "--csv"}, {cmd.markdown, "--markdown"}})
         if (!path.empty())
             check_writable_folder(flag, path);
-    const ApiBenchReport report = measure_api_bench(plan, api.selector, api.language);
+    const ApiBenchReport report = measure_api_bench(plan, api.selector, api.language, !cmd.no_accuracy);
     if (!cmd.csv.empty())
         write_text_file(cmd.csv, api_bench_csv(report));
     const std::string md = api_bench_markdown(report);
@@ -376,7 +363,6 @@ BenchPlan vulkan_plan(const BenchCommand& cmd, BenchPlan plan, bool jobs_given, 
     for (const auto& [value, flag] : {std::pair{cmd.charts, "--charts"}, {cmd.html, "--html"}})
         if (!value.empty())
             throw UsageError(flag, value, "no charts or page with --api vulkan (its report is --markdown and --csv)");
-    api.refuse_user_samplers(cmd.user.files);
     plan.jobs = vulkan_bench_jobs(plan.jobs, jobs_given);
     return plan;
 }
@@ -452,8 +438,8 @@ Prepare add_bench_command(CLI::App& app)
     return [cmd, s, api, jobs]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
-        BenchPlan plan = plan_bench(*s);
-        const ApiChoice choice = api->choose(s->device);
+        const ApiChoice choice = api->choose(s->device, s->user.files);
+        BenchPlan plan = plan_bench(*s, choice);
         if (choice.vulkan) {
             plan = vulkan_plan(*s, plan, jobs->count() > 0, choice);
             return Work{[s, plan, choice] { run_vulkan_bench(*s, plan, choice); }, timed_batches(plan)};

@@ -19,11 +19,11 @@ std::string ApiChoice::device_label(const std::string& device_name) const
     return vulkan ? device_name + " (" + name() + ")" : device_name;
 }
 
-void ApiChoice::refuse_user_samplers(const std::vector<std::string>& files) const
+std::optional<ggxcl::ShaderLanguage> ApiChoice::sampler_language(const std::string& file) const
 {
-    if (vulkan && !files.empty())
-        throw UsageError("--sampler", files.front(),
-                         "a built-in --method with --api vulkan (user samplers run on OpenCL for now)");
+    if (!vulkan)
+        return std::nullopt;
+    return ggxcl::shader_language_of_file(file).value_or(language);
 }
 
 void ApiOptions::add_to(CLI::App& cmd)
@@ -37,23 +37,51 @@ void ApiOptions::add_to(CLI::App& cmd)
                           ->capture_default_str();
 }
 
-ApiChoice ApiOptions::choose(const std::string& device) const
+namespace {
+
+// The first of `files` whose extension names a shading language, or none.
+const std::string* first_shader_file(const std::vector<std::string>& files)
+{
+    for (const std::string& file : files)
+        if (ggxcl::shader_language_of_file(file))
+            return &file;
+    return nullptr;
+}
+
+} // namespace
+
+ApiChoice ApiOptions::choose(const std::string& device, const std::vector<std::string>& sampler_files) const
 {
     ApiChoice choice;
     if (api != "opencl" && api != "vulkan")
         throw UsageError("--api", api, "opencl or vulkan");
+    const bool api_given = api_option && api_option->count() > 0;
+    const bool language_given = language_option && language_option->count() > 0;
     const bool prefixed = device.rfind(vulkan_prefix, 0) == 0;
-    if (prefixed && api_option && api_option->count() > 0 && api == "opencl")
+    if (prefixed && api_given && api == "opencl")
         throw UsageError("--device", device, "an OpenCL device with --api opencl (`ggx devices` lists both)");
-    choice.vulkan = api == "vulkan" || prefixed;
+    const std::string* shader_file = first_shader_file(sampler_files);
+    if (shader_file && api_given && api == "opencl")
+        throw UsageError("--api", api, "vulkan with a GLSL or HLSL --sampler (" + *shader_file +
+                                           " runs on Vulkan; OpenCL runs OpenCL C)");
+    choice.vulkan = api == "vulkan" || prefixed || shader_file;
     choice.selector = prefixed ? device.substr(vulkan_prefix.size()) : device;
     try {
         choice.language = ggxcl::parse_shader_language(shader_language);
     } catch (const ggxcl::InvalidArgument&) {
         throw UsageError("--shader-language", shader_language, "glsl or hlsl");
     }
-    if (!choice.vulkan && language_option && language_option->count() > 0)
+    if (!choice.vulkan && language_given)
         throw UsageError("--shader-language", shader_language, "nothing without --api vulkan (OpenCL runs OpenCL C)");
+    for (const std::string& file : sampler_files) {
+        const std::optional<ggxcl::ShaderLanguage> own = ggxcl::shader_language_of_file(file);
+        if (own && language_given && *own != choice.language)
+            throw UsageError("--shader-language", shader_language,
+                             std::string(ggxcl::shader_language_name(*own)) + ", the language of --sampler " + file +
+                                 " (its extension says; a file of another extension is read in --shader-language)");
+    }
+    if (shader_file && !language_given)
+        choice.language = *ggxcl::shader_language_of_file(*shader_file);
     return choice;
 }
 

@@ -1,8 +1,10 @@
 // api_options.hpp - which API a command runs on: --api opencl|vulkan,
-// --shader-language glsl|hlsl (Vulkan), and a --device selector's
-// "vulkan:" prefix (`--device vulkan:llvmpipe` is `--api vulkan --device llvmpipe`).
+// --shader-language glsl|hlsl (Vulkan), a --device selector's "vulkan:"
+// prefix (`--device vulkan:llvmpipe` is `--api vulkan --device llvmpipe`),
+// and a --sampler FILE.glsl or FILE.hlsl, which runs on Vulkan.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,13 +16,13 @@ namespace ggxapp {
 struct ApiChoice {
     bool vulkan = false;
     std::string selector;  // the device selector without its prefix
-    ggxcl::ShaderLanguage language = ggxcl::ShaderLanguage::glsl;
+    ggxcl::ShaderLanguage language = ggxcl::ShaderLanguage::glsl;  // of the built-in methods' shaders
     std::string name() const;  // "opencl", or "vulkan (glsl)"
     // How reports name the device: "NAME", or on Vulkan "NAME (vulkan (glsl))".
     std::string device_label(const std::string& device_name) const;
-    // UsageError naming --sampler when Vulkan is chosen with user samplers
-    // (they run on OpenCL for now); `files` may be empty.
-    void refuse_user_samplers(const std::vector<std::string>& files) const;
+    // The language a --sampler FILE is read in: none (OpenCL C) on OpenCL;
+    // on Vulkan its extension's (.glsl, .hlsl), else `language`.
+    std::optional<ggxcl::ShaderLanguage> sampler_language(const std::string& file) const;
 };
 
 struct ApiOptions {
@@ -29,10 +31,13 @@ struct ApiOptions {
     CLI::Option* language_option = nullptr;
 
     void add_to(CLI::App& cmd);
-    // The choice for `device` (the command's --device); UsageError for an
-    // unknown API or language, --shader-language without Vulkan, or
-    // --api opencl with a vulkan: selector.
-    ApiChoice choose(const std::string& device) const;
+    // The choice for `device` (the command's --device) and the command's
+    // --sampler files: a .glsl or .hlsl file implies Vulkan, and without
+    // --shader-language the first such file's language is the built-ins'.
+    // UsageError for an unknown API or language, --shader-language without
+    // Vulkan or against a file's extension, or --api opencl with a vulkan:
+    // selector or a shader file.
+    ApiChoice choose(const std::string& device, const std::vector<std::string>& sampler_files = {}) const;
 };
 
 } // namespace ggxapp

@@ -39,8 +39,8 @@ void SampleOptions::add_method_options(CLI::App& cmd)
     CLI::Option* by_method =
         cmd.add_option("--method", method, "sampler: " + ggxcl::method_list() + "; this or --sampler is required");
     CLI::Option* by_file =
-        cmd.add_option("--sampler", sampler, "a sampler of your own in FILE.h instead of --method "
-                                             "(docs/USER-SAMPLERS.md)");
+        cmd.add_option("--sampler", sampler, "a sampler of your own in FILE.h (OpenCL C), FILE.glsl or FILE.hlsl "
+                                             "(Vulkan) instead of --method (docs/USER-SAMPLERS.md)");
     by_method->excludes(by_file);
     cmd.add_option("--sampler-name", sampler_name, "the --sampler's name in reports (default: the file's stem)")
         ->needs(by_file);
@@ -52,10 +52,11 @@ void SampleOptions::add_method_options(CLI::App& cmd)
     });
 }
 
-std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& file, const std::string& name)
+std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& file, const std::string& name,
+                                                            const ApiChoice& api)
 {
     try {
-        return ggxcl::UserSampler::load(file, name);
+        return ggxcl::UserSampler::load(file, name, api.sampler_language(file));
     } catch (const ggxcl::InvalidArgument& error) {
         const bool bad_name = error.parameter() == "sampler name";
         throw UsageError(bad_name ? "--sampler-name" : "--sampler", bad_name ? name : file, error.allowed());
@@ -86,19 +87,19 @@ std::vector<SamplerChoice> sampler_choices(const std::vector<ggxcl::Method>& met
 
 void UserSamplerOptions::add_to(CLI::App& cmd)
 {
-    cmd.add_option("--sampler", files, "a sampler of your own in FILE.h, beside the methods (repeatable; "
-                                       "docs/USER-SAMPLERS.md)");
+    cmd.add_option("--sampler", files, "a sampler of your own in FILE.h (OpenCL C), FILE.glsl or FILE.hlsl "
+                                       "(Vulkan), beside the methods (repeatable; docs/USER-SAMPLERS.md)");
     cmd.add_option("--sampler-name", names, "the name of the k-th --sampler in reports (repeatable; default: the "
                                             "file's stem)");
 }
 
-std::vector<std::shared_ptr<const ggxcl::UserSampler>> UserSamplerOptions::load() const
+std::vector<std::shared_ptr<const ggxcl::UserSampler>> UserSamplerOptions::load(const ApiChoice& api) const
 {
     if (names.size() > files.size())
         throw UsageError("--sampler-name", names.back(), "at most one name per --sampler");
     std::vector<std::shared_ptr<const ggxcl::UserSampler>> loaded;
     for (std::size_t k = 0; k < files.size(); ++k) {
-        loaded.push_back(load_user_sampler(files[k], k < names.size() ? names[k] : ""));
+        loaded.push_back(load_user_sampler(files[k], k < names.size() ? names[k] : "", api));
         for (std::size_t j = 0; j < k; ++j)
             if (loaded[j]->name() == loaded[k]->name())
                 throw UsageError("--sampler-name", loaded[k]->name(),
@@ -107,11 +108,11 @@ std::vector<std::shared_ptr<const ggxcl::UserSampler>> UserSamplerOptions::load(
     return loaded;
 }
 
-ggxcl::SampleParams SampleOptions::parsed_params() const
+ggxcl::SampleParams SampleOptions::parsed_params(const ApiChoice& api) const
 {
     if (sampler.empty())
         return params_for(parsed_method());
-    return params_for(ggxcl::Method::user, load_user_sampler(sampler, sampler_name));
+    return params_for(ggxcl::Method::user, load_user_sampler(sampler, sampler_name, api));
 }
 
 std::vector<std::string> method_names()

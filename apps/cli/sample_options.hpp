@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <ggxcl/ggxcl.hpp>
 
+#include "api_options.hpp"
 #include "library_errors.hpp"
 
 namespace ggxapp {
@@ -16,9 +17,10 @@ namespace ggxapp {
 // The method names in ggxcl::all_methods order, for lists of methods.
 std::vector<std::string> method_names();
 
-// The user sampler in `file`, named `name` (empty: the file's stem); throws
-// UsageError naming --sampler or --sampler-name.
-std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& file, const std::string& name);
+// The user sampler in `file`, named `name` (empty: the file's stem), in the
+// language `api` reads it in; throws UsageError naming --sampler or --sampler-name.
+std::shared_ptr<const ggxcl::UserSampler> load_user_sampler(const std::string& file, const std::string& name,
+                                                            const ApiChoice& api);
 
 // A sampler the comparing commands run: a built-in method, or Method::user with its file.
 struct SamplerChoice {
@@ -40,7 +42,7 @@ struct UserSamplerOptions {
     void add_to(CLI::App& cmd);
     // Each file loaded; UsageError for more names than files, a bad file or name, or two
     // samplers of one name.
-    std::vector<std::shared_ptr<const ggxcl::UserSampler>> load() const;
+    std::vector<std::shared_ptr<const ggxcl::UserSampler>> load(const ApiChoice& api) const;
 };
 
 struct SampleOptions {
@@ -69,7 +71,7 @@ struct SampleOptions {
     ggxcl::SampleParams params_for(ggxcl::Method method,
                                    std::shared_ptr<const ggxcl::UserSampler> user = nullptr) const;
     // The parameters of --method, or of --sampler (Method::user).
-    ggxcl::SampleParams parsed_params() const;
+    ggxcl::SampleParams parsed_params(const ApiChoice& api) const;
     ggxcl::Method parsed_method() const;
     std::uint64_t parsed_seed() const;
     ggxcl::Sequence parsed_sequence() const;

@@ -124,9 +124,8 @@ Prepare add_converge_command(CLI::App& app)
     return [cmd, s, api_options]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
-        ConvergePlan plan = plan_convergence(*s);
-        const ApiChoice api = api_options->choose(s->device);
-        api.refuse_user_samplers(s->user.files);
+        const ApiChoice api = api_options->choose(s->device, s->user.files);
+        ConvergePlan plan = plan_convergence(*s, api);
         return Work{[s, plan, api] { run_converge(*s, plan, api); }, converge_batches(plan)};
     };
 }

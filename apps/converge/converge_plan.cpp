@@ -91,13 +91,13 @@ ggxcl::SampleParams converge_params(const SamplerChoice& method, ggxcl::Sequence
     return ggxcl::normalized(p);
 }
 
-ConvergePlan plan_convergence(const ConvergeCommand& cmd)
+ConvergePlan plan_convergence(const ConvergeCommand& cmd, const ApiChoice& api)
 {
     ConvergePlan plan;
     std::vector<ggxcl::Method> methods;
     for (const std::string& name : parse_name_list("--methods", cmd.methods, names_of_methods()))
         methods.push_back(ggxcl::parse_method(name));
-    plan.methods = sampler_choices(methods, cmd.user.load());
+    plan.methods = sampler_choices(methods, cmd.user.load(api));
     for (const std::string& name : parse_name_list("--sequences", cmd.sequences, {"philox", "sobol"}))
         plan.sequences.push_back(ggxcl::parse_sequence(name));
     for (const std::string& name : parse_name_list("--integrands", cmd.integrands, {"albedo", "lobe", "disk"}))

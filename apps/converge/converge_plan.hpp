@@ -57,8 +57,8 @@ struct ConvergePlan {
     std::uint32_t speed_count = 1u << 22;      // samples per timed launch; 0: no timing
 };
 
-// Throws UsageError naming the first bad option.
-ConvergePlan plan_convergence(const ConvergeCommand& cmd);
+// Throws UsageError naming the first bad option; `api` reads the --sampler files.
+ConvergePlan plan_convergence(const ConvergeCommand& cmd, const ApiChoice& api);
 
 // The library's parameters of one configuration (isotropic, view at phi = 0).
 ggxcl::SampleParams converge_params(const SamplerChoice& method, ggxcl::Sequence sequence, const ConvergeConfig& config,

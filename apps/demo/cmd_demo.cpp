@@ -58,7 +58,7 @@ SampleJob cloud_job(const SampleOptions& options, const SamplerChoice& method, s
 
 // The methods the demo runs: all, or for a dielectric those with a dielectric sampler (all but
 // bounded), then the user samplers (conductors only).
-std::vector<SamplerChoice> demo_methods(const DemoCommand& demo)
+std::vector<SamplerChoice> demo_methods(const DemoCommand& demo, const ApiChoice& api)
 {
     std::vector<ggxcl::Method> methods;
     const bool dielectric = demo.options.parsed_eta() != 0.0f;
@@ -68,7 +68,7 @@ std::vector<SamplerChoice> demo_methods(const DemoCommand& demo)
     if (dielectric && !demo.user.files.empty())
         throw UsageError("--eta", demo.options.eta,
                          "0 with --sampler: " + std::string(ggxcl::method_traits(ggxcl::Method::user).limits));
-    return sampler_choices(methods, demo.user.load());
+    return sampler_choices(methods, demo.user.load(api));
 }
 
 // What the histograms bin: a conductor's reflections, or a dielectric's reflections and
@@ -146,7 +146,7 @@ struct DemoCounts {
 };
 
 // Checks every option for every method; returns the counts and what will be sampled.
-DemoCounts check_demo(const DemoCommand& demo, std::vector<Batch>& batches)
+DemoCounts check_demo(const DemoCommand& demo, const ApiChoice& api, std::vector<Batch>& batches)
 {
     DemoCounts counts{parse_count("-n", demo.count), parse_count("--histogram-n", demo.histogram_count),
                       parse_count("--page-points", demo.cloud_points)};
@@ -156,7 +156,7 @@ DemoCounts check_demo(const DemoCommand& demo, std::vector<Batch>& batches)
     if (!demo.no_html)
         require_three_js();
     std::vector<ggxcl::SampleParams> params;
-    for (const SamplerChoice& method : demo_methods(demo))
+    for (const SamplerChoice& method : demo_methods(demo, api))
         params.push_back(demo.options.for_method(method.method).params_for(method.method, method.user));
     std::uint64_t seed = demo.options.parsed_seed();
     for (const ggxcl::SampleParams& p : params) {
@@ -169,12 +169,13 @@ DemoCounts check_demo(const DemoCommand& demo, std::vector<Batch>& batches)
 // Every method's files and the pages, drawn by `sampler` (ggxcl::Sampler or ggxcl::VulkanSampler)
 // named `device`.
 template <class Api>
-void run_demo_on(Api& sampler, const std::string& device, const DemoCommand& demo, DemoCounts counts)
+void run_demo_on(Api& sampler, const ApiChoice& api, const std::string& device, const DemoCommand& demo,
+                 DemoCounts counts)
 {
     const std::uint64_t count = counts.cloud, histogram_count = counts.histogram;
     std::cout << "device: " << device << "\n";
     std::vector<MethodResult> results;
-    for (const SamplerChoice& method : demo_methods(demo)) {
+    for (const SamplerChoice& method : demo_methods(demo, api)) {
         SampleOptions options = demo.options.for_method(method.method);
         std::string base = demo.out + "/" + method.name();
         run_sample_job(sampler, cloud_job(options, method, count, base + ".npy"));
@@ -213,10 +214,10 @@ void run_demo(const DemoCommand& demo, DemoCounts counts, const ApiChoice& api)
     check_writable_folder("--out", demo.out + "/index.md");
     if (api.vulkan) {
         ggxcl::VulkanSampler sampler(api.selector, api.language);
-        run_demo_on(sampler, api.device_label(sampler.device_name()), demo, counts);
+        run_demo_on(sampler, api, api.device_label(sampler.device_name()), demo, counts);
     } else {
         ggxcl::Sampler sampler(demo.options.device);
-        run_demo_on(sampler, sampler.device_name(), demo, counts);
+        run_demo_on(sampler, api, sampler.device_name(), demo, counts);
     }
 }
 
@@ -241,9 +242,8 @@ Prepare add_demo_command(CLI::App& app)
         if (!*cmd)
             return std::nullopt;
         std::vector<Batch> batches;
-        DemoCounts counts = check_demo(*state, batches);
-        const ApiChoice api = state->api.choose(state->options.device);
-        api.refuse_user_samplers(state->user.files);
+        const ApiChoice api = state->api.choose(state->options.device, state->user.files);
+        DemoCounts counts = check_demo(*state, api, batches);
         return Work{[state, counts, api] { run_demo(*state, counts, api); }, batches};
     };
 }

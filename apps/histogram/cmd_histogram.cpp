@@ -21,10 +21,10 @@ struct HistogramCommand {
     bool no_png = false;
 
     // Every option checked; the --out folder is checked by run_histogram.
-    HistogramJob job() const
+    HistogramJob job(const ApiChoice& api) const
     {
         HistogramJob job;
-        job.params = options.parsed_params();
+        job.params = options.parsed_params(api);
         job.against = job.params.method;
         if (job.params.method == ggxcl::Method::user && !against.empty())
             throw UsageError("--against", against, "no --against with --sampler: its own pdf and the distribution "
@@ -106,12 +106,10 @@ Prepare add_histogram_command(CLI::App& app)
         if (!*cmd)
             return std::nullopt;
         double level = state->check.empty() ? 0.0 : parse_level("--check", state->check);
-        HistogramJob job = state->job();
+        const ApiChoice api = state->api_options.choose(state->options.device, {state->options.sampler});
+        HistogramJob job = state->job(api);
         if (level > 0.0)
             job.level = level;
-        const ApiChoice api = state->api_options.choose(state->options.device);
-        if (job.params.method == ggxcl::Method::user)
-            api.refuse_user_samplers({state->options.sampler});
         if (state->out.empty())  // what is missing, once every value given has been checked
             throw UsageError("--out is required: a path prefix such as results/caps");
         return Work{[state, job, api, level] { run_histogram(*state, job, api, level); }, {{job.params, job.range}}};

@@ -26,13 +26,13 @@ std::string file_name(const std::string& path)
 }
 
 // Where a job's histogram is counted: the device's name and API, its histogram call, the samples
-// of a warm-up run (a whole work-group and a tail), and the OpenCL sampler a user sampler's
-// checks run on (none on Vulkan).
+// of a warm-up run (a whole work-group and a tail), and the samples and pdf a user sampler's
+// checks take.
 struct HistogramDevice {
     std::string name, api;
     std::function<ggxcl::Histogram(const ggxcl::SampleParams&, const ggxcl::SampleRange&, int, int, ggxcl::Field)> count;
     std::uint64_t warm_up_samples = 0;
-    ggxcl::Sampler* opencl = nullptr;
+    PdfDevice pdfs;
 };
 
 nlohmann::json summary(const HistogramDevice& device, const HistogramJob& job, const ggxcl::Histogram& counts,
@@ -74,7 +74,7 @@ HistogramCheck chi_square_check(const std::string& name, const ggxref::ChiSquare
 
 // A user sampler's checks: its histogram against its own pdf (`own`) and the claimed
 // distribution's bins (`claimed`, empty for a density of its own), its pdfs from (i, o).
-std::vector<HistogramCheck> user_sampler_checks(ggxcl::Sampler& sampler, const HistogramJob& job,
+std::vector<HistogramCheck> user_sampler_checks(const PdfDevice& device, const HistogramJob& job,
                                                 const ggxcl::Histogram& counts, const ggxref::ChiSquare& own,
                                                 const std::vector<double>& claimed)
 {
@@ -86,7 +86,7 @@ std::vector<HistogramCheck> user_sampler_checks(ggxcl::Sampler& sampler, const H
                                               std::string(ggxcl::distribution_name(job.params.user_sampler->distribution())),
                                           ggxbridge::histogram_fit(counts, claimed, false), job.level));
     const ggxcl::SampleRange some{job.range.seed, job.range.first, std::min<std::uint64_t>(job.range.count, 1 << 16)};
-    for (HistogramCheck& check : pdf_checks(sampler, job.params, some, claims ? &method : nullptr))
+    for (HistogramCheck& check : pdf_checks(device, job.params, some, claims ? &method : nullptr))
         checks.push_back(check);
     return checks;
 }
@@ -131,7 +131,7 @@ HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
     const bool user = job.params.method == ggxcl::Method::user;
     double quadrature_error = 0.0;
     const std::vector<double> probabilities =
-        user ? ggxbridge::pdf_bin_probabilities(*device.opencl, job.params, job.bins_z, job.bins_phi, quadrature_error)
+        user ? ggxbridge::pdf_bin_probabilities(device.pdfs.pdf, job.params, job.bins_z, job.bins_phi, quadrature_error)
              : reference;
     ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
 
@@ -143,7 +143,7 @@ HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
     nlohmann::json doc = summary(device, job, counts, fit, seconds);
     HistogramResult result{fit.statistic, fit.p_value, double(job.range.count) / seconds, fit.dof, "", {}};
     if (user) {
-        result.checks = user_sampler_checks(*device.opencl, job, counts, fit, reference);
+        result.checks = user_sampler_checks(device.pdfs, job, counts, fit, reference);
         result.checks.insert(result.checks.begin() + 1, pdf_integral_check(probabilities, quadrature_error));
         doc["expected_from_pdf_of"] = ggxcl::sampler_name(job.params) + " (its own pdf, integrated over each bin)";
         doc["quadrature_error"] = quadrature_error;
@@ -168,7 +168,7 @@ HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& j
     const HistogramDevice device{sampler.device_name(), "opencl",
                                  [&](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, int z, int phi,
                                      ggxcl::Field d) { return sampler.histogram(p, r, z, phi, d); },
-                                 sampler.work_group_size() + 1, &sampler};
+                                 sampler.work_group_size() + 1, pdf_device(sampler)};
     return run_on(device, job, std::move(expectation));
 }
 
@@ -179,7 +179,7 @@ HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const Histogram
                                  std::string("vulkan (") + ggxcl::shader_language_name(sampler.language()) + ")",
                                  [&](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, int z, int phi,
                                      ggxcl::Field d) { return sampler.histogram(p, r, z, phi, d); },
-                                 65, nullptr};
+                                 65, pdf_device(sampler)};
     return run_on(device, job, std::move(expectation));
 }
 

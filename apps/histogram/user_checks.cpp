@@ -48,27 +48,27 @@ PdfAgreement pdf_agreement(const std::vector<float>& sampled, const std::vector<
     return a;
 }
 
-std::vector<PdfAgreement> pdf_agreements(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
                                          const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
 {
-    const ggxcl::SampleSet samples = sampler.generate(params, range, {ggxcl::Field::o, ggxcl::Field::pdf_o});
+    const ggxcl::SampleSet samples = device.generate(params, range, {ggxcl::Field::o, ggxcl::Field::pdf_o});
     std::vector<ggxcl::Vec3> directions(range.count);
     for (std::size_t j = 0; j < directions.size(); ++j)
         directions[j] = samples.o_at(j);
-    std::vector<PdfAgreement> out = {pdf_agreement(samples.pdf_o, sampler.pdf(params, directions))};
+    std::vector<PdfAgreement> out = {pdf_agreement(samples.pdf_o, device.pdf(params, directions))};
     if (claimed) {
         ggxcl::SampleParams theirs = params;
         theirs.method = *claimed;
         theirs.user_sampler = nullptr;
-        out.push_back(pdf_agreement(samples.pdf_o, sampler.pdf(theirs, directions)));
+        out.push_back(pdf_agreement(samples.pdf_o, device.pdf(theirs, directions)));
     }
     return out;
 }
 
-std::vector<HistogramCheck> pdf_checks(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+std::vector<HistogramCheck> pdf_checks(const PdfDevice& device, const ggxcl::SampleParams& params,
                                        const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
 {
-    const std::vector<PdfAgreement> agreements = pdf_agreements(sampler, params, range, claimed);
+    const std::vector<PdfAgreement> agreements = pdf_agreements(device, params, range, claimed);
     std::vector<HistogramCheck> checks;
     for (std::size_t k = 0; k < agreements.size(); ++k) {
         const PdfAgreement& a = agreements[k];

@@ -6,6 +6,7 @@
 // distribution's.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,15 +36,30 @@ struct PdfAgreement {
     double worst = 0.0;
 };
 
+// Where the samples and their recomputed pdf come from: a Sampler or a VulkanSampler.
+struct PdfDevice {
+    std::function<ggxcl::SampleSet(const ggxcl::SampleParams&, const ggxcl::SampleRange&, ggxcl::FieldSet)> generate;
+    ggxbridge::DirectionPdf pdf;
+};
+
+template <class Api>
+PdfDevice pdf_device(Api& sampler)
+{
+    return {[&sampler](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, ggxcl::FieldSet f) {
+                return sampler.generate(p, r, f);
+            },
+            ggxbridge::direction_pdf(sampler)};
+}
+
 // The samples of `range` against the pdf recomputed by params' sampler and, with `claimed`, by
 // that method's (in that order).
-std::vector<PdfAgreement> pdf_agreements(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
                                          const ggxcl::SampleRange& range, const ggxcl::Method* claimed);
 
 // pdf_o of `count` samples against the pdf recomputed from (i, o) by the sampler and, with
 // `claimed`, by that method: a sample disagrees where the relative difference exceeds 1e-3;
 // the check fails when more than 0.1 % of the samples with a density disagree.
-std::vector<HistogramCheck> pdf_checks(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+std::vector<HistogramCheck> pdf_checks(const PdfDevice& device, const ggxcl::SampleParams& params,
                                        const ggxcl::SampleRange& range, const ggxcl::Method* claimed);
 
 } // namespace ggxapp

@@ -52,7 +52,8 @@ struct SampleCommand {
     // Every option checked; the --out folder is checked by run_sample.
     PreparedSample prepare() const
     {
-        PreparedSample prepared{job(), api(), "", ""};
+        const ApiChoice chosen = api();
+        PreparedSample prepared{job(chosen), chosen, "", ""};
         if (shard_given)
             take_shard(prepared);
         else if (out.find("{shard}") != std::string::npos)
@@ -82,25 +83,21 @@ struct SampleCommand {
         prepared.shard_warning = part.warning;
     }
 
-    // The API of --api / --device, and what Vulkan cannot do yet.
+    // The API of --api / --device / --sampler, and what Vulkan cannot do yet.
     ApiChoice api() const
     {
-        const ApiChoice choice = api_options.choose(options.device);
-        if (!choice.vulkan)
-            return choice;
-        if (all_devices || !devices.empty())
+        const ApiChoice choice = api_options.choose(options.device, {options.sampler});
+        if (choice.vulkan && (all_devices || !devices.empty()))
             throw UsageError(all_devices ? "--all-devices" : "--devices", all_devices ? "" : devices,
                              "one device with --api vulkan: give it with --device");
-        if (!options.sampler.empty())
-            choice.refuse_user_samplers({options.sampler});
         return choice;
     }
 
     // The whole job (before --shard).
-    SampleJob job() const
+    SampleJob job(const ApiChoice& api) const
     {
         SampleJob job;
-        job.params = options.parsed_params();
+        job.params = options.parsed_params(api);
         job.theta_degrees = options.parsed_theta();
         job.phi_degrees = options.parsed_phi();
         try {

@@ -147,12 +147,11 @@ StressPlan plan_stress(const StressCommand& cmd)
     }
     if (!cmd.eta.empty())
         plan.etas = parse_etas(cmd.eta);
-    plan.users = cmd.user.load();
+    plan.api = cmd.api.choose(cmd.device, cmd.user.files);
+    plan.users = cmd.user.load(plan.api);
     if (!plan.users.empty() && !plan.etas.empty())
         throw UsageError("--eta", cmd.eta,
                          "no --eta with --sampler: " + std::string(ggxcl::method_traits(ggxcl::Method::user).limits));
-    plan.api = cmd.api.choose(cmd.device);
-    plan.api.refuse_user_samplers(cmd.user.files);
     return plan;
 }
 

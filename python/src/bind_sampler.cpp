@@ -142,7 +142,7 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
         py::gil_scoped_release released;
         counts = s.histogram(r.params, {seed, first, args.count}, bins_z, bins_phi, direction);
         if (user)
-            probabilities = ggxbridge::pdf_bin_probabilities(s, r.params, bins_z, bins_phi, quadrature_error);
+            probabilities = ggxbridge::pdf_bin_probabilities(ggxbridge::direction_pdf(s), r.params, bins_z, bins_phi, quadrature_error);
         else
             probabilities =
                 ggxbridge::bin_probabilities(expected_of, ggxcl::normalized(r.params), bins_z, bins_phi, direction);

@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "histogram_verdicts.hpp"
 #include "prerequisites.hpp"
 #include "skip.hpp"
 
@@ -38,17 +39,6 @@ std::string sampler_file(const std::string& name)
 ggxtest::Run ggx(const std::string& args)
 {
     return ggxtest::run_ggx(args, scratch() / "stderr.txt");
-}
-
-// The verdicts of the histogram's checks by name.
-std::map<std::string, bool> verdicts(const fs::path& prefix)
-{
-    std::ifstream in(prefix.string() + ".json");
-    const nlohmann::json doc = nlohmann::json::parse(in);
-    std::map<std::string, bool> out;
-    for (const nlohmann::json& check : doc["checks"])
-        out[check["name"].get<std::string>()] = check["passed"].get<bool>();
-    return out;
 }
 
 } // namespace
@@ -77,11 +67,11 @@ TEST_CASE("ggx histogram --sampler: every check passes for a copy of caps, a sam
                                      " --alpha 0.2,0.6 -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
         CAPTURE(run.err);
         CHECK(run.status == 0);
-        const std::map<std::string, bool> got = verdicts(prefix);
+        const auto got = ggxtest::histogram_verdicts(prefix);
         CHECK(got.size() == 5);
-        for (const auto& [name, passed] : got) {
+        for (const auto& [name, verdict] : got) {
             CAPTURE(name);
-            CHECK(passed);
+            CHECK(verdict.passed);
         }
     }
 }
@@ -104,15 +94,15 @@ TEST_CASE("ggx histogram --sampler: the negative controls fail the checks they m
                                      " --alpha 0.2,0.6 -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
         CAPTURE(run.err);
         CHECK(run.status == 1);
-        const std::map<std::string, bool> got = verdicts(prefix);
+        const auto got = ggxtest::histogram_verdicts(prefix);
         for (const std::string& name : control.failing) {
             CAPTURE(name);
-            CHECK(got.at(name) == false);
+            CHECK_FALSE(got.at(name).passed);
             CHECK(run.err.find(name) != std::string::npos);
         }
         for (const std::string& name : control.passing) {
             CAPTURE(name);
-            CHECK(got.at(name) == true);
+            CHECK(got.at(name).passed);
         }
     }
 }

@@ -63,12 +63,16 @@ inline std::vector<BenchCsvRow> bench_csv_rows(const std::string& csv_text)
     return rows;
 }
 
-// The cells of the first line of `text`, split at commas (no quoted commas).
+// The cells of the first line of `text`, split at commas outside double
+// quotes, the quotes dropped (no escaped quotes).
 inline std::vector<std::string> csv_cells(const std::string& text)
 {
     std::vector<std::string> cells(1);
+    bool quoted = false;
     for (char c : text.substr(0, text.find('\n'))) {
-        if (c == ',')
+        if (c == '"')
+            quoted = !quoted;
+        else if (c == ',' && !quoted)
             cells.emplace_back();
         else
             cells.back().push_back(c);

@@ -1,0 +1,237 @@
+// test_vulkan_user_sampler_cli.cpp - `ggx` with user samplers in GLSL and
+// HLSL (--sampler FILE.glsl|.hlsl, which implies --api vulkan; lavapipe in CI):
+//   - sample: a GLSL copy of caps writes the Vulkan caps' samples;
+//   - histogram: the GLSL copy and an HLSL sampler of m alone pass every
+//     check; the OpenCL C negative controls read as HLSL fail the checks
+//     they fail on OpenCL; the engine-style HLSL port of examples/user_sampler
+//     passes, and its copy whose pdf drops G1 fails the integral (by 1/G1) and
+//     the claimed VNDF's pdf, exit 1;
+//   - errors: a shader that does not compile exits 1 naming its file and
+//     line; a file without its pdf, --api opencl with a shader file and a
+//     --shader-language against its extension exit 2 naming the flag;
+//   - stress, bench (user rows, accuracy on Vulkan), converge and demo run
+//     the shader samplers beside the methods, a copy of caps as caps.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "cli_runner.hpp"
+#include "histogram_verdicts.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path& scratch()
+{
+    return ggxtest::ScratchFolder::current();
+}
+
+std::string sampler_file(const std::string& name)
+{
+    return ggxtest::user_samplers_dir() + "/" + name;
+}
+
+std::string example_file(const std::string& name)
+{
+    return ggxtest::examples_dir() + "/user_sampler/engine_hlsl/" + name;
+}
+
+ggxtest::Run ggx(const std::string& args)
+{
+    return ggxtest::run_ggx(args, scratch() / "stderr.txt");
+}
+
+// `ggx histogram` of `sampler_args` at alpha 0.5 x 0.2 under --check 1e-3: its exit status and verdicts.
+std::pair<int, std::map<std::string, ggxtest::HistogramVerdict>> histogram(const std::string& sampler_args)
+{
+    const fs::path prefix = scratch() / "histogram";
+    const ggxtest::Run run =
+        ggx("histogram " + sampler_args + " --alpha 0.5,0.2 -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
+    INFO(run.err);
+    return {run.status, ggxtest::histogram_verdicts(prefix)};
+}
+
+} // namespace
+
+TEST_CASE("ggx sample --sampler FILE.glsl: the Vulkan caps' samples, on Vulkan without --api")
+{
+    const ggxtest::ScratchFolder case_folder("vk-user-cli");
+    const fs::path mine = scratch() / "mine.npy", caps = scratch() / "caps.npy";
+    const std::string common = " --alpha 0.2,0.5 --theta 75 --sequence sobol -n 3000 --fields m,o,pdf_o,weight,u ";
+    REQUIRE(ggx("sample --sampler " + sampler_file("shaders/caps_copy.glsl") + common + "--out " + mine.string())
+                .status == 0);
+    REQUIRE(ggx("sample --api vulkan --method caps" + common + "--out " + caps.string()).status == 0);
+    CHECK(ggxtest::read_all(mine) == ggxtest::read_all(caps));
+    const std::string sidecar = ggxtest::read_all(scratch() / "mine.json");
+    CHECK(sidecar.find("\"caps_copy\"") != std::string::npos);
+    CHECK(sidecar.find("vulkan (glsl)") != std::string::npos);
+}
+
+TEST_CASE("ggx histogram --sampler: shader samplers pass every check; the controls, read as HLSL, fail theirs")
+{
+    const ggxtest::ScratchFolder case_folder("vk-user-cli");
+    for (const std::string file : {"shaders/caps_copy.glsl", "shaders/heitz_normal_only.hlsl"}) {
+        CAPTURE(file);
+        const auto [status, got] = histogram("--sampler " + sampler_file(file));
+        CHECK(status == 0);
+        CHECK(got.size() == 5);
+        for (const auto& [name, verdict] : got) {
+            CAPTURE(name);
+            CHECK(verdict.passed);
+        }
+    }
+    struct Control {
+        const char* file;
+        std::vector<std::string> failing, passing;
+    };
+    const Control controls[] = {
+        {"swapped_axes.h", {"its own pdf", "the claimed vndf"}, {"pdf integrates to 1"}},
+        {"pdf_doubled.h", {"pdf from (i, o)", "pdf integrates to 1"}, {"the claimed vndf", "pdf of the claimed vndf"}},
+    };
+    for (const Control& control : controls) {
+        CAPTURE(control.file);
+        const auto [status, got] = histogram("--api vulkan --shader-language hlsl --sampler " + sampler_file(control.file));
+        CHECK(status == 1);
+        for (const std::string& name : control.failing)
+            CHECK_MESSAGE(!got.at(name).passed, name);
+        for (const std::string& name : control.passing)
+            CHECK_MESSAGE(got.at(name).passed, name);
+    }
+}
+
+TEST_CASE("examples/user_sampler/engine_hlsl: the engine's port passes; the same port without G1 in its pdf fails")
+{
+    const ggxtest::ScratchFolder case_folder("vk-user-cli");
+    const auto [good_status, good] = histogram("--sampler " + example_file("engine_vndf_check.hlsl"));
+    CHECK(good_status == 0);
+    for (const auto& [name, verdict] : good)
+        CHECK_MESSAGE(verdict.passed, name);
+    const auto [bad_status, bad] = histogram("--sampler " + example_file("engine_vndf_pdf_without_g1.hlsl"));
+    CHECK(bad_status == 1);
+    CHECK(bad.at("its own pdf").passed);  // a constant factor: the chi-square cannot see it
+    CHECK(bad.at("the claimed vndf").passed);
+    CHECK(bad.at("pdf from (i, o)").passed);
+    CHECK_FALSE(bad.at("pdf of the claimed vndf").passed);
+    const ggxtest::HistogramVerdict integral = bad.at("pdf integrates to 1");
+    CHECK_FALSE(integral.passed);
+    // 1 / G1 of the view at 60 degrees, alpha 0.5 x 0.2 (phi 0: alpha_x alone), by how much it is off.
+    const double tan2 = 3.0, g1 = 2.0 / (1.0 + std::sqrt(1.0 + 0.25 * tan2));
+    const double total = std::stod(integral.summary.substr(integral.summary.find(": ") + 2));
+    CHECK(total == doctest::Approx(1.0 / g1).epsilon(0.01));
+}
+
+TEST_CASE("ggx --sampler FILE.glsl|.hlsl: a shader that does not compile exits 1 at its line; bad uses exit 2")
+{
+    const ggxtest::ScratchFolder case_folder("vk-user-cli");
+    const ggxtest::Run broken = ggx("sample --sampler " + sampler_file("shaders/undeclared_name.hlsl") + " -n 10 --out " +
+                                    (scratch() / "broken.npy").string());
+    CHECK(broken.status == 1);
+    CHECK(broken.err.find("undeclared_name.hlsl:9:") != std::string::npos);
+    CHECK_FALSE(fs::exists(scratch() / "broken.npy"));
+    const std::string glsl = sampler_file("shaders/caps_copy.glsl"), out = " --out " + (scratch() / "bad").string();
+    const std::pair<std::string, std::string> bad[] = {
+        {"sample -n 10 --sampler " + sampler_file("shaders/no_pdf.glsl") + out, "ggx_user_pdf"},
+        {"sample -n 10 --api opencl --sampler " + glsl + out, "--api"},
+        {"histogram -n 10 --shader-language hlsl --sampler " + glsl + out, "--shader-language"},
+        {"stress --api opencl --sampler " + glsl + out, "--api"},
+        {"bench --api opencl --sampler " + glsl, "--api"},
+        {"converge --api opencl --sampler " + glsl, "--api"},
+        {"demo --api opencl --sampler " + glsl + out, "--api"},
+    };
+    for (const auto& [args, named] : bad) {
+        CAPTURE(args);
+        const ggxtest::Run run = ggx(args);
+        CHECK(run.status == 2);
+        CHECK(run.err.find(named) != std::string::npos);
+    }
+}
+
+TEST_CASE("ggx stress, bench, converge and demo with a GLSL copy of caps: caps' results on Vulkan")
+{
+    const ggxtest::ScratchFolder case_folder("vk-user-cli");
+    const std::string copy = sampler_file("shaders/caps_copy.glsl");
+    SUBCASE("stress: the copy's map is caps'; NaN where the OpenCL C control, read as GLSL, divides by zero")
+    {
+        const fs::path prefix = scratch() / "stress";
+        const ggxtest::Run run = ggx("stress --methods caps --sampler " + copy + " --sampler " +
+                                     sampler_file("divides_by_zero.h") + " --no-png --out " + prefix.string());
+        CAPTURE(run.err);
+        REQUIRE(run.status == 0);
+        const std::string csv = ggxtest::read_all(prefix.string() + ".csv");
+        std::map<std::string, std::vector<std::string>> rows;
+        std::map<std::string, std::uint64_t> nan_inf;
+        std::istringstream lines(csv);
+        std::string line;
+        std::getline(lines, line);
+        while (std::getline(lines, line)) {
+            const std::string key = ggxtest::csv_cell(csv, line, "method") + " " + ggxtest::csv_cell(csv, line, "side");
+            rows[key].push_back(line.substr(line.find(',', line.find(',') + 1)));
+            nan_inf[key] += std::stoull(ggxtest::csv_cell(csv, line, "nan_inf"));
+        }
+        CHECK(rows["caps_copy device"] == rows["caps device"]);
+        CHECK(nan_inf["caps_copy device"] == 0);
+        CHECK(nan_inf["divides_by_zero device"] > 0);
+    }
+    SUBCASE("bench: the user rows on Vulkan alone, the copy with caps' accuracy, a pdf off by 2 caught")
+    {
+        const fs::path csv_path = scratch() / "bench.csv";
+        const ggxtest::Run run = ggx("bench --methods caps --precisions precise -n 2^14 --repeats 5 --scene 3 "
+                                     "--cell-samples 2^10 --sampler " + copy + " --reproduces caps --sampler " +
+                                     sampler_file("pdf_doubled.h") + " --csv " + csv_path.string());
+        CAPTURE(run.err);
+        REQUIRE(run.status == 0);
+        const std::string csv = ggxtest::read_all(csv_path);
+        std::map<std::string, std::string> cells;  // "method job column"
+        std::istringstream lines(csv);
+        std::string line;
+        std::getline(lines, line);
+        while (std::getline(lines, line))
+            for (const char* column : {"user", "opencl_ns", "angle_p99", "pdf_disagreement", "variance", "rmse_measured"})
+                cells[ggxtest::csv_cell(csv, line, "method") + " " + ggxtest::csv_cell(csv, line, "job") + " " +
+                      column] = ggxtest::csv_cell(csv, line, column);
+        CHECK(cells["caps_copy write user"] == "1");
+        CHECK(cells["caps write user"] == "0");
+        CHECK(std::stod(cells["caps_copy write opencl_ns"]) == 0.0);
+        CHECK(std::stod(cells["caps write angle_p99"]) > 0.0);
+        CHECK(cells["caps_copy write angle_p99"] == cells["caps write angle_p99"]);
+        CHECK(std::stod(cells["pdf_doubled write angle_p99"]) == -1.0);  // reproduces no map: not measured
+        CHECK(cells["caps_copy furnace variance"] == cells["caps furnace variance"]);
+        CHECK(std::stod(cells["caps_copy furnace rmse_measured"]) > 0.0);
+        CHECK(std::stod(cells["caps_copy write pdf_disagreement"]) == 0.0);
+        CHECK(std::stod(cells["pdf_doubled write pdf_disagreement"]) == 1.0);
+    }
+    SUBCASE("converge: the copy's curves are caps'")
+    {
+        const fs::path csv_path = scratch() / "converge.csv";
+        const ggxtest::Run run = ggx("converge --methods caps --sampler " + copy +
+                                     " --integrands albedo,disk --alphas 0.3 --thetas 45 --max-n 2^10 "
+                                     "--randomizations 8 --no-speed --csv " + csv_path.string());
+        CAPTURE(run.err);
+        REQUIRE(run.status == 0);
+        std::map<std::string, std::vector<std::string>> curves;
+        std::istringstream lines(ggxtest::read_all(csv_path));
+        std::string line;
+        std::getline(lines, line);
+        while (std::getline(lines, line) && !line.empty() && line.find("ns_per_sample") == std::string::npos)
+            curves[line.substr(0, line.find(','))].push_back(line.substr(line.find(',')));
+        REQUIRE(curves["caps"].size() > 10);
+        CHECK(curves["caps_copy"] == curves["caps"]);
+    }
+    SUBCASE("demo: the copy's files and row beside the methods'")
+    {
+        const fs::path out = scratch() / "demo";
+        const ggxtest::Run run = ggx("demo -n 300 --histogram-n 2e4 --no-png --no-html --sampler " + copy +
+                                     " --sampler-name mine --out " + out.string());
+        CAPTURE(run.err);
+        REQUIRE(run.status == 0);
+        const std::string page = ggxtest::read_all(out / "index.md");
+        CHECK(page.find("| mine |") != std::string::npos);
+        CHECK(page.find("vulkan") != std::string::npos);
+        for (const char* file : {"mine.npy", "mine.ply", "mine.hist.json"})
+            CHECK(fs::exists(out / file));
+    }
+}

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_reports.hpp"
 #include "cli_runner.hpp"
 #include "histogram_verdicts.hpp"
 #include "prerequisites.hpp"
@@ -143,16 +144,7 @@ TEST_CASE("ggx stress --sampler: a user sampler's device map beside the methods'
     CAPTURE(run.err);
     REQUIRE(run.status == 0);
     const std::string csv = ggxtest::read_all(prefix.string() + ".csv");
-    std::map<std::string, std::vector<std::string>> rows;  // by method and side: the rows after the precision
-    std::map<std::string, std::uint64_t> nan_inf;
-    std::istringstream lines(csv);
-    std::string line;
-    std::getline(lines, line);
-    while (std::getline(lines, line)) {
-        const std::string key = ggxtest::csv_cell(csv, line, "method") + " " + ggxtest::csv_cell(csv, line, "side");
-        rows[key].push_back(line.substr(line.find(',', line.find(',') + 1)));
-        nan_inf[key] += std::stoull(ggxtest::csv_cell(csv, line, "nan_inf"));
-    }
+    auto [rows, nan_inf] = ggxtest::stress_rows(csv);
     CHECK(rows.size() == 4);  // caps device and host, each user sampler's device
     CHECK(rows.count("caps_copy host") == 0);
     CHECK(rows["caps_copy device"] == rows["caps device"]);
@@ -208,12 +200,7 @@ TEST_CASE("ggx converge --sampler: a copy of caps converges as caps, with philox
                                  "--no-speed --csv " + csv_path.string());
     CAPTURE(run.err);
     REQUIRE(run.status == 0);
-    std::map<std::string, std::vector<std::string>> curves;  // by method: the rows after the method
-    std::istringstream lines(ggxtest::read_all(csv_path));
-    std::string line;
-    std::getline(lines, line);
-    while (std::getline(lines, line) && !line.empty() && line.find("ns_per_sample") == std::string::npos)
-        curves[line.substr(0, line.find(','))].push_back(line.substr(line.find(',')));
+    auto curves = ggxtest::converge_curves(csv_path);
     REQUIRE(curves["caps"].size() > 10);
     CHECK(curves["caps_copy"] == curves["caps"]);
 }

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <string>
 
+#include "cli_reports.hpp"
 #include "cli_runner.hpp"
 #include "histogram_verdicts.hpp"
 
@@ -162,16 +163,7 @@ TEST_CASE("ggx stress, bench, converge and demo with a GLSL copy of caps: caps' 
         CAPTURE(run.err);
         REQUIRE(run.status == 0);
         const std::string csv = ggxtest::read_all(prefix.string() + ".csv");
-        std::map<std::string, std::vector<std::string>> rows;
-        std::map<std::string, std::uint64_t> nan_inf;
-        std::istringstream lines(csv);
-        std::string line;
-        std::getline(lines, line);
-        while (std::getline(lines, line)) {
-            const std::string key = ggxtest::csv_cell(csv, line, "method") + " " + ggxtest::csv_cell(csv, line, "side");
-            rows[key].push_back(line.substr(line.find(',', line.find(',') + 1)));
-            nan_inf[key] += std::stoull(ggxtest::csv_cell(csv, line, "nan_inf"));
-        }
+        auto [rows, nan_inf] = ggxtest::stress_rows(csv);
         CHECK(rows["caps_copy device"] == rows["caps device"]);
         CHECK(nan_inf["caps_copy device"] == 0);
         CHECK(nan_inf["divides_by_zero device"] > 0);
@@ -212,12 +204,7 @@ TEST_CASE("ggx stress, bench, converge and demo with a GLSL copy of caps: caps' 
                                      "--randomizations 8 --no-speed --csv " + csv_path.string());
         CAPTURE(run.err);
         REQUIRE(run.status == 0);
-        std::map<std::string, std::vector<std::string>> curves;
-        std::istringstream lines(ggxtest::read_all(csv_path));
-        std::string line;
-        std::getline(lines, line);
-        while (std::getline(lines, line) && !line.empty() && line.find("ns_per_sample") == std::string::npos)
-            curves[line.substr(0, line.find(','))].push_back(line.substr(line.find(',')));
+        auto curves = ggxtest::converge_curves(csv_path);
         REQUIRE(curves["caps"].size() > 10);
         CHECK(curves["caps_copy"] == curves["caps"]);
     }

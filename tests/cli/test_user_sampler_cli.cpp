@@ -80,15 +80,7 @@ TEST_CASE("ggx histogram --sampler: every check passes for a copy of caps, a sam
 TEST_CASE("ggx histogram --sampler: the negative controls fail the checks they must, by name")
 {
     const ggxtest::ScratchFolder case_folder("user-cli");
-    struct Control {
-        const char* file;
-        std::vector<std::string> failing, passing;
-    };
-    const Control controls[] = {
-        {"swapped_axes.h", {"its own pdf", "the claimed vndf"}, {"pdf integrates to 1"}},
-        {"pdf_doubled.h", {"pdf from (i, o)", "pdf integrates to 1"}, {"the claimed vndf", "pdf of the claimed vndf"}},
-    };
-    for (const Control& control : controls) {
+    for (const ggxtest::HistogramControl& control : ggxtest::histogram_controls()) {
         CAPTURE(control.file);
         const fs::path prefix = scratch() / "control";
         const ggxtest::Run run = ggx("histogram --sampler " + sampler_file(control.file) +

@@ -85,15 +85,7 @@ TEST_CASE("ggx histogram --sampler: shader samplers pass every check; the contro
             CHECK(verdict.passed);
         }
     }
-    struct Control {
-        const char* file;
-        std::vector<std::string> failing, passing;
-    };
-    const Control controls[] = {
-        {"swapped_axes.h", {"its own pdf", "the claimed vndf"}, {"pdf integrates to 1"}},
-        {"pdf_doubled.h", {"pdf from (i, o)", "pdf integrates to 1"}, {"the claimed vndf", "pdf of the claimed vndf"}},
-    };
-    for (const Control& control : controls) {
+    for (const ggxtest::HistogramControl& control : ggxtest::histogram_controls()) {
         CAPTURE(control.file);
         const auto [status, got] = histogram("--api vulkan --shader-language hlsl --sampler " + sampler_file(control.file));
         CHECK(status == 1);

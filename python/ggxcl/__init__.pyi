@@ -23,7 +23,9 @@ class DeviceLost(DeviceError): ...
 Alpha = Union[float, Tuple[float, float], npt.NDArray[np.floating[Any]]]
 
 class UserSampler:
-    """A sampler of your own in one file of OpenCL C (docs/USER-SAMPLERS.md): pass it as `method`."""
+    """A sampler of your own in one file of OpenCL C (docs/USER-SAMPLERS.md): pass it as `method`. Python runs
+    on OpenCL: a .glsl or .hlsl file runs through `ggx --sampler` or ggxcl::VulkanSampler in C++, and using one
+    here raises InvalidArgument naming the file."""
 
     def __init__(self, path: str, name: Optional[str] = None) -> None:
         """Reads `path` and what it includes; `name` (default: the file's stem) names it in reports. A file

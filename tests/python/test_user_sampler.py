@@ -2,7 +2,8 @@
 the histogram's tests against its own pdf and the VNDF it claims; swapped
 roughness axes fail both, a pdf off by 2 integrates to 2; a file that does
 not compile raises BuildError naming its file and line; bad input raises
-InvalidArgument naming the argument."""
+InvalidArgument naming the argument, and so does a GLSL or HLSL sampler
+(Python runs on OpenCL), naming its file."""
 import os
 
 import numpy as np
@@ -62,6 +63,14 @@ def test_a_file_that_does_not_compile_names_its_line(sampler):
     with pytest.raises(ggxcl.BuildError) as error:
         sampler.sample(user("syntax_error.h"), 10)
     assert "syntax_error.h:9:" in str(error.value).splitlines()[0]
+
+
+def test_a_shader_sampler_is_refused_on_opencl_naming_its_file(sampler):
+    path = os.path.join(SAMPLERS, "shaders", "caps_copy.glsl")
+    with pytest.raises(ggxcl.InvalidArgument) as error:
+        sampler.sample(ggxcl.UserSampler(path), 10)
+    assert error.value.parameter == "sampler"
+    assert path in str(error.value) and "GLSL" in str(error.value)
 
 
 @pytest.mark.parametrize("make, parameter", [

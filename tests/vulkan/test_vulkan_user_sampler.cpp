@@ -128,7 +128,7 @@ TEST_CASE("an HLSL sampler of m alone is completed: heitz's m, o and weight, its
     ggxtest::check_completed_like_heitz(mine, heitz);
 }
 
-TEST_CASE("each API refuses the other's user samplers, naming the file")
+TEST_CASE("each API refuses the other's user samplers, naming the file; Vulkan refuses a user sampler on glass")
 {
     const std::string glsl_file = sampler_file("shaders/caps_copy.glsl"), cl_file = sampler_file("caps_copy.h");
     const std::string on_opencl = ggxtest::message_of<ggxcl::InvalidArgument>([&] {
@@ -142,6 +142,12 @@ TEST_CASE("each API refuses the other's user samplers, naming the file")
     });
     CHECK(on_vulkan.find(cl_file) != std::string::npos);
     CHECK(on_vulkan.find("OpenCL C") != std::string::npos);
+    ggxcl::SampleParams glass = user_params(ggxcl::UserSampler::load(glsl_file)), world = glass;
+    glass.eta = 1.5f;
+    world.world_space = true;
+    for (const ggxcl::SampleParams& p : {glass, world})  // a user sampler is a tangent-space conductor's
+        CHECK_THROWS_AS(ggxvk::vulkan_sampler(ShaderLanguage::glsl).generate(p, {0, 0, 10}, {ggxcl::Field::o}),
+                        ggxcl::InvalidArgument);
     CHECK_FALSE(ggxcl::shader_language_of_file("x.h").has_value());
     CHECK(ggxcl::shader_language_of_file("dir.v2/x.hlsl") == ShaderLanguage::hlsl);
 }

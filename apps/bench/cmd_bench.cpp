@@ -358,7 +358,7 @@ void run_vulkan_bench(const BenchCommand& cmd, const BenchPlan& plan, const ApiC
 }
 
 // The plan of --api vulkan: its jobs (write and furnace by default), and no option it cannot honour.
-BenchPlan vulkan_plan(const BenchCommand& cmd, BenchPlan plan, bool jobs_given, const ApiChoice& api)
+BenchPlan vulkan_plan(const BenchCommand& cmd, BenchPlan plan, bool jobs_given)
 {
     for (const auto& [value, flag] : {std::pair{cmd.charts, "--charts"}, {cmd.html, "--html"}})
         if (!value.empty())
@@ -441,7 +441,7 @@ Prepare add_bench_command(CLI::App& app)
         const ApiChoice choice = api->choose(s->device, s->user.files);
         BenchPlan plan = plan_bench(*s, choice);
         if (choice.vulkan) {
-            plan = vulkan_plan(*s, plan, jobs->count() > 0, choice);
+            plan = vulkan_plan(*s, plan, jobs->count() > 0);
             return Work{[s, plan, choice] { run_vulkan_bench(*s, plan, choice); }, timed_batches(plan)};
         }
         return Work{[s, plan] { run_bench(*s, plan); }, timed_batches(plan)};

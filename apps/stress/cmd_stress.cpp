@@ -8,7 +8,7 @@
 // method and per index, and bounded listed as refused.  --sampler FILE.h
 // adds a user sampler's device map (its own functions; the host reference
 // does not know it) beside the methods'.  --html writes a page of the
-// totals and the maps.
+// totals and the maps, naming each user sampler's file and its language.
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -265,7 +265,10 @@ std::string stress_markdown(const StressCommand& cmd, const StressPlan& plan, co
 {
     std::ostringstream md;
     md << "# ggx stress\n\n- Command: `" << command_line() << "`\n- Date: " << utc_now() << "\n- Device: " << device
-       << ", " << cmd.precision << " mode\n\n"
+       << ", " << cmd.precision << " mode\n";
+    for (const auto& user : plan.users)
+        md << "- Sampler " << user->name() << ": `" << user->path() << "`, " << user->language_name() << "\n";
+    md << "\n"
        << (plan.etas.empty() ? "Every method's device functions and the double-precision reference over roughness x "
                                "view x uniforms (edge and random), counted per kind of failure. "
                              : "The rough dielectric's cases over relative index x roughness x view x uniforms, "

@@ -39,10 +39,7 @@ const fs::path& scratch()
     return ggxtest::ScratchFolder::current();
 }
 
-Run ggx(const std::string& args)
-{
-    return ggxtest::run_ggx(args, scratch() / "stderr.txt");
-}
+using ggxtest::ggx;
 
 bool only_file_is(const fs::path& dir, std::size_t expected)
 {

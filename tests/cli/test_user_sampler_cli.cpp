@@ -32,15 +32,8 @@ const fs::path& scratch()
     return ggxtest::ScratchFolder::current();
 }
 
-std::string sampler_file(const std::string& name)
-{
-    return ggxtest::user_samplers_dir() + "/" + name;
-}
-
-ggxtest::Run ggx(const std::string& args)
-{
-    return ggxtest::run_ggx(args, scratch() / "stderr.txt");
-}
+using ggxtest::ggx;
+using ggxtest::user_sampler_file;
 
 } // namespace
 
@@ -49,7 +42,8 @@ TEST_CASE("ggx sample --sampler: a copy of caps writes caps' samples, named for 
     const ggxtest::ScratchFolder case_folder("user-cli");
     const fs::path mine = scratch() / "mine.npy", caps = scratch() / "caps.npy";
     const std::string common = " --alpha 0.2,0.5 --theta 75 --sequence sobol -n 3000 --fields m,o,pdf_o,weight,u ";
-    REQUIRE(ggx("sample --sampler " + sampler_file("caps_copy.h") + common + "--out " + mine.string()).status == 0);
+    const std::string mine_file = user_sampler_file("caps_copy.h");
+    REQUIRE(ggx("sample --sampler " + mine_file + common + "--out " + mine.string()).status == 0);
     REQUIRE(ggx("sample --method caps" + common + "--out " + caps.string()).status == 0);
     CHECK(ggxtest::read_all(mine) == ggxtest::read_all(caps));
     std::ifstream in(scratch() / "mine.json");
@@ -64,7 +58,7 @@ TEST_CASE("ggx histogram --sampler: every check passes for a copy of caps, a sam
     for (const std::string file : {"caps_copy.h", "heitz_normal_only.h"}) {
         CAPTURE(file);
         const fs::path prefix = scratch() / "good";
-        const ggxtest::Run run = ggx("histogram --sampler " + sampler_file(file) +
+        const ggxtest::Run run = ggx("histogram --sampler " + user_sampler_file(file) +
                                      " --alpha 0.2,0.6 -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
         CAPTURE(run.err);
         CHECK(run.status == 0);
@@ -83,7 +77,7 @@ TEST_CASE("ggx histogram --sampler: the negative controls fail the checks they m
     for (const ggxtest::HistogramControl& control : ggxtest::histogram_controls()) {
         CAPTURE(control.file);
         const fs::path prefix = scratch() / "control";
-        const ggxtest::Run run = ggx("histogram --sampler " + sampler_file(control.file) +
+        const ggxtest::Run run = ggx("histogram --sampler " + user_sampler_file(control.file) +
                                      " --alpha 0.2,0.6 -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
         CAPTURE(run.err);
         CHECK(run.status == 1);
@@ -103,16 +97,16 @@ TEST_CASE("ggx histogram --sampler: the negative controls fail the checks they m
 TEST_CASE("ggx --sampler: a file that does not compile exits 1 naming its file and line; bad flags exit 2")
 {
     const ggxtest::ScratchFolder case_folder("user-cli");
-    const ggxtest::Run broken = ggx("sample --sampler " + sampler_file("syntax_error.h") + " -n 10 --out " +
+    const ggxtest::Run broken = ggx("sample --sampler " + user_sampler_file("syntax_error.h") + " -n 10 --out " +
                                     (scratch() / "broken.npy").string());
     CHECK(broken.status == 1);
     CHECK(broken.err.find("syntax_error.h:9:") != std::string::npos);
     CHECK_FALSE(fs::exists(scratch() / "broken.npy"));
-    const std::string file = sampler_file("caps_copy.h");
+    const std::string file = user_sampler_file("caps_copy.h");
     const std::pair<std::string, std::string> bad[] = {
         {"sample --sampler " + file + " --sampler-name caps", "--sampler-name"},
         {"sample --sampler " + (scratch() / "none.h").string(), "--sampler"},
-        {"sample --sampler " + sampler_file("../user_samplers/none.h"), "--sampler"},
+        {"sample --sampler " + user_sampler_file("../user_samplers/none.h"), "--sampler"},
         {"sample --sampler " + file + " --method caps", "--method"},
         {"sample --sampler " + file + " --eta 1.5", "--eta"},
         {"sample", "--method or --sampler"},
@@ -131,8 +125,9 @@ TEST_CASE("ggx stress --sampler: a user sampler's device map beside the methods'
 {
     const ggxtest::ScratchFolder case_folder("user-cli");
     const fs::path prefix = scratch() / "stress";
-    const ggxtest::Run run = ggx("stress --methods caps --sampler " + sampler_file("divides_by_zero.h") +
-                                 " --sampler " + sampler_file("caps_copy.h") + " --no-png --out " + prefix.string());
+    const ggxtest::Run run = ggx("stress --methods caps --sampler " + user_sampler_file("divides_by_zero.h") +
+                                 " --sampler " + user_sampler_file("caps_copy.h") + " --no-png --out " +
+                                 prefix.string());
     CAPTURE(run.err);
     REQUIRE(run.status == 0);
     const std::string csv = ggxtest::read_all(prefix.string() + ".csv");
@@ -143,7 +138,7 @@ TEST_CASE("ggx stress --sampler: a user sampler's device map beside the methods'
     CHECK(nan_inf["caps device"] == 0);
     CHECK(nan_inf["caps_copy device"] == 0);
     CHECK(nan_inf["divides_by_zero device"] > 0);
-    const ggxtest::Run glass = ggx("stress --sampler " + sampler_file("caps_copy.h") + " --eta 1.5 --out " +
+    const ggxtest::Run glass = ggx("stress --sampler " + user_sampler_file("caps_copy.h") + " --eta 1.5 --out " +
                                    prefix.string());
     CHECK(glass.status == 2);
     CHECK(glass.err.find("--eta") != std::string::npos);
@@ -155,8 +150,8 @@ TEST_CASE("ggx bench --sampler: a copy of caps gets caps' accuracy; the pdf self
     const fs::path csv_path = scratch() / "bench.csv";
     const ggxtest::Run run =
         ggx("bench --methods caps --precisions precise --jobs write,furnace --sequences philox -n 2^14 --repeats 5 "
-            "--scene 3 --cell-samples 2^10 --no-native --no-startup --sampler " + sampler_file("caps_copy.h") +
-            " --reproduces caps --sampler " + sampler_file("pdf_doubled.h") + " --csv " + csv_path.string());
+            "--scene 3 --cell-samples 2^10 --no-native --no-startup --sampler " + user_sampler_file("caps_copy.h") +
+            " --reproduces caps --sampler " + user_sampler_file("pdf_doubled.h") + " --csv " + csv_path.string());
     CAPTURE(run.err);
     REQUIRE(run.status == 0);
     const std::string csv = ggxtest::read_all(csv_path);
@@ -178,7 +173,7 @@ TEST_CASE("ggx bench --sampler: a copy of caps gets caps' accuracy; the pdf self
     CHECK(cells["caps write pdf_disagreement"].empty());
     CHECK(std::stod(cells["caps_copy write pdf_disagreement"]) == 0.0);
     CHECK(std::stod(cells["pdf_doubled write pdf_disagreement"]) == 1.0);
-    const ggxtest::Run bad = ggx("bench --sampler " + sampler_file("caps_copy.h") + " --reproduces walter");
+    const ggxtest::Run bad = ggx("bench --sampler " + user_sampler_file("caps_copy.h") + " --reproduces walter");
     CHECK(bad.status == 2);
     CHECK(bad.err.find("--reproduces") != std::string::npos);
 }
@@ -187,7 +182,7 @@ TEST_CASE("ggx converge --sampler: a copy of caps converges as caps, with philox
 {
     const ggxtest::ScratchFolder case_folder("user-cli");
     const fs::path csv_path = scratch() / "converge.csv";
-    const ggxtest::Run run = ggx("converge --methods caps --sampler " + sampler_file("caps_copy.h") +
+    const ggxtest::Run run = ggx("converge --methods caps --sampler " + user_sampler_file("caps_copy.h") +
                                  " --integrands albedo,disk --alphas 0.3 --thetas 45 --max-n 2^10 --randomizations 8 "
                                  "--no-speed --csv " + csv_path.string());
     CAPTURE(run.err);
@@ -203,8 +198,8 @@ TEST_CASE("ggx demo --sampler: the user sampler's cloud, histogram and row besid
     if (!ggxtest::skip_unless(ggxtest::three_js_present(), ggxtest::three_js_reason))
         return;
     const fs::path out = scratch() / "demo";
-    const ggxtest::Run run = ggx("demo -n 300 --histogram-n 2e4 --no-png --sampler " + sampler_file("caps_copy.h") +
-                                 " --sampler-name mine --out " + out.string());
+    const ggxtest::Run run = ggx("demo -n 300 --histogram-n 2e4 --no-png --sampler " +
+                                 user_sampler_file("caps_copy.h") + " --sampler-name mine --out " + out.string());
     CAPTURE(run.err);
     REQUIRE(run.status == 0);
     const std::string page = ggxtest::read_all(out / "index.md");
@@ -212,5 +207,5 @@ TEST_CASE("ggx demo --sampler: the user sampler's cloud, histogram and row besid
     CHECK(page.find("| caps |") != std::string::npos);
     for (const char* file : {"mine.npy", "mine.ply", "mine.hist.json", "mine.hist.observed.npy"})
         CHECK(fs::exists(out / file));
-    CHECK(ggx("demo --eta 1.5 --sampler " + sampler_file("caps_copy.h") + " --out " + out.string()).status == 2);
+    CHECK(ggx("demo --eta 1.5 --sampler " + user_sampler_file("caps_copy.h") + " --out " + out.string()).status == 2);
 }

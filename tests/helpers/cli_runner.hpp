@@ -1,8 +1,8 @@
 // cli_runner.hpp - what the tests of the `ggx` tool share: scratch folders
 // and reading a file back whole (scratch.hpp), running the tool (GGX_BINARY,
 // set by CMake or the environment: test_paths.hpp) with its exit status and
-// stderr, the rows of a `ggx bench` CSV and a cell of a CSV by its column's
-// name.
+// stderr (`ggx`: kept in the test case's scratch folder), the rows of a `ggx
+// bench` CSV and a cell of a CSV by its column's name.
 #pragma once
 
 #include <algorithm>
@@ -34,6 +34,12 @@ inline Run run_ggx(const std::string& args, const fs::path& err_file, bool prefi
                           err_file.string();
     int raw = std::system(command.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_all(err_file)};
+}
+
+// Runs `ggx ARGS`, its stderr kept in the running test case's scratch folder.
+inline Run ggx(const std::string& args)
+{
+    return run_ggx(args, ScratchFolder::current() / "stderr.txt");
 }
 
 // The first four columns of each row of a `ggx bench` CSV (after its header).

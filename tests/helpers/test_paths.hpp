@@ -26,6 +26,8 @@ inline std::string check_targets_script() { return path_from_env("GGX_CHECK_TARG
 #endif
 #ifdef GGX_USER_SAMPLERS_DIR
 inline std::string user_samplers_dir() { return path_from_env("GGX_USER_SAMPLERS_DIR", GGX_USER_SAMPLERS_DIR); }
+// tests/user_samplers/NAME (NAME may name a subfolder: "shaders/caps_copy.glsl").
+inline std::string user_sampler_file(const std::string& name) { return user_samplers_dir() + "/" + name; }
 #endif
 #ifdef GGX_KERNEL_DIR
 inline std::string kernel_dir() { return path_from_env("GGX_KERNEL_DIR", GGX_KERNEL_DIR); }

@@ -26,16 +26,13 @@ namespace {
 
 using ggxtest::same_bits;
 
-std::string sampler_file(const std::string& name)
-{
-    return ggxtest::user_samplers_dir() + "/" + name;
-}
+using ggxtest::user_sampler_file;
 
 ggxcl::SampleParams user_params(const std::string& file, float ax = 0.2f, float ay = 0.5f)
 {
     ggxcl::SampleParams p;
     p.method = ggxcl::Method::user;
-    p.user_sampler = ggxcl::UserSampler::load(sampler_file(file));
+    p.user_sampler = ggxcl::UserSampler::load(user_sampler_file(file));
     p.alpha_x = ax;
     p.alpha_y = ay;
     p.view = ggxcl::view_from_angles(70.0, 20.0);
@@ -160,7 +157,7 @@ TEST_CASE("a user sampler that does not compile names its file and line")
         CAPTURE(what);
         CHECK(what.rfind("the user sampler does not compile: ", 0) == 0);
         CHECK(what.substr(0, what.find('\n')).find("syntax_error.h:9:") != std::string::npos);
-        CHECK(what.rfind("the user sampler does not compile: " + sampler_file("syntax_error.h") + ":9:", 0) == 0);
+        CHECK(what.rfind("the user sampler does not compile: " + user_sampler_file("syntax_error.h") + ":9:", 0) == 0);
     }
 }
 

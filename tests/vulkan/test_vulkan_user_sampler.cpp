@@ -25,10 +25,7 @@ namespace {
 using ggxcl::ShaderLanguage;
 using ggxtest::same_bits;
 
-std::string sampler_file(const std::string& name)
-{
-    return ggxtest::user_samplers_dir() + "/" + name;
-}
+using ggxtest::user_sampler_file;
 
 ggxcl::SampleParams user_params(std::shared_ptr<const ggxcl::UserSampler> sampler)
 {
@@ -81,7 +78,7 @@ void check_caps_bits(const ggxcl::SampleParams& user, ShaderLanguage caps_langua
 
 TEST_CASE("a GLSL copy of caps, and the OpenCL C copy read as HLSL, give caps' bits on Vulkan")
 {
-    const auto glsl = ggxcl::UserSampler::load(sampler_file("shaders/caps_copy.glsl"));
+    const auto glsl = ggxcl::UserSampler::load(user_sampler_file("shaders/caps_copy.glsl"));
     CHECK(glsl->shader_language() == ShaderLanguage::glsl);
     CHECK(glsl->language_name() == "GLSL");
     CHECK(glsl->name() == "caps_copy");
@@ -90,15 +87,15 @@ TEST_CASE("a GLSL copy of caps, and the OpenCL C copy read as HLSL, give caps' b
     check_caps_bits(user_params(glsl), ShaderLanguage::glsl, ggxvk::vulkan_sampler(ShaderLanguage::glsl));
 
     // The OpenCL C file in HLSL: compiled as HLSL though the sampler's own shaders are GLSL.
-    const auto hlsl = ggxcl::UserSampler::load(sampler_file("caps_copy.h"), "", ShaderLanguage::hlsl);
+    const auto hlsl = ggxcl::UserSampler::load(user_sampler_file("caps_copy.h"), "", ShaderLanguage::hlsl);
     CHECK(hlsl->shader_language() == ShaderLanguage::hlsl);
-    CHECK(hlsl->key() != ggxcl::UserSampler::load(sampler_file("caps_copy.h"))->key());
+    CHECK(hlsl->key() != ggxcl::UserSampler::load(user_sampler_file("caps_copy.h"))->key());
     check_caps_bits(user_params(hlsl), ShaderLanguage::hlsl, ggxvk::vulkan_sampler(ShaderLanguage::glsl));
 }
 
 TEST_CASE("a user sampler's stress map on Vulkan is the built-in caps' map")
 {
-    const auto glsl = ggxcl::UserSampler::load(sampler_file("shaders/caps_copy.glsl"));
+    const auto glsl = ggxcl::UserSampler::load(user_sampler_file("shaders/caps_copy.glsl"));
     const ggxapp::StressAxes axes = ggxapp::stress_axes();
     const std::vector<ggxapp::StressCase> cases = ggxapp::stress_cases(ggxcl::Method::user, axes);
     ggxcl::VulkanSampler& vk = ggxvk::vulkan_sampler(ShaderLanguage::glsl);
@@ -118,7 +115,7 @@ TEST_CASE("a user sampler's stress map on Vulkan is the built-in caps' map")
 
 TEST_CASE("an HLSL sampler of m alone is completed: heitz's m, o and weight, its own pdf")
 {
-    const auto mine_sampler = ggxcl::UserSampler::load(sampler_file("shaders/heitz_normal_only.hlsl"));
+    const auto mine_sampler = ggxcl::UserSampler::load(user_sampler_file("shaders/heitz_normal_only.hlsl"));
     CHECK(mine_sampler->samples_m());
     const ggxcl::SampleParams user = user_params(mine_sampler);
     ggxcl::VulkanSampler& vk = ggxvk::vulkan_sampler(ShaderLanguage::hlsl);
@@ -130,7 +127,8 @@ TEST_CASE("an HLSL sampler of m alone is completed: heitz's m, o and weight, its
 
 TEST_CASE("each API refuses the other's user samplers, naming the file; Vulkan refuses a user sampler on glass")
 {
-    const std::string glsl_file = sampler_file("shaders/caps_copy.glsl"), cl_file = sampler_file("caps_copy.h");
+    const std::string glsl_file = user_sampler_file("shaders/caps_copy.glsl");
+    const std::string cl_file = user_sampler_file("caps_copy.h");
     const std::string on_opencl = ggxtest::message_of<ggxcl::InvalidArgument>([&] {
         ggxtest::sampler().generate(user_params(ggxcl::UserSampler::load(glsl_file)), {0, 0, 10}, {ggxcl::Field::o});
     });
@@ -155,10 +153,10 @@ TEST_CASE("each API refuses the other's user samplers, naming the file; Vulkan r
 TEST_CASE("a shader sampler without its pdf is refused before a build; one that does not compile names its line")
 {
     const std::string missing = ggxtest::message_of<ggxcl::InvalidArgument>(
-        [&] { ggxcl::UserSampler::load(sampler_file("shaders/no_pdf.glsl")); });
+        [&] { ggxcl::UserSampler::load(user_sampler_file("shaders/no_pdf.glsl")); });
     CHECK(missing.find("no_pdf.glsl") != std::string::npos);
     CHECK(missing.find("ggx_user_pdf") != std::string::npos);
-    const std::string file = sampler_file("shaders/undeclared_name.hlsl");
+    const std::string file = user_sampler_file("shaders/undeclared_name.hlsl");
     for (ShaderLanguage language : ggxvk::all_shader_languages) {
         const std::string what = ggxtest::message_of<ggxcl::BuildError>([&] {
             ggxvk::vulkan_sampler(language).generate(user_params(ggxcl::UserSampler::load(file)), {0, 0, 10},

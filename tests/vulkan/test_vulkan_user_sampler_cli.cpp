@@ -10,7 +10,8 @@
 //     line; a file without its pdf, --api opencl with a shader file and a
 //     --shader-language against its extension exit 2 naming the flag;
 //   - stress, bench (user rows, accuracy on Vulkan), converge and demo run
-//     the shader samplers beside the methods, a copy of caps as caps.
+//     the shader samplers beside the methods, a copy of caps as caps; the
+//     stress page names each file with the language it was read in.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -31,20 +32,14 @@ const fs::path& scratch()
     return ggxtest::ScratchFolder::current();
 }
 
-std::string sampler_file(const std::string& name)
-{
-    return ggxtest::user_samplers_dir() + "/" + name;
-}
+using ggxtest::user_sampler_file;
 
 std::string example_file(const std::string& name)
 {
     return ggxtest::examples_dir() + "/user_sampler/engine_hlsl/" + name;
 }
 
-ggxtest::Run ggx(const std::string& args)
-{
-    return ggxtest::run_ggx(args, scratch() / "stderr.txt");
-}
+using ggxtest::ggx;
 
 // `ggx histogram` of `sampler_args` at alpha 0.5 x 0.2 under --check 1e-3: its exit status and verdicts.
 std::pair<int, std::map<std::string, ggxtest::HistogramVerdict>> histogram(const std::string& sampler_args)
@@ -63,7 +58,7 @@ TEST_CASE("ggx sample --sampler FILE.glsl: the Vulkan caps' samples, on Vulkan w
     const ggxtest::ScratchFolder case_folder("vk-user-cli");
     const fs::path mine = scratch() / "mine.npy", caps = scratch() / "caps.npy";
     const std::string common = " --alpha 0.2,0.5 --theta 75 --sequence sobol -n 3000 --fields m,o,pdf_o,weight,u ";
-    REQUIRE(ggx("sample --sampler " + sampler_file("shaders/caps_copy.glsl") + common + "--out " + mine.string())
+    REQUIRE(ggx("sample --sampler " + user_sampler_file("shaders/caps_copy.glsl") + common + "--out " + mine.string())
                 .status == 0);
     REQUIRE(ggx("sample --api vulkan --method caps" + common + "--out " + caps.string()).status == 0);
     CHECK(ggxtest::read_all(mine) == ggxtest::read_all(caps));
@@ -77,7 +72,7 @@ TEST_CASE("ggx histogram --sampler: shader samplers pass every check; the contro
     const ggxtest::ScratchFolder case_folder("vk-user-cli");
     for (const std::string file : {"shaders/caps_copy.glsl", "shaders/heitz_normal_only.hlsl"}) {
         CAPTURE(file);
-        const auto [status, got] = histogram("--sampler " + sampler_file(file));
+        const auto [status, got] = histogram("--sampler " + user_sampler_file(file));
         CHECK(status == 0);
         CHECK(got.size() == 5);
         for (const auto& [name, verdict] : got) {
@@ -87,7 +82,8 @@ TEST_CASE("ggx histogram --sampler: shader samplers pass every check; the contro
     }
     for (const ggxtest::HistogramControl& control : ggxtest::histogram_controls()) {
         CAPTURE(control.file);
-        const auto [status, got] = histogram("--api vulkan --shader-language hlsl --sampler " + sampler_file(control.file));
+        const auto [status, got] =
+            histogram("--api vulkan --shader-language hlsl --sampler " + user_sampler_file(control.file));
         CHECK(status == 1);
         for (const std::string& name : control.failing)
             CHECK_MESSAGE(!got.at(name).passed, name);
@@ -120,14 +116,15 @@ TEST_CASE("examples/user_sampler/engine_hlsl: the engine's port passes; the same
 TEST_CASE("ggx --sampler FILE.glsl|.hlsl: a shader that does not compile exits 1 at its line; bad uses exit 2")
 {
     const ggxtest::ScratchFolder case_folder("vk-user-cli");
-    const ggxtest::Run broken = ggx("sample --sampler " + sampler_file("shaders/undeclared_name.hlsl") + " -n 10 --out " +
-                                    (scratch() / "broken.npy").string());
+    const ggxtest::Run broken = ggx("sample --sampler " + user_sampler_file("shaders/undeclared_name.hlsl") +
+                                    " -n 10 --out " + (scratch() / "broken.npy").string());
     CHECK(broken.status == 1);
     CHECK(broken.err.find("undeclared_name.hlsl:9:") != std::string::npos);
     CHECK_FALSE(fs::exists(scratch() / "broken.npy"));
-    const std::string glsl = sampler_file("shaders/caps_copy.glsl"), out = " --out " + (scratch() / "bad").string();
+    const std::string glsl = user_sampler_file("shaders/caps_copy.glsl");
+    const std::string out = " --out " + (scratch() / "bad").string();
     const std::pair<std::string, std::string> bad[] = {
-        {"sample -n 10 --sampler " + sampler_file("shaders/no_pdf.glsl") + out, "ggx_user_pdf"},
+        {"sample -n 10 --sampler " + user_sampler_file("shaders/no_pdf.glsl") + out, "ggx_user_pdf"},
         {"sample -n 10 --api opencl --sampler " + glsl + out, "--api"},
         {"histogram -n 10 --shader-language hlsl --sampler " + glsl + out, "--shader-language"},
         {"stress --api opencl --sampler " + glsl + out, "--api"},
@@ -146,12 +143,14 @@ TEST_CASE("ggx --sampler FILE.glsl|.hlsl: a shader that does not compile exits 1
 TEST_CASE("ggx stress, bench, converge and demo with a GLSL copy of caps: caps' results on Vulkan")
 {
     const ggxtest::ScratchFolder case_folder("vk-user-cli");
-    const std::string copy = sampler_file("shaders/caps_copy.glsl");
+    const std::string copy = user_sampler_file("shaders/caps_copy.glsl");
     SUBCASE("stress: the copy's map is caps'; NaN where the OpenCL C control, read as GLSL, divides by zero")
     {
         const fs::path prefix = scratch() / "stress";
+        const fs::path page = scratch() / "stress.html";
         const ggxtest::Run run = ggx("stress --methods caps --sampler " + copy + " --sampler " +
-                                     sampler_file("divides_by_zero.h") + " --no-png --out " + prefix.string());
+                                     user_sampler_file("divides_by_zero.h") + " --no-png --out " + prefix.string() +
+                                     " --html " + page.string());
         CAPTURE(run.err);
         REQUIRE(run.status == 0);
         const std::string csv = ggxtest::read_all(prefix.string() + ".csv");
@@ -159,13 +158,16 @@ TEST_CASE("ggx stress, bench, converge and demo with a GLSL copy of caps: caps' 
         CHECK(rows["caps_copy device"] == rows["caps device"]);
         CHECK(nan_inf["caps_copy device"] == 0);
         CHECK(nan_inf["divides_by_zero device"] > 0);
+        const std::string html = ggxtest::read_all(page);  // each file named with the language it was read in
+        CHECK(html.find("caps_copy.glsl</code>, GLSL") != std::string::npos);
+        CHECK(html.find("divides_by_zero.h</code>, GLSL") != std::string::npos);
     }
     SUBCASE("bench: the user rows on Vulkan alone, the copy with caps' accuracy, a pdf off by 2 caught")
     {
         const fs::path csv_path = scratch() / "bench.csv";
         const ggxtest::Run run = ggx("bench --methods caps --precisions precise -n 2^14 --repeats 5 --scene 3 "
                                      "--cell-samples 2^10 --sampler " + copy + " --reproduces caps --sampler " +
-                                     sampler_file("pdf_doubled.h") + " --csv " + csv_path.string());
+                                     user_sampler_file("pdf_doubled.h") + " --csv " + csv_path.string());
         CAPTURE(run.err);
         REQUIRE(run.status == 0);
         const std::string csv = ggxtest::read_all(csv_path);

@@ -21,6 +21,19 @@ struct ApiTask {
     const BenchUserSampler* user = nullptr;  // a user sampler's task: Vulkan alone
 };
 
+// `task`, then in precise mode the same on each of the plan's other sequences (Sobol), side by side.
+void add_with_sequences(const BenchPlan& plan, const ApiTask& task, std::vector<ApiTask>& tasks)
+{
+    tasks.push_back(task);
+    if (task.params.precision != ggxcl::Precision::precise)
+        return;
+    for (const std::string& sequence : plan.sequences) {
+        ApiTask other = task;
+        other.params.sequence = ggxcl::parse_sequence(sequence);
+        tasks.push_back(other);
+    }
+}
+
 std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::string>& jobs)
 {
     std::vector<ApiTask> tasks;
@@ -30,7 +43,7 @@ std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::str
                 ggxcl::SampleParams p = plan.base;
                 p.method = ggxcl::parse_method(name);
                 p.precision = ggxcl::parse_precision(mode);
-                tasks.push_back({job, p});
+                add_with_sequences(plan, {job, p}, tasks);
                 if (job == "furnace" && plan.settings.eta != 0.0f && ggxcl::method_traits(p.method).dielectric) {
                     p.eta = plan.settings.eta;
                     p.transport = plan.transport;
@@ -43,32 +56,36 @@ std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::str
                 p.method = ggxcl::Method::user;
                 p.user_sampler = user.sampler;
                 p.precision = ggxcl::parse_precision(mode);
-                tasks.push_back({job, p, &user});
+                add_with_sequences(plan, {job, p, &user}, tasks);
             }
     }
     return tasks;
 }
 
 // The accuracy of a precise conductor row on the Vulkan device: the write row's numerical
-// error (a user sampler's where it reproduces a method) and a user sampler's pdf
-// self-consistency; the furnace row's albedo variance and the table's RMSE at the budget,
-// spent at the row's speed.  `exact`: the table's exact albedos, computed when first needed.
+// error on its sequence (a user sampler's where it reproduces a method) and, on philox, a user
+// sampler's pdf self-consistency; the furnace row's albedo variance (philox) and the table's
+// RMSE at the budget on its sequence, spent at the row's speed.  `exact`: the table's exact
+// albedos, computed when first needed.
 void add_accuracy(ggxcl::VulkanSampler& vulkan, const ApiTask& task, const ApiBenchReport& report,
                   std::vector<double>& exact, ApiBenchRow& row)
 {
     const ggxcl::SampleParams& p = task.params;
     if (p.eta != 0.0f || p.precision != ggxcl::Precision::precise)
         return;
+    const bool philox = p.sequence == ggxcl::Sequence::philox;
     if (task.job == "write") {
-        if (task.user)
+        if (task.user && philox)
             row.pdf_disagreement = pdf_disagreement(vulkan, p);
         if (!task.user || task.user->reproduces) {
             row.has_error = true;
-            row.error = numerical_error(vulkan, p, task.user ? task.user->method : p.method, p.precision);
+            row.error = numerical_error(vulkan, p, task.user ? task.user->method : p.method, p.precision, p.sequence);
         }
         return;
     }
-    row.variance = albedo_scene_variance(vulkan, p, p.precision, report.scene_size, report.samples_per_cell).variance;
+    if (philox)
+        row.variance =
+            albedo_scene_variance(vulkan, p, p.precision, report.scene_size, report.samples_per_cell).variance;
     BenchRow timed;  // the budget's arithmetic of the OpenCL report, on the Vulkan timing
     timed.timing = row.vulkan;
     BenchReport budget;
@@ -155,6 +172,7 @@ ApiBenchReport measure_api_bench(const BenchPlan& plan, const std::string& vulka
         row.method = ggxcl::sampler_name(p);
         row.precision = ggxcl::precision_name(p.precision);
         row.job = tasks[t].job;
+        row.sequence = ggxcl::sequence_name(p.sequence);
         row.eta = p.eta;
         row.vulkan = summarize(vk_ns[t]);
         row.opencl = cl_ns[t].empty() ? Timing{} : summarize(cl_ns[t]);

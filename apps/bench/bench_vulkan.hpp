@@ -5,6 +5,7 @@
 //             Sampler::generate);
 //   furnace - the fused white-furnace estimator (VulkanSampler::furnace,
 //             Sampler::furnace), a dielectric's too with --eta.
+// In precise mode each runs on philox and on the other --sequences (Sobol).
 // Each row is the median of `repeats` wall-clock timings of the whole call,
 // both APIs timed back to back in each round after a warm-up that builds
 // the shader and the kernel.  User samplers (--sampler FILE.glsl|.hlsl) get
@@ -26,6 +27,7 @@ namespace ggxapp {
 
 struct ApiBenchRow {
     std::string method, precision, job;
+    std::string sequence;  // of the uniforms: philox, or sobol in precise mode
     float eta = 0;  // a dielectric's furnace (0: the conductor)
     Timing vulkan, opencl;  // ns per sample; opencl.median 0: no OpenCL device, or a user sampler
     double ratio() const { return opencl.median > 0 ? vulkan.median / opencl.median : 0.0; }

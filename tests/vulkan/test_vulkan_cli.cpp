@@ -11,7 +11,8 @@
 //     dielectric, and its summary names the API; negative control: the same
 //     counts tested --against another method's pdf fail (exit 1);
 //   - `ggx bench --api vulkan` (GLSL and HLSL) times the write and furnace jobs
-//     on Vulkan and OpenCL and writes their rows and ratio (CSV, Markdown);
+//     on Vulkan and OpenCL, on philox and Sobol, and writes their rows and
+//     ratio (CSV, Markdown);
 //     --jobs world and --html are refused with it;
 //   - `ggx stress --api vulkan` writes the map (CSV, page naming the Vulkan
 //     device), conductor and dielectric, GLSL and HLSL;
@@ -27,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -171,24 +173,20 @@ TEST_CASE("ggx bench --api vulkan times each job on Vulkan and OpenCL, with thei
         CAPTURE(language);
         CAPTURE(run.err);
         REQUIRE(run.status == 0);
-        std::istringstream rows(ggxtest::read_all(csv));
+        const std::string text = ggxtest::read_all(csv);
+        std::istringstream rows(text);
         std::string line;
         std::getline(rows, line);
-        CHECK(line.rfind("method,precision,job,eta,vulkan_ns", 0) == 0);
-        int count = 0;
+        CHECK(line.rfind("method,precision,job,sequence,eta,vulkan_ns", 0) == 0);
+        std::map<std::string, int> count;  // rows per sequence
         while (std::getline(rows, line)) {
-            ++count;
             CAPTURE(line);
-            std::vector<std::string> cells;
-            std::istringstream fields(line);
-            for (std::string cell; std::getline(fields, cell, ',');)
-                cells.push_back(cell);
-            REQUIRE(cells.size() >= 11);
-            CHECK(std::stod(cells[4]) > 0.0);   // Vulkan ns per sample
-            CHECK(std::stod(cells[7]) > 0.0);   // OpenCL's
-            CHECK(std::stod(cells[10]) > 0.0);  // their ratio
+            ++count[ggxtest::csv_cell(text, line, "sequence")];
+            for (const char* column : {"vulkan_ns", "opencl_ns", "ratio"})
+                CHECK(std::stod(ggxtest::csv_cell(text, line, column)) > 0.0);
         }
-        CHECK(count == 6);  // caps and ndf: write, furnace, the dielectric's furnace
+        CHECK(count["philox"] == 6);  // caps and ndf: write, furnace, the dielectric's furnace
+        CHECK(count["sobol"] == 4);   // caps and ndf: write, furnace (the conductor's)
         const std::string report = ggxtest::read_all(md);
         CHECK(report.find("| Vulkan / OpenCL |") != std::string::npos);
         CHECK(report.find("shaders in " + language) != std::string::npos);

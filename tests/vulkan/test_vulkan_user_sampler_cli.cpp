@@ -162,7 +162,8 @@ TEST_CASE("ggx stress, bench, converge and demo with a GLSL copy of caps: caps' 
         CHECK(html.find("caps_copy.glsl</code>, GLSL") != std::string::npos);
         CHECK(html.find("divides_by_zero.h</code>, GLSL") != std::string::npos);
     }
-    SUBCASE("bench: the user rows on Vulkan alone, the copy with caps' accuracy, a pdf off by 2 caught")
+    SUBCASE("bench: the user rows on Vulkan alone, philox and Sobol, the copy with caps' accuracy, a pdf off by 2 "
+            "caught")
     {
         const fs::path csv_path = scratch() / "bench.csv";
         const ggxtest::Run run = ggx("bench --methods caps --precisions precise -n 2^14 --repeats 5 --scene 3 "
@@ -171,14 +172,17 @@ TEST_CASE("ggx stress, bench, converge and demo with a GLSL copy of caps: caps' 
         CAPTURE(run.err);
         REQUIRE(run.status == 0);
         const std::string csv = ggxtest::read_all(csv_path);
-        std::map<std::string, std::string> cells;  // "method job column"
+        std::map<std::string, std::string> cells;  // "method job column", "method job sobol column"
         std::istringstream lines(csv);
         std::string line;
         std::getline(lines, line);
-        while (std::getline(lines, line))
+        while (std::getline(lines, line)) {
+            const std::string sequence = ggxtest::csv_cell(csv, line, "sequence");
+            const std::string row = ggxtest::csv_cell(csv, line, "method") + " " + ggxtest::csv_cell(csv, line, "job") +
+                                    (sequence == "philox" ? "" : " " + sequence);
             for (const char* column : {"user", "opencl_ns", "angle_p99", "pdf_disagreement", "variance", "rmse_measured"})
-                cells[ggxtest::csv_cell(csv, line, "method") + " " + ggxtest::csv_cell(csv, line, "job") + " " +
-                      column] = ggxtest::csv_cell(csv, line, column);
+                cells[row + " " + column] = ggxtest::csv_cell(csv, line, column);
+        }
         CHECK(cells["caps_copy write user"] == "1");
         CHECK(cells["caps write user"] == "0");
         CHECK(std::stod(cells["caps_copy write opencl_ns"]) == 0.0);
@@ -189,6 +193,13 @@ TEST_CASE("ggx stress, bench, converge and demo with a GLSL copy of caps: caps' 
         CHECK(std::stod(cells["caps_copy furnace rmse_measured"]) > 0.0);
         CHECK(std::stod(cells["caps_copy write pdf_disagreement"]) == 0.0);
         CHECK(std::stod(cells["pdf_doubled write pdf_disagreement"]) == 1.0);
+        CHECK(cells["caps_copy write sobol user"] == "1");  // the Sobol rows, users' too
+        CHECK(std::stod(cells["caps write sobol opencl_ns"]) > 0.0);
+        CHECK(std::stod(cells["caps write sobol angle_p99"]) > 0.0);
+        CHECK(cells["caps_copy write sobol angle_p99"] == cells["caps write sobol angle_p99"]);
+        CHECK(std::stod(cells["caps_copy furnace sobol rmse_measured"]) > 0.0);
+        CHECK(std::stod(cells["caps furnace sobol rmse_measured"]) > 0.0);
+        CHECK(std::stod(cells["caps_copy write sobol pdf_disagreement"]) == -1.0);  // on philox alone
     }
     SUBCASE("converge: the copy's curves are caps'")
     {

@@ -28,6 +28,18 @@ void plan_settings(const BenchCommand& cmd, BenchReport& report)
 
 } // namespace
 
+std::vector<ggxcl::SampleParams> other_sequences(const BenchPlan& plan, const ggxcl::SampleParams& params)
+{
+    std::vector<ggxcl::SampleParams> others;
+    if (params.precision != ggxcl::Precision::precise)
+        return others;
+    for (const std::string& sequence : plan.sequences) {
+        others.push_back(params);
+        others.back().sequence = ggxcl::parse_sequence(sequence);
+    }
+    return others;
+}
+
 BenchJob job_named(const std::string& name)
 {
     for (BenchJob job : all_bench_jobs)

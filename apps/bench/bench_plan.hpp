@@ -51,4 +51,8 @@ BenchPlan plan_bench(const BenchCommand& cmd, const ApiChoice& api);
 
 BenchJob job_named(const std::string& name);
 
+// `params` on each of the plan's sequences besides philox (Sobol), timed side by side with it:
+// in precise mode; none in relaxed mode.
+std::vector<ggxcl::SampleParams> other_sequences(const BenchPlan& plan, const ggxcl::SampleParams& params);
+
 } // namespace ggxapp

@@ -21,19 +21,6 @@ struct ApiTask {
     const BenchUserSampler* user = nullptr;  // a user sampler's task: Vulkan alone
 };
 
-// `task`, then in precise mode the same on each of the plan's other sequences (Sobol), side by side.
-void add_with_sequences(const BenchPlan& plan, const ApiTask& task, std::vector<ApiTask>& tasks)
-{
-    tasks.push_back(task);
-    if (task.params.precision != ggxcl::Precision::precise)
-        return;
-    for (const std::string& sequence : plan.sequences) {
-        ApiTask other = task;
-        other.params.sequence = ggxcl::parse_sequence(sequence);
-        tasks.push_back(other);
-    }
-}
-
 std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::string>& jobs)
 {
     std::vector<ApiTask> tasks;
@@ -43,7 +30,9 @@ std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::str
                 ggxcl::SampleParams p = plan.base;
                 p.method = ggxcl::parse_method(name);
                 p.precision = ggxcl::parse_precision(mode);
-                add_with_sequences(plan, {job, p}, tasks);
+                tasks.push_back({job, p});
+                for (const ggxcl::SampleParams& other : other_sequences(plan, p))
+                    tasks.push_back({job, other});
                 if (job == "furnace" && plan.settings.eta != 0.0f && ggxcl::method_traits(p.method).dielectric) {
                     p.eta = plan.settings.eta;
                     p.transport = plan.transport;
@@ -56,7 +45,9 @@ std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::str
                 p.method = ggxcl::Method::user;
                 p.user_sampler = user.sampler;
                 p.precision = ggxcl::parse_precision(mode);
-                add_with_sequences(plan, {job, p, &user}, tasks);
+                tasks.push_back({job, p, &user});
+                for (const ggxcl::SampleParams& other : other_sequences(plan, p))
+                    tasks.push_back({job, other, &user});
             }
     }
     return tasks;

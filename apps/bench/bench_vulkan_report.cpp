@@ -18,12 +18,6 @@ bool has_user_rows(const ApiBenchReport& r)
     return false;
 }
 
-// A row's sampler, with its sequence where that is not philox: "caps", "caps (sobol)".
-std::string sampler_label(const ApiBenchRow& row)
-{
-    return row.sequence == "philox" ? row.method : row.method + " (" + row.sequence + ")";
-}
-
 // The accuracy section: a line per sampler and sequence of its precise conductor write and
 // furnace rows.
 std::string accuracy_markdown(const ApiBenchReport& r)
@@ -40,9 +34,9 @@ std::string accuracy_markdown(const ApiBenchReport& r)
           "independently scrambled per stream), measured over " << r.rmse_streams
        << " streams, with " << readable_number(r.budget_ms)
        << " ms of furnace time for the whole table at the Vulkan row's speed: lower is better.\n\n"
-       << "| sampler | angle error p99 (rad) | pdf error p99 | pdf off | variance | furnace ns/sample | samples per "
-          "cell | RMSE at equal time |\n"
-       << "|---|---|---|---|---|---|---|---|\n";
+       << "| sampler | sequence | angle error p99 (rad) | pdf error p99 | pdf off | variance | furnace ns/sample | "
+          "samples per cell | RMSE at equal time |\n"
+       << "|---|---|---|---|---|---|---|---|---|\n";
     const auto cell = [](bool has, double value) { return has ? readable_number(value) : std::string("–"); };
     for (const ApiBenchRow& furnace : r.rows) {
         if (furnace.job != "furnace" || furnace.eta != 0.0f || furnace.precision != "precise")
@@ -53,8 +47,9 @@ std::string accuracy_markdown(const ApiBenchReport& r)
                 row.precision == "precise")
                 write = &row;
         const bool error = write && write->has_error, pdf = write && write->pdf_disagreement >= 0;
-        md << "| " << sampler_label(furnace) << " | " << cell(error, error ? write->error.angle_p99 : 0) << " | "
-           << cell(error, error ? write->error.pdf_p99 : 0) << " | "
+        md << "| " << furnace.method << " | " << furnace.sequence << " | "
+           << cell(error, error ? write->error.angle_p99 : 0) << " | " << cell(error, error ? write->error.pdf_p99 : 0)
+           << " | "
            << cell(pdf, pdf ? write->pdf_disagreement : 0) << " | " << cell(furnace.variance > 0, furnace.variance)
            << " | " << readable_number(furnace.vulkan.median) << " | " << furnace.samples_per_cell << " | "
            << cell(furnace.rmse_measured > 0, furnace.rmse_measured) << " |\n";
@@ -97,16 +92,17 @@ std::string api_bench_markdown(const ApiBenchReport& r)
 std::string api_bench_csv(const ApiBenchReport& r)
 {
     std::ostringstream csv;
-    csv << "method,precision,job,sequence,eta,vulkan_ns,vulkan_low,vulkan_high,opencl_ns,opencl_low,opencl_high,ratio,"
-           "vulkan_device,opencl_device,user,angle_p99,pdf_p99,pdf_disagreement,variance,samples_per_cell,"
+    csv << "method,precision,job,sequence,eta,vulkan_ns,vulkan_low,vulkan_high,opencl_ns,opencl_low,opencl_high,"
+           "ratio,vulkan_device,opencl_device,user,angle_p99,pdf_p99,pdf_disagreement,variance,samples_per_cell,"
            "rmse_measured\n";
     for (const ApiBenchRow& row : r.rows)
-        csv << row.method << "," << row.precision << "," << row.job << "," << row.sequence << "," << row.eta << "," << row.vulkan.median << ","
-            << row.vulkan.low << "," << row.vulkan.high << "," << row.opencl.median << "," << row.opencl.low << ","
-            << row.opencl.high << "," << row.ratio() << ",\"" << r.vulkan_device << "\",\"" << r.opencl_device
-            << "\"," << (row.user ? 1 : 0) << "," << (row.has_error ? row.error.angle_p99 : -1.0) << ","
-            << (row.has_error ? row.error.pdf_p99 : -1.0) << "," << row.pdf_disagreement << "," << row.variance << ","
-            << row.samples_per_cell << "," << row.rmse_measured << "\n";
+        csv << row.method << "," << row.precision << "," << row.job << "," << row.sequence << "," << row.eta << ","
+            << row.vulkan.median << "," << row.vulkan.low << "," << row.vulkan.high << "," << row.opencl.median << ","
+            << row.opencl.low << "," << row.opencl.high << "," << row.ratio() << ",\"" << r.vulkan_device << "\",\""
+            << r.opencl_device << "\"," << (row.user ? 1 : 0) << ","
+            << (row.has_error ? row.error.angle_p99 : -1.0) << "," << (row.has_error ? row.error.pdf_p99 : -1.0) << ","
+            << row.pdf_disagreement << "," << row.variance << "," << row.samples_per_cell << "," << row.rmse_measured
+            << "\n";
     return csv.str();
 }
 

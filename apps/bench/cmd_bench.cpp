@@ -85,11 +85,9 @@ void add_conductor_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
                     unguarded.guards = false;
                     tasks.push_back({BenchJob::write, unguarded});
                 }
-                if (mode == "precise" && (job_text == "write" || job_text == "furnace"))
-                    for (const std::string& sequence : plan.sequences) {  // the other sequences, side by side
-                        p.sequence = ggxcl::parse_sequence(sequence);
-                        tasks.push_back({job_named(job_text), p});
-                    }
+                if (job_text == "write" || job_text == "furnace")
+                    for (const ggxcl::SampleParams& other : other_sequences(plan, p))
+                        tasks.push_back({job_named(job_text), other});
             }
 }
 
@@ -107,11 +105,9 @@ void add_user_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
                 p.user_sampler = user.sampler;
                 p.precision = ggxcl::parse_precision(mode);
                 tasks.push_back({job_named(job_text), p});
-                if (mode == "precise" && (job_text == "write" || job_text == "furnace"))
-                    for (const std::string& sequence : plan.sequences) {
-                        p.sequence = ggxcl::parse_sequence(sequence);
-                        tasks.push_back({job_named(job_text), p});
-                    }
+                if (job_text == "write" || job_text == "furnace")
+                    for (const ggxcl::SampleParams& other : other_sequences(plan, p))
+                        tasks.push_back({job_named(job_text), other});
             }
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <boost/math/distributions/chi_squared.hpp>
 
@@ -16,6 +17,7 @@ constexpr double pi = 3.14159265358979323846;
 struct Cell {
     double observed[2], expected[2];
     double size;  // the quantity pooling looks at: expected count (gof) or combined count (homogeneity)
+    double error = 0.0;  // the expected count's own uncertainty (gof with quadrature errors)
 };
 
 void add(Cell& to, const Cell& c)
@@ -25,6 +27,7 @@ void add(Cell& to, const Cell& c)
         to.expected[s] += c.expected[s];
     }
     to.size += c.size;
+    to.error += c.error;
 }
 
 // Cells with size < min_size are pooled; a pool still under min_size joins the smallest kept cell.
@@ -51,14 +54,15 @@ std::vector<Cell> pool(const std::vector<Cell>& cells, double min_size)
 
 ChiSquare finish(const std::vector<Cell>& cells, int samples)
 {
-    ChiSquare r{0.0, int(cells.size()) - 1, 1.0, int(cells.size())};
+    ChiSquare r{0.0, int(cells.size()) - 1, 0.0, int(cells.size())};
     for (const Cell& c : cells)
         for (int s = 0; s < samples; ++s) {
             const double d = c.observed[s] - c.expected[s];
             if (c.expected[s] > 0.0)
-                r.statistic += d * d / c.expected[s];
+                r.statistic += d * d / (c.expected[s] + c.error * c.error);
         }
-    if (r.dof > 0)
+    // No degree of freedom, or a statistic that is not finite, is no evidence: p stays 0.
+    if (r.dof > 0 && std::isfinite(r.statistic))
         r.p_value = boost::math::cdf(boost::math::complement(boost::math::chi_squared(r.dof), r.statistic));
     return r;
 }
@@ -85,8 +89,16 @@ std::vector<uint64_t> histogram_directions(const float* x, const float* y, const
 
 ChiSquare chi_square_gof(const std::vector<uint64_t>& observed, const std::vector<double>& probabilities)
 {
+    return chi_square_gof(observed, probabilities, {});
+}
+
+ChiSquare chi_square_gof(const std::vector<uint64_t>& observed, const std::vector<double>& probabilities,
+                         const std::vector<double>& errors)
+{
     double n = 0.0, total_p = 0.0, impossible = 0.0;
     for (size_t k = 0; k < observed.size(); ++k) {
+        if (!std::isfinite(probabilities[k]))
+            return {std::numeric_limits<double>::quiet_NaN(), 0, 0.0, 0};
         n += double(observed[k]);
         total_p += probabilities[k];
     }
@@ -96,18 +108,20 @@ ChiSquare chi_square_gof(const std::vector<uint64_t>& observed, const std::vecto
     for (size_t k = 0; k < observed.size(); ++k) {
         if (probabilities[k] > 0.0) {
             const double e = n * probabilities[k] / total_p;
-            cells.push_back({{double(observed[k]), 0}, {e, 0}, e});
+            const double error = errors.empty() ? 0.0 : n * errors[k] / total_p;
+            cells.push_back({{double(observed[k]), 0}, {e, 0}, e, error});
         } else {
             impossible += double(observed[k]);
         }
     }
     cells = pool(cells, 5.0);
     if (impossible > 0.0)
-        cells.push_back({{impossible, 0}, {1e-9, 0}, 1e-9});
+        cells.push_back({{impossible, 0}, {1e-9, 0}, 1e-9, 0.0});
     return finish(cells, 1);
 }
 
-ChiSquare chi_square_gof_float(const std::vector<uint64_t>& observed, const std::vector<double>& probabilities)
+ChiSquare chi_square_gof_float(const std::vector<uint64_t>& observed, const std::vector<double>& probabilities,
+                               const std::vector<double>& errors)
 {
     double n = 0.0, impossible = 0.0;
     for (size_t k = 0; k < observed.size(); ++k) {
@@ -115,11 +129,11 @@ ChiSquare chi_square_gof_float(const std::vector<uint64_t>& observed, const std:
         impossible += probabilities[k] > 0.0 ? 0.0 : double(observed[k]);
     }
     if (impossible > 2.0 + 1e-6 * n)
-        return chi_square_gof(observed, probabilities);
+        return chi_square_gof(observed, probabilities, errors);
     std::vector<uint64_t> kept = observed;
     for (size_t k = 0; k < kept.size(); ++k)
         kept[k] = probabilities[k] > 0.0 ? kept[k] : 0;
-    return chi_square_gof(kept, probabilities);
+    return chi_square_gof(kept, probabilities, errors);
 }
 
 // 2 x K contingency table: expected count of sample s in bin k = (a_k + b_k) N_s / (N_a + N_b).
@@ -136,7 +150,7 @@ ChiSquare chi_square_homogeneity(const std::vector<uint64_t>& a, const std::vect
     for (size_t k = 0; k < a.size(); ++k) {
         const double c = double(a[k]) + double(b[k]);
         if (c > 0.0)
-            cells.push_back({{double(a[k]), double(b[k])}, {c * na / (na + nb), c * nb / (na + nb)}, c});
+            cells.push_back({{double(a[k]), double(b[k])}, {c * na / (na + nb), c * nb / (na + nb)}, c, 0.0});
     }
     return finish(pool(cells, 10.0), 2);
 }

@@ -2,6 +2,7 @@
 // draws with known probabilities (calibration and power), pooling, and the Sidak level.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <random>
 
 #include "ggx_stats.hpp"
@@ -119,4 +120,33 @@ TEST_CASE("chi_square_gof_float leaves out a few counts past a support edge, and
     CHECK(chi_square_gof(one_stray, p).p_value == 0.0);  // the strict test rejects any count there
     CHECK(chi_square_gof_float(one_stray, p).p_value == doctest::Approx(chi_square_gof(clean, p).p_value));
     CHECK(chi_square_gof_float(many_stray, p).p_value == 0.0);
+}
+
+TEST_CASE("no pass without evidence: one cell, a probability not finite")
+{
+    // Every sample in one bin: no degree of freedom is left, so nothing was tested.
+    const ggxref::ChiSquare one = chi_square_gof({1000, 0}, {1.0, 0.0});
+    CHECK(one.dof == 0);
+    CHECK(one.p_value == 0.0);
+    for (double bad : {std::nan(""), double(INFINITY), -double(INFINITY)}) {
+        const ggxref::ChiSquare r = chi_square_gof({500, 500}, {0.5, bad});
+        CHECK(r.dof == 0);
+        CHECK(r.p_value == 0.0);
+        CHECK(std::isnan(r.statistic));
+        CHECK(chi_square_gof_float({500, 500}, {bad, 0.5}).p_value == 0.0);
+    }
+}
+
+TEST_CASE("chi_square_gof with expectation errors: a known quadrature error is not a misfit, a larger bias is")
+{
+    // The expectation is off by 0.4 % in two bins of 1e6 samples (4000 counts, ~9 sigma): the plain
+    // test rejects it, the test told of that error accepts it, and a bias ten times the stated error
+    // is still rejected.
+    const std::vector<double> p = {0.25, 0.25, 0.25, 0.25}, biased = {0.254, 0.246, 0.25, 0.25};
+    const std::vector<uint64_t> h = draw(p, 1000000, 3);
+    const std::vector<double> errors = {0.004, 0.004, 0.0, 0.0}, small = {0.0004, 0.0004, 0.0, 0.0};
+    CHECK(chi_square_gof(h, biased).p_value < 1e-12);
+    CHECK(chi_square_gof(h, biased, errors).p_value > 0.01);
+    CHECK(chi_square_gof(h, biased, small).p_value < 1e-9);
+    CHECK(chi_square_gof(h, p, {}).p_value == doctest::Approx(chi_square_gof(h, p).p_value));
 }

@@ -15,9 +15,10 @@
 // Build options: GGX_METHOD=<id>, GGX_BINS_Z, GGX_BINS_PHI, GGX_BIN_M=0|1
 // (1 bins m, 0 bins o), plus those of ggx_bulk_params.h.
 // The bin of a direction is ggx_histogram_bin.h's.  Two counters follow the
-// bins: samples whose direction is not finite, and a dielectric's invalid
-// samples (pdf_o = 0: no density anywhere, so no bin expects them).  A
-// conductor bins every o, its wasted reflections below the surface too.
+// bins: samples whose direction is not finite, and those ggx_counter_of
+// keeps out of the bins (a dielectric's invalid samples, a user sampler's
+// discarded ones).  A built-in conductor bins every o, its wasted
+// reflections below the surface too.
 #include "ggx_bulk_params.h"
 
 #if !defined(GGX_METHOD) || !defined(GGX_BINS_Z) || !defined(GGX_BINS_PHI)
@@ -25,21 +26,12 @@
 #endif
 #include "ggx_histogram_bin.h"
 
-#ifndef GGX_BIN_M
-#define GGX_BIN_M 0
-#endif
 #define GGX_COUNTERS (GGX_BINS + 2)
 
 GGX_INLINE uint ggx_sample_bin(ulong seed, ulong first, uint j, uint count, GGX_PARAM_ARGS)
 {
     ggx_params p = ggx_load_params(j, count, GGX_PARAM_VALUES);
-    ggx_sample s = ggx_bulk_sample(seed, first, j, p);
-    const uint bin = ggx_bin_of(GGX_BIN_M ? s.m : s.o);
-#if GGX_DIELECTRIC && !GGX_BIN_M
-    return s.pdf_o > 0.0f ? bin : (uint)GGX_BINS + 1u;
-#else
-    return bin;
-#endif
+    return ggx_counter_of(ggx_bulk_sample(seed, first, j, p));
 }
 
 // Work-group g counts samples [g * size * per_item, (g + 1) * size * per_item) of the launch.

@@ -2,7 +2,7 @@
 // histogram kernels (OpenCL C) and shaders (GLSL, HLSL), apart from them so
 // that a program that bins directions builds nothing else (no kernel, no
 // local memory).
-// Build options: GGX_BINS_Z, GGX_BINS_PHI.
+// Build options: GGX_BINS_Z, GGX_BINS_PHI, GGX_BIN_M=0|1 (1 bins m, 0 bins o).
 // Bin of a unit d: z bin floor((dz + 1)/2 nz), phi bin k for phi in
 // [2 pi k/nphi, 2 pi (k+1)/nphi), phi the angle of (dx, dy) in [0, 2 pi)
 // (atan2's, with -0 as 0); index z_bin * nphi + phi_bin.  A direction that
@@ -11,6 +11,7 @@
 #define GGX_HISTOGRAM_BIN_H
 
 #include "ggx_common.h"
+#include "ggx_contract.h"
 #include "ggx_guards.h"
 #include "ggx_sincos.h"
 
@@ -18,6 +19,9 @@
 #error "build with -DGGX_BINS_Z and -DGGX_BINS_PHI"
 #endif
 #define GGX_BINS (GGX_BINS_Z * GGX_BINS_PHI)
+#ifndef GGX_BIN_M
+#define GGX_BIN_M 0
+#endif
 
 // The angle of (x, y) in [0, 2 pi) within 1e-5 rad: atan of min/max on
 // [0, 1] by a polynomial, then the octant.  No call: it vectorizes.
@@ -66,6 +70,23 @@ GGX_INLINE ggx_uint ggx_bin_of(ggx_vec3 d)
     int zb = clamp(ggx_to_int(floor(0.5f * (z + 1.0f) * ggx_to_float(GGX_BINS_Z))), 0, GGX_BINS_Z - 1);
     int pb = ggx_phi_bin(x, y);
     return finite ? ggx_to_uint(zb * GGX_BINS_PHI + pb) : ggx_to_uint(GGX_BINS);
+}
+
+// The counter of a sample: the bin of o (of m with GGX_BIN_M), or GGX_BINS + 1
+// for a sample without a place in the bins: a dielectric's invalid one (pdf_o
+// = 0, no density anywhere; o binned only), a user sampler's discarded one (o
+// below the horizon with weight 0, whatever its pdf: an engine's rejected
+// sample, docs/USER-SAMPLERS.md), o or m binned.
+GGX_INLINE ggx_uint ggx_counter_of(ggx_sample s)
+{
+    const ggx_uint bin = ggx_bin_of(GGX_BIN_M != 0 ? s.m : s.o);
+#if GGX_DIELECTRIC && !GGX_BIN_M
+    return s.pdf_o > 0.0f ? bin : ggx_to_uint(GGX_BINS + 1);
+#elif defined(GGX_METHOD) && GGX_METHOD == GGX_METHOD_USER
+    return (s.o.z <= 0.0f && s.weight == 0.0f) ? ggx_to_uint(GGX_BINS + 1) : bin;
+#else
+    return bin;
+#endif
 }
 
 #endif // GGX_HISTOGRAM_BIN_H

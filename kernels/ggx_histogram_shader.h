@@ -3,7 +3,8 @@
 // ggx_histogram kernel does per work-item.  Each work-group counts its
 // samples in shared memory with atomics, then adds its non-zero counters to
 // the global ones.  Counters: the GGX_BINS bins of ggx_histogram_bin.h, then
-// directions that are not finite, then a dielectric's invalid samples.
+// directions that are not finite, then the samples ggx_counter_of keeps out
+// of the bins (a dielectric's invalid ones, a user sampler's discarded ones).
 // Build switches: those of ggx_bulk_sample.h, GGX_BINS_Z, GGX_BINS_PHI,
 // GGX_BIN_M=0|1 (1 bins m) and GGX_GROUP_SIZE.
 // The including shader declares first `ggx_counts` (a uint storage buffer
@@ -17,20 +18,10 @@
 #include "ggx_histogram_bin.h"
 #include "ggx_request_shader.h"
 
-#ifndef GGX_BIN_M
-#define GGX_BIN_M 0
-#endif
-
 // The counter of sample j of the launch.
 ggx_uint ggx_shader_sample_bin(ggx_uint j)
 {
-    const ggx_sample s = ggx_bulk_sample(ggx_request_seed(), ggx_request_first(), j, ggx_request_params());
-    const ggx_uint bin = ggx_bin_of(GGX_BIN_M != 0 ? s.m : s.o);
-#if GGX_DIELECTRIC && !GGX_BIN_M
-    return s.pdf_o > 0.0f ? bin : ggx_to_uint(GGX_BINS + 1);
-#else
-    return bin;
-#endif
+    return ggx_counter_of(ggx_bulk_sample(ggx_request_seed(), ggx_request_first(), j, ggx_request_params()));
 }
 
 // Invocation `local` of work-group `group` (the invocation y * row_width + x

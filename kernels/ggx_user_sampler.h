@@ -33,12 +33,16 @@ GGX_INLINE ggx_sample ggx_user_sample(ggx_vec3 i, float ax, float ay, float u1, 
 #endif
 GGX_INLINE float ggx_user_pdf(ggx_vec3 i, ggx_vec3 o, float ax, float ay);
 
-// The sample of a user's normal m: the mirror direction o = 2 (i.m) m - i, its
-// density from the user's pdf, the density of m through the reflection's
-// Jacobian |do/dm| = 4 |i.m| (Walter et al. 2007, eq. 14), and the weight
-// f |oz| / pdf_o with the BRDF of ggx_bsdf.h (0 where pdf_o is 0).
+// The sample of a user's normal m: m normalized where its squared length is
+// off 1 by more than 1e-5 (an fp16 normal; a unit float normal is left as it
+// is), the mirror direction o = 2 (i.m) m - i, its density from the user's
+// pdf, the density of m through the reflection's Jacobian |do/dm| = 4 |i.m|
+// (Walter et al. 2007, eq. 14), and the weight f |oz| / pdf_o with the BRDF
+// of ggx_bsdf.h (0 where pdf_o is 0).
 GGX_INLINE ggx_sample ggx_user_complete(ggx_vec3 i, ggx_vec3 m, float ax, float ay)
 {
+    const float length2 = ggx_dot(m, m);
+    m = ggx_fabs(length2 - 1.0f) > 1e-5f ? ggx_normalize(m) : m;
     ggx_sample s;
     s.m = m;
     s.o = ggx_reflect(i, m);

@@ -107,7 +107,9 @@ struct Histogram {
     std::uint64_t non_finite = 0;  // samples whose direction was NaN or Inf
     // Dielectrics (SampleParams::eta): samples without density (pdf_o = 0, a
     // reflection that left the view's side or a transmission that did not
-    // cross), counted here instead of in a bin.
+    // cross), counted here instead of in a bin.  A user sampler
+    // (Method::user): its discarded samples (o below the horizon with weight
+    // 0, whatever their pdf), o or m binned.
     std::uint64_t invalid = 0;
     std::uint64_t total() const;
 };

@@ -26,6 +26,7 @@
 #include "sample_agreement.hpp"
 #include "scratch.hpp"
 #include "vulkan_fixture.hpp"
+#include "vulkan/spirv_features.hpp"  // lib/src: the capabilities a device lacks
 #include "vulkan/vulkan_compute.hpp"  // lib/src: the back end's dispatch_shape
 
 namespace {
@@ -219,4 +220,25 @@ TEST_CASE("negative control: the validation layer stops a dispatch that overruns
     CHECK(status != 0);
     CHECK(out.find("ggxcl: Vulkan validation error") != std::string::npos);
     CHECK(out.find("unreported") == std::string::npos);
+}
+
+TEST_CASE("a shader's 16- and 8-bit capabilities against the device's features: the one it lacks is named")
+{
+    using ggxcl::detail::missing_device_feature;
+    // A SPIR-V header, OpCapability Shader (1), then OpCapability Float16 (9).
+    const std::vector<std::uint32_t> fp16 = {0x07230203u, 0x00010300u, 0u, 10u, 0u, (2u << 16) | 17u, 1u,
+                                             (2u << 16) | 17u, 9u};
+    ggxcl::VulkanDeviceInfo device;
+    device.name = "test device";
+    const std::string missing = missing_device_feature(fp16, device);
+    CHECK(missing.find("Float16") != std::string::npos);
+    CHECK(missing.find("shaderFloat16") != std::string::npos);
+    CHECK(missing.find("test device") != std::string::npos);
+    device.float16 = true;
+    CHECK(missing_device_feature(fp16, device).empty());
+    // The devices the suites run on: lavapipe offers every small type a user's shader may use.
+    const ggxcl::VulkanDeviceInfo here = ggxcl::select_vulkan_device();
+    CHECK(here.float16);
+    CHECK(here.int16);
+    CHECK(here.storage16);
 }

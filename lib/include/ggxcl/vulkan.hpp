@@ -36,6 +36,9 @@ struct VulkanDeviceInfo {
     std::uint32_t max_push_constants = 0;  // bytes
     std::uint32_t max_shared_memory = 0;   // bytes of shared memory per work-group
     bool int64 = false;  // shaderInt64: without it the samplers cannot run (Philox, Sobol)
+    // What a user's shader may use beside: shaderFloat16, shaderInt8 (VK_KHR_shader_float16_int8),
+    // shaderInt16, 16-bit storage buffer access; each enabled where the device has it.
+    bool float16 = false, int8 = false, int16 = false, storage16 = false;
     // "vulkan:<name>", how the CLI names it beside OpenCL devices.
     std::string label() const { return "vulkan:" + name; }
 };

@@ -38,6 +38,30 @@ std::uint32_t host_memory_type(const vk::raii::PhysicalDevice& device)
     return found;
 }
 
+// The device: shaderInt64 (the samplers need it), and the small types a user's shader may use,
+// each where the device has it (VulkanDeviceInfo).
+vk::raii::Device create_device(const vk::raii::PhysicalDevice& physical, const VulkanDeviceInfo& info,
+                               const vk::DeviceQueueCreateInfo& queue)
+{
+    static const char* const float16_int8 = VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME;
+    vk::PhysicalDeviceFeatures features;
+    features.shaderInt64 = VK_TRUE;
+    features.shaderInt16 = info.int16 ? VK_TRUE : VK_FALSE;
+    vk::PhysicalDevice16BitStorageFeatures storage;
+    storage.storageBuffer16BitAccess = info.storage16 ? VK_TRUE : VK_FALSE;
+    vk::PhysicalDeviceShaderFloat16Int8Features small;
+    small.shaderFloat16 = info.float16 ? VK_TRUE : VK_FALSE;
+    small.shaderInt8 = info.int8 ? VK_TRUE : VK_FALSE;
+    const bool extension = info.float16 || info.int8;
+    vk::StructureChain<vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2, vk::PhysicalDevice16BitStorageFeatures,
+                       vk::PhysicalDeviceShaderFloat16Int8Features>
+        chain(vk::DeviceCreateInfo({}, 1, &queue, 0, nullptr, extension ? 1 : 0, extension ? &float16_int8 : nullptr),
+              vk::PhysicalDeviceFeatures2(features), storage, small);
+    if (!extension)
+        chain.unlink<vk::PhysicalDeviceShaderFloat16Int8Features>();
+    return vk::raii::Device(physical, chain.get<vk::DeviceCreateInfo>());
+}
+
 } // namespace
 
 DispatchShape dispatch_shape(std::uint64_t items, std::uint32_t group_size, std::uint32_t max_groups_x,
@@ -68,9 +92,7 @@ VulkanCompute::VulkanCompute(std::shared_ptr<VulkanInstance> vulkan, const Vulka
     const std::uint32_t family = compute_family(physical_);
     const float priority = 1.0f;
     const vk::DeviceQueueCreateInfo queue_info({}, family, 1, &priority);
-    vk::PhysicalDeviceFeatures features;
-    features.shaderInt64 = VK_TRUE;
-    device_ = vk::raii::Device(physical_, vk::DeviceCreateInfo({}, queue_info, {}, {}, &features));
+    device_ = create_device(physical_, info_, queue_info);
     queue_ = vk::raii::Queue(device_, family, 0);
     pool_ = vk::raii::CommandPool(
         device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eResetCommandBuffer, family));

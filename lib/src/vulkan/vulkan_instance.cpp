@@ -81,6 +81,25 @@ std::string version_text(std::uint32_t v)
            std::to_string(VK_API_VERSION_PATCH(v));
 }
 
+// The 16- and 8-bit types a device offers a shader (vulkan_compute.cpp enables them).
+void read_small_types(const vk::raii::PhysicalDevice& device, VulkanDeviceInfo& info)
+{
+    info.int16 = device.getFeatures().shaderInt16 == VK_TRUE;
+    bool has_float16_int8 = false;
+    for (const vk::ExtensionProperties& e : device.enumerateDeviceExtensionProperties())
+        has_float16_int8 = has_float16_int8 || std::string(e.extensionName.data()) == VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME;
+    if (has_float16_int8) {
+        const auto chain = device.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDevice16BitStorageFeatures,
+                                               vk::PhysicalDeviceShaderFloat16Int8Features>();
+        info.float16 = chain.get<vk::PhysicalDeviceShaderFloat16Int8Features>().shaderFloat16 == VK_TRUE;
+        info.int8 = chain.get<vk::PhysicalDeviceShaderFloat16Int8Features>().shaderInt8 == VK_TRUE;
+        info.storage16 = chain.get<vk::PhysicalDevice16BitStorageFeatures>().storageBuffer16BitAccess == VK_TRUE;
+    } else {
+        const auto chain = device.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDevice16BitStorageFeatures>();
+        info.storage16 = chain.get<vk::PhysicalDevice16BitStorageFeatures>().storageBuffer16BitAccess == VK_TRUE;
+    }
+}
+
 VulkanDeviceInfo describe(const vk::raii::PhysicalDevice& device, std::size_t index)
 {
     const auto properties = device.getProperties();
@@ -97,6 +116,7 @@ VulkanDeviceInfo describe(const vk::raii::PhysicalDevice& device, std::size_t in
     info.max_push_constants = limits.maxPushConstantsSize;
     info.max_shared_memory = limits.maxComputeSharedMemorySize;
     info.int64 = device.getFeatures().shaderInt64 == VK_TRUE;
+    read_small_types(device, info);
     return info;
 }
 

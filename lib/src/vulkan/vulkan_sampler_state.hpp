@@ -15,6 +15,7 @@
 #include "planar_inputs.hpp"
 #include "program_variant.hpp"
 #include "spirv_compile.hpp"
+#include "spirv_features.hpp"
 #include "vulkan_compute.hpp"
 #include "vulkan_instance.hpp"
 #include "ggxcl/error.hpp"
@@ -126,6 +127,9 @@ struct VulkanSampler::State {
         const detail::CompiledShader shader =
             user ? detail::compile_user_shader(*user, file, defines) : detail::compile_shader(shader_language, file, defines);
         from_disk += shader.from_disk ? 1 : 0;
+        const std::string missing = user ? detail::missing_device_feature(shader.spirv, compute->info()) : "";
+        if (!missing.empty())
+            throw BuildError(user->path() + ": the user sampler cannot run here: " + missing, "");
         return pipelines.emplace(key, compute->pipeline(shader.spirv)).first->second;
     }
 

@@ -1,11 +1,12 @@
 // pdf_bins.hpp - a histogram's expectation from a sampler's pdf on the
 // device (Sampler::pdf or VulkanSampler::pdf), for samplers the reference does not know (a user
 // sampler): each bin of equal solid angle (the device histogram's, over
-// cos theta in [-1, 1] and phi) integrated by Gauss-Legendre rules in
-// (cos theta, phi), where dw = d(cos theta) dphi.  Used by `ggx histogram`
-// and the Python Sampler.histogram.
+// cos theta in [-1, 1] and phi) integrated adaptively in (cos theta, phi),
+// where dw = d(cos theta) dphi, with an error estimate per bin.  Used by
+// `ggx histogram` and the Python Sampler.histogram.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -22,17 +23,61 @@ DirectionPdf direction_pdf(Api& sampler)
     return [&sampler](const ggxcl::SampleParams& p, const std::vector<ggxcl::Vec3>& o) { return sampler.pdf(p, o); };
 }
 
-// Each bin's probability under params' pdf (over the whole sphere) by the 16x16-point rule, with
-// the change from the 8x8-point rule's, |fine - coarse| summed over the bins, in `quadrature_error`.
-std::vector<double> pdf_bin_probabilities(const DirectionPdf& pdf, const ggxcl::SampleParams& params, int bins_z,
-                                          int bins_phi, double& quadrature_error);
+// The double-precision reference's pdf of o (ggxref::pdf_o) of a built-in method, as a DirectionPdf
+// on the host.
+DirectionPdf reference_direction_pdf(ggxcl::Method method);
+
+// What a histogram bins and how finely its expectation must hold.
+struct BinRequest {
+    int bins_z = 32, bins_phi = 64;
+    ggxcl::Field direction = ggxcl::Field::o;  // o, or m (density 4 |i.m| pdf_o(reflect(i, m)), m.z > 0)
+    std::uint64_t samples = 1000000;           // the histogram's count: each bin's error is held well
+                                               // below its count's Poisson noise
+    // The histogram's counts, when known: a bin with samples where no node found a density is
+    // subdivided until one does (a thin sliver of support between nodes).
+    const std::vector<std::uint64_t>* observed = nullptr;
+    // Edges in cos theta, ascending, when the bins are not bins_z equal steps over [-1, 1] (rings
+    // of equal mass: pdf_rings.hpp); bins_z is then their count.
+    std::vector<double> z_edges = {};
+    std::size_t refinement_budget = 12u << 20;  // pdf evaluations beyond the first pass, all rounds
+};
+
+// Each bin's probability under a pdf of o, integrated adaptively: each region gets the 8x8-point
+// Gauss-Legendre rule and the same rule on its four quarters; a region whose two estimates differ
+// by more than its share of the bin's target is quartered, round after round (within a budget of
+// pdf evaluations), which refines near singular points and support edges alone.
+struct BinIntegrals {
+    // `kept`: the density where o is above the horizon (what a conductor's sampler keeps: the rest,
+    // o below with weight 0, is discarded); `whole`: the density wherever o goes; `error`: the
+    // larger estimated error of the two (the finer estimate's change from the coarser).
+    std::vector<double> kept, whole, error;
+    std::size_t evaluations = 0;  // pdf evaluations, all rounds
+    int deepest = 0;              // the most times a bin was halved in each axis
+    double kept_total() const;
+    double whole_total() const;
+    double error_total() const;
+};
+
+BinIntegrals integrate_bins(const DirectionPdf& pdf, const ggxcl::SampleParams& params, const BinRequest& request);
 
 // The built-in method whose pdf is the claimed distribution's (heitz for vndf, ndf for ndf); false
 // for a density of its own.
 bool claimed_method(ggxcl::Distribution distribution, ggxcl::Method& method);
 
 // The bins' probabilities under the distribution params' user sampler claims (the reference's
-// quadrature, bin_probabilities of reference_bridge.hpp); empty for a density of its own.
+// quadrature, bin_probabilities of reference_bridge.hpp, over the whole sphere); empty for a
+// density of its own.
 std::vector<double> claimed_bin_probabilities(const ggxcl::SampleParams& params, int bins_z, int bins_phi);
+
+// The claimed distribution's probability of each bin's kept samples (o above the horizon), from
+// its whole-sphere bins of o (`whole`, the reference's quadrature; bins_z even), or for bins of m
+// by integrating the reference's pdf; `below`: its mass below the horizon (what a sampler of it
+// discards).
+struct ClaimedBins {
+    std::vector<double> kept;
+    double below = 0.0;
+};
+ClaimedBins claimed_bins(const ggxcl::SampleParams& params, ggxcl::Method claimed, const BinRequest& request,
+                         const std::vector<double>& whole);
 
 } // namespace ggxbridge

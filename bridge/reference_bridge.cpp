@@ -3,7 +3,9 @@
 
 #include "ggx_quadrature.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -82,6 +84,23 @@ ggxref::ChiSquare histogram_fit(const ggxcl::Histogram& histogram, const std::ve
     counts.push_back(histogram.invalid);
     expected.push_back(std::max(0.0, 1.0 - std::accumulate(probabilities.begin(), probabilities.end(), 0.0)));
     return ggxref::chi_square_gof_float(counts, expected);
+}
+
+ggxref::ChiSquare user_histogram_fit(const ggxcl::Histogram& counts, const std::vector<double>& kept,
+                                     const std::vector<double>& error, bool with_discarded)
+{
+    std::vector<std::uint64_t> observed = counts.counts;
+    std::vector<double> expected = kept, errors = error.empty() ? std::vector<double>(kept.size(), 0.0) : error;
+    const double total = std::accumulate(kept.begin(), kept.end(), 0.0);
+    if (with_discarded) {  // discarded: what the bins leave of 1
+        observed.push_back(counts.invalid);
+        expected.push_back(std::isfinite(total) ? std::max(0.0, 1.0 - total) : total);
+        errors.push_back(std::accumulate(error.begin(), error.end(), 0.0));
+    }
+    observed.push_back(counts.non_finite);  // no pdf expects a direction that is not finite
+    expected.push_back(0.0);
+    errors.push_back(0.0);
+    return ggxref::chi_square_gof_float(observed, expected, errors);
 }
 
 } // namespace ggxbridge

@@ -37,4 +37,13 @@ std::vector<double> bin_probabilities(ggxcl::Method method, const ggxcl::SampleP
 ggxref::ChiSquare histogram_fit(const ggxcl::Histogram& histogram, const std::vector<double>& probabilities,
                                 bool dielectric);
 
+// The chi-square of a user sampler's histogram: each bin's kept samples against `kept` (within
+// `error`, empty for none), and directions that are not finite against nothing.  Its discarded
+// samples (Histogram::invalid: o below the horizon with weight 0) are one more category expecting
+// what the bins leave of 1 `with_discarded` (a claimed distribution, a density over the sphere);
+// without, they are left out and the test is of the kept samples' shape alone (a user's pdf, whose
+// normalization and mass below the horizon the integral and reach checks judge).
+ggxref::ChiSquare user_histogram_fit(const ggxcl::Histogram& counts, const std::vector<double>& kept,
+                                     const std::vector<double>& error, bool with_discarded);
+
 } // namespace ggxbridge

@@ -1,7 +1,8 @@
 // cmd_histogram.cpp - `ggx histogram`: bin a method's reflected directions
 // on the device and test them against its pdf (chi-square); `--check ALPHA`
 // makes the exit status 1 when p < ALPHA.  A user sampler (--sampler) gets
-// every check of user_checks.hpp, and --check fails on any that fails.
+// every check of user_checks.hpp and user_fit_checks.hpp, and --check fails
+// on any that fails.
 #include <iostream>
 
 #include "api_options.hpp"
@@ -29,8 +30,6 @@ struct HistogramCommand {
         if (job.params.method == ggxcl::Method::user && !against.empty())
             throw UsageError("--against", against, "no --against with --sampler: its own pdf and the distribution "
                                                    "it claims are both tested");
-        if (job.params.method == ggxcl::Method::user && of != "o")
-            throw UsageError("--of", of, "o with --sampler (its pdf is a density of o)");
         if (!against.empty()) {
             try {
                 job.against = ggxcl::parse_method(against);
@@ -43,6 +42,9 @@ struct HistogramCommand {
         job.range = options.parsed_range(first, count);
         job.bins_z = int(parse_whole("--bins-z", bins_z, 1, 512));
         job.bins_phi = int(parse_whole("--bins-phi", bins_phi, 1, 1024));
+        if (job.params.method == ggxcl::Method::user && job.bins_z % 2 != 0)
+            throw UsageError("--bins-z", bins_z, "an even number with --sampler, so that the horizon is a bin edge "
+                                                 "(its samples below the horizon with weight 0 are discarded)");
         job.prefix = out;
         job.png = !no_png;
         if (of != "o" && of != "m")
@@ -95,7 +97,8 @@ Prepare add_histogram_command(CLI::App& app)
     cmd->add_option("--first", state->first, "index of the first sample")->capture_default_str();
     cmd->add_option("--bins-z", state->bins_z, "bins over cos theta in [-1, 1]")->capture_default_str();
     cmd->add_option("--bins-phi", state->bins_phi, "bins over phi in [0, 360)")->capture_default_str();
-    cmd->add_option("--of", state->of, "what to bin: o (reflected direction) or m (microfacet normal)")
+    cmd->add_option("--of", state->of, "what to bin: o (reflected direction) or m (microfacet normal; with --sampler, its density "
+                    "4 |i.m| pdf_o)")
         ->capture_default_str();
     cmd->add_option("--against", state->against, "test against this method's pdf instead (a negative control)");
     cmd->add_option("--check", state->check, "exit with status 1 when p < ALPHA (0 < ALPHA < 1)");

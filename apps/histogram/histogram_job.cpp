@@ -15,6 +15,9 @@
 #include "plot.hpp"
 #include "reference_bridge.hpp"
 #include "sample_job.hpp"
+#include "report_text.hpp"
+#include "theta_check.hpp"
+#include "user_fit_checks.hpp"
 
 namespace ggxapp {
 
@@ -60,31 +63,34 @@ nlohmann::json summary(const HistogramDevice& device, const HistogramJob& job, c
     return doc;
 }
 
-HistogramCheck chi_square_check(const std::string& name, const ggxref::ChiSquare& fit, double level)
-{
-    HistogramCheck check;
-    check.name = name;
-    check.p_value = fit.p_value;
-    check.passed = fit.p_value >= level;
-    std::ostringstream line;
-    line << name << ": chi-square " << fit.statistic << " on " << fit.dof << " dof, p = " << fit.p_value;
-    check.summary = line.str();
-    return check;
-}
-
-// A user sampler's checks: its histogram against its own pdf (`own`) and the claimed
-// distribution's bins (`claimed`, empty for a density of its own), its pdfs from (i, o).
+// The user sampler's checks, in report order: the chi-square against its own pdf (`own_fit`, of
+// `own`, its integrals over the bins) and in rings of theta, the integral, the reach, the chi-square against the
+// distribution it claims (`claimed_whole`: that distribution's bins over the whole sphere; none for
+// a density of its own), the mean weight, and its pdfs from (i, o).
 std::vector<HistogramCheck> user_sampler_checks(const PdfDevice& device, const HistogramJob& job,
-                                                const ggxcl::Histogram& counts, const ggxref::ChiSquare& own,
-                                                const std::vector<double>& claimed)
+                                                const ggxcl::Histogram& counts, const ggxref::ChiSquare& own_fit,
+                                                const ggxbridge::BinIntegrals& own,
+                                                const ggxbridge::BinRequest& request,
+                                                const std::vector<double>& claimed_whole)
 {
-    std::vector<HistogramCheck> checks = {chi_square_check("its own pdf", own, job.level)};
+    std::vector<HistogramCheck> checks = {
+        chi_square_check("its own pdf", own_fit, job.level, samples_where_zero(counts, own.kept)),
+        theta_check(device, job.params, job.range, job.direction, job.level), integral_check(own, counts),
+        reach_check(own, counts)};
     ggxcl::Method method = ggxcl::Method::heitz;
-    const bool claims = ggxbridge::claimed_method(job.params.user_sampler->distribution(), method);
-    if (claims)
-        checks.push_back(chi_square_check(std::string("the claimed ") +
-                                              std::string(ggxcl::distribution_name(job.params.user_sampler->distribution())),
-                                          ggxbridge::histogram_fit(counts, claimed, false), job.level));
+    const ggxcl::Distribution claim = job.params.user_sampler->distribution();
+    const bool claims = ggxbridge::claimed_method(claim, method);
+    if (claims) {
+        const ggxbridge::ClaimedBins theirs = ggxbridge::claimed_bins(job.params, method, request, claimed_whole);
+        HistogramCheck check = chi_square_check("the claimed " + std::string(ggxcl::distribution_name(claim)),
+                                                ggxbridge::user_histogram_fit(counts, theirs.kept, {}, true),
+                                                job.level, samples_where_zero(counts, theirs.kept));
+        check.numbers["claimed_below_horizon"] = theirs.below;
+        check.summary += "; discarded " + readable_number(double(counts.invalid) / double(counts.total())) +
+                         " of the samples, the claimed mass below the horizon " + readable_number(theirs.below);
+        checks.push_back(check);
+    }
+    checks.push_back(weight_check(device.furnace(job.params, job.range), job.params));
     const ggxcl::SampleRange some{job.range.seed, job.range.first, std::min<std::uint64_t>(job.range.count, 1 << 16)};
     for (HistogramCheck& check : pdf_checks(device, job.params, some, claims ? &method : nullptr))
         checks.push_back(check);
@@ -96,8 +102,10 @@ std::vector<HistogramCheck> user_sampler_checks(const PdfDevice& device, const H
 std::future<std::vector<double>> start_expectation(const HistogramJob& job)
 {
     return std::async(std::launch::async, [job] {
-        if (job.params.method == ggxcl::Method::user)
-            return ggxbridge::claimed_bin_probabilities(job.params, job.bins_z, job.bins_phi);
+        if (job.params.method == ggxcl::Method::user)  // bins of m: claimed_bins integrates them itself
+            return job.direction == ggxcl::Field::o
+                       ? ggxbridge::claimed_bin_probabilities(job.params, job.bins_z, job.bins_phi)
+                       : std::vector<double>{};
         return ggxbridge::bin_probabilities(job.against, job.params, job.bins_z, job.bins_phi, job.direction);
     });
 }
@@ -129,11 +137,12 @@ HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
     ggxcl::Histogram counts = device.count(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool user = job.params.method == ggxcl::Method::user;
-    double quadrature_error = 0.0;
-    const std::vector<double> probabilities =
-        user ? ggxbridge::pdf_bin_probabilities(device.pdfs.pdf, job.params, job.bins_z, job.bins_phi, quadrature_error)
-             : reference;
-    ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
+    const ggxbridge::BinRequest request{job.bins_z, job.bins_phi, job.direction, job.range.count, &counts.counts};
+    const ggxbridge::BinIntegrals own =
+        user ? ggxbridge::integrate_bins(device.pdfs.pdf, job.params, request) : ggxbridge::BinIntegrals{};
+    const std::vector<double>& probabilities = user ? own.kept : reference;
+    const ggxref::ChiSquare fit = user ? ggxbridge::user_histogram_fit(counts, own.kept, own.error, false)
+                                       : ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
 
     std::vector<double> observed(counts.counts.begin(), counts.counts.end()), expected(probabilities.size());
     for (std::size_t b = 0; b < expected.size(); ++b)
@@ -143,13 +152,19 @@ HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
     nlohmann::json doc = summary(device, job, counts, fit, seconds);
     HistogramResult result{fit.statistic, fit.p_value, double(job.range.count) / seconds, fit.dof, "", {}};
     if (user) {
-        result.checks = user_sampler_checks(device.pdfs, job, counts, fit, reference);
-        result.checks.insert(result.checks.begin() + 1, pdf_integral_check(probabilities, quadrature_error));
-        doc["expected_from_pdf_of"] = ggxcl::sampler_name(job.params) + " (its own pdf, integrated over each bin)";
-        doc["quadrature_error"] = quadrature_error;
+        result.checks = user_sampler_checks(device.pdfs, job, counts, fit, own, request, reference);
+        doc["expected_from_pdf_of"] = ggxcl::sampler_name(job.params) +
+                                      " (its own pdf, integrated adaptively over each bin; the samples it kept)";
+        doc["quadrature_error"] = own.error_total();
+        doc["discarded_samples"] = counts.invalid;
+        doc["discarded"] = "samples whose o is below the horizon with weight 0 (whatever their pdf), tested as one "
+                           "more category against what the bins leave of 1";
         for (const HistogramCheck& check : result.checks)
-            doc["checks"].push_back(
-                {{"name", check.name}, {"summary", check.summary}, {"passed", check.passed}, {"p_value", check.p_value}});
+            doc["checks"].push_back({{"name", check.name},
+                                     {"summary", check.summary},
+                                     {"passed", check.passed},
+                                     {"p_value", check.p_value},
+                                     {"numbers", check.numbers}});
     }
     write_text_file(job.prefix + ".json", doc.dump(2) + "\n");
 

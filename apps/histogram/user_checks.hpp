@@ -1,14 +1,16 @@
-// user_checks.hpp - what `ggx histogram --sampler` tests of a user sampler
-// beyond the chi-square against its own pdf (bridge/pdf_bins.hpp): the pdf's
-// integral, the chi-square against the distribution the file claims (the
-// reference's GGX VNDF or NDF), and its pdf_o against the pdf recomputed
-// from (i, o) by its own function and, where it claims one, by the claimed
-// distribution's.
+// user_checks.hpp - what `ggx histogram --sampler` tests of a user sampler's
+// samples one by one: its pdf_o against the pdf recomputed from (i, o) by
+// its own function and, where it claims one, by the claimed distribution's,
+// each sample judged by one precedence (docs/USER-SAMPLERS.md "How each
+// sample is judged"), with the ratio's spread and a diagnosis.  The checks
+// on the histogram are user_fit_checks.hpp's.
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include <ggxcl/ggxcl.hpp>
 
@@ -18,28 +20,36 @@ namespace ggxapp {
 
 // One check's verdict, for the report and --check.
 struct HistogramCheck {
-    std::string name;      // "own pdf", "claimed vndf", "pdf from (i, o)", ...
-    std::string summary;   // one line for people
+    std::string name;      // "its own pdf", "pdf integrates to 1", "pdf from (i, o)", ...
+    std::string summary;   // what was found, for people: by how much and which way
     double p_value = -1;   // chi-square checks; -1 otherwise
     bool passed = true;    // p >= level for chi-square checks (level: --check, else 1e-3)
+    nlohmann::json numbers = nlohmann::json::object();  // the measured values, for the JSON
 };
 
-// The pdf's integral over the sphere (the bins' sum) must be 1: within 1e-3 plus ten times the
-// quadrature error (a chi-square, which normalizes the expected counts, cannot
-// tell a pdf off by a constant factor).
-HistogramCheck pdf_integral_check(const std::vector<double>& probabilities, double quadrature_error);
-
-// How a sampler's pdf_o agrees with a pdf recomputed from (i, o): of the samples with a density
-// (pdf_o > 0), how many differ by more than 1e-3 (relative), and the largest difference.
+// How a sampler's pdf_o agrees with a pdf recomputed from (i, o), sample by sample, in this order:
+// a sample whose o is below the horizon with weight 0 is discarded (whatever its pdf); a returned
+// pdf that is NaN or infinite fails; a returned pdf <= 0 fails (its sample was kept); where the
+// half vector i + o nearly cancels (|i.h| < 0.01) the recomputation is ill-conditioned and the
+// sample is set apart; otherwise the ratio returned / recomputed is judged (within 1e-3 of 1, or a
+// disagreement; a recomputed pdf <= 0, NaN or infinite disagrees).
 struct PdfAgreement {
-    std::size_t with_density = 0, disagree = 0;
-    double worst = 0.0;
+    std::size_t samples = 0, discarded = 0, not_finite = 0, not_positive = 0, ill_conditioned = 0;
+    std::size_t with_density = 0;  // judged by their ratio
+    std::size_t disagree = 0;      // of those, off by more than 1e-3 (or recomputed without a density)
+    std::size_t above = 0, below = 0;  // ratio > 1 + 1e-3, < 1 - 1e-3
+    std::size_t not_unit_m = 0;        // samples whose m is off unit length by more than 1e-5 (relative)
+    double median = 0, low = 0, high = 0;  // the ratio's median, 0.1 and 99.9 percentiles
+    double worst = 0.0;                    // the largest |log ratio| as a relative difference, for the bench
+    // Samples that fail: not finite, not positive, disagreeing.
+    std::size_t failures() const { return not_finite + not_positive + disagree; }
 };
 
 // Where the samples and their recomputed pdf come from: a Sampler or a VulkanSampler.
 struct PdfDevice {
     std::function<ggxcl::SampleSet(const ggxcl::SampleParams&, const ggxcl::SampleRange&, ggxcl::FieldSet)> generate;
     ggxbridge::DirectionPdf pdf;
+    std::function<ggxcl::FurnaceSums(const ggxcl::SampleParams&, const ggxcl::SampleRange&)> furnace;
 };
 
 template <class Api>
@@ -48,7 +58,8 @@ PdfDevice pdf_device(Api& sampler)
     return {[&sampler](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, ggxcl::FieldSet f) {
                 return sampler.generate(p, r, f);
             },
-            ggxbridge::direction_pdf(sampler)};
+            ggxbridge::direction_pdf(sampler),
+            [&sampler](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r) { return sampler.furnace(p, r); }};
 }
 
 // The samples of `range` against the pdf recomputed by params' sampler and, with `claimed`, by
@@ -56,9 +67,9 @@ PdfDevice pdf_device(Api& sampler)
 std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
                                          const ggxcl::SampleRange& range, const ggxcl::Method* claimed);
 
-// pdf_o of `count` samples against the pdf recomputed from (i, o) by the sampler and, with
-// `claimed`, by that method: a sample disagrees where the relative difference exceeds 1e-3;
-// the check fails when more than 0.1 % of the samples with a density disagree.
+// pdf_o of the samples of `range` against the pdf recomputed from (i, o) by the sampler and, with
+// `claimed`, by that method: a check fails when a sample's pdf is not finite or not positive
+// where it was kept, when more than 0.1 % of the judged samples disagree, or when none is judged.
 std::vector<HistogramCheck> pdf_checks(const PdfDevice& device, const ggxcl::SampleParams& params,
                                        const ggxcl::SampleRange& range, const ggxcl::Method* claimed);
 

@@ -191,6 +191,10 @@ class Sampler:
         {'counts': (bins_z, bins_phi) uint64, 'expected': float64 from `against`'s pdf (default: the method's),
         'chi_square', 'dof', 'p_value', 'non_finite', 'invalid'}. With `eta` (o only) both lobes over the whole
         sphere; 'invalid' counts the samples without density, tested as one more category. For a UserSampler
-        (o only, no `against`): 'expected' from its own pdf integrated over each bin on the device, with
-        'pdf_integral' (1 for a density) and 'quadrature_error', and 'claimed': the chi-square against the
-        distribution it claims ({'distribution', 'chi_square', 'dof', 'p_value'}) unless it claims its own."""
+        (no `against`, an even `bins_z`): 'invalid' and 'discarded' count its discarded samples (o below the
+        horizon with weight 0), tested as one more category; 'expected' is its own pdf (of m: 4 |i.m| pdf_o)
+        integrated adaptively over each bin on the device where it keeps samples, with 'pdf_integral' over
+        the sphere (1 for a density, or 1 minus the discarded fraction for a pdf of 0 where it discards),
+        'pdf_integral_error' (also 'quadrature_error'), 'pdf_above_horizon', and 'claimed': the chi-square
+        against the distribution it claims ({'distribution', 'chi_square', 'dof', 'p_value',
+        'below_horizon'}) unless it claims its own."""

@@ -127,29 +127,38 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     if (direction != ggxcl::Field::o && direction != ggxcl::Field::m)
         throw ggxcl::InvalidArgument("of", of, "o or m");
     const bool user = r.params.method == ggxcl::Method::user;
-    if (user && (!against.is_none() || direction != ggxcl::Field::o))
-        throw ggxcl::InvalidArgument(against.is_none() ? "of" : "against",
-                                     against.is_none() ? of : std::string(py::str(against)),
-                                     against.is_none() ? "o for a user sampler (its pdf is a density of o)"
-                                                       : "None for a user sampler: its own pdf gives the expectation");
+    if (user && !against.is_none())
+        throw ggxcl::InvalidArgument("against", std::string(py::str(against)),
+                                     "None for a user sampler: its own pdf gives the expectation");
+    if (user && bins_z % 2 != 0)
+        throw ggxcl::InvalidArgument("bins_z", std::to_string(bins_z),
+                                     "an even number for a user sampler, so that the horizon is a bin edge");
     const ggxcl::Method expected_of = against.is_none() ? r.params.method : ggxcl::parse_method(against.cast<std::string>());
     ggxcl::Histogram counts;
-    std::vector<double> probabilities, claimed;
-    double quadrature_error = 0.0;
+    std::vector<double> probabilities;
+    ggxbridge::BinIntegrals own;
+    ggxbridge::ClaimedBins claimed;
     ggxcl::Method claimed_method = ggxcl::Method::heitz;
     const bool claims = user && ggxbridge::claimed_method(r.params.user_sampler->distribution(), claimed_method);
     {
         py::gil_scoped_release released;
         counts = s.histogram(r.params, {seed, first, args.count}, bins_z, bins_phi, direction);
+        const ggxbridge::BinRequest request{bins_z, bins_phi, direction, args.count, &counts.counts};
         if (user)
-            probabilities = ggxbridge::pdf_bin_probabilities(ggxbridge::direction_pdf(s), r.params, bins_z, bins_phi, quadrature_error);
+            own = ggxbridge::integrate_bins(ggxbridge::direction_pdf(s), r.params, request);
         else
             probabilities =
                 ggxbridge::bin_probabilities(expected_of, ggxcl::normalized(r.params), bins_z, bins_phi, direction);
         if (claims)
-            claimed = ggxbridge::claimed_bin_probabilities(r.params, bins_z, bins_phi);
+            claimed = ggxbridge::claimed_bins(
+                r.params, claimed_method, request,
+                direction == ggxcl::Field::o ? ggxbridge::claimed_bin_probabilities(r.params, bins_z, bins_phi)
+                                             : std::vector<double>{});
     }
-    const ggxref::ChiSquare fit = ggxbridge::histogram_fit(counts, probabilities, r.params.eta != 0.0f);
+    if (user)
+        probabilities = own.kept;
+    const ggxref::ChiSquare fit = user ? ggxbridge::user_histogram_fit(counts, own.kept, own.error, false)
+                                       : ggxbridge::histogram_fit(counts, probabilities, r.params.eta != 0.0f);
     py::array_t<std::uint64_t> observed({bins_z, bins_phi});
     py::array_t<double> expected({bins_z, bins_phi});
     std::memcpy(observed.mutable_data(), counts.counts.data(), counts.counts.size() * sizeof(std::uint64_t));
@@ -164,19 +173,20 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     result["non_finite"] = counts.non_finite;
     result["invalid"] = counts.invalid;
     if (user) {
-        double total = 0.0;
-        for (double p : probabilities)
-            total += p;
-        result["pdf_integral"] = total;
-        result["quadrature_error"] = quadrature_error;
+        result["pdf_integral"] = own.whole_total();
+        result["pdf_integral_error"] = own.error_total();
+        result["quadrature_error"] = own.error_total();
+        result["pdf_above_horizon"] = own.kept_total();
+        result["discarded"] = counts.invalid;
     }
     if (claims) {
-        const ggxref::ChiSquare theirs = ggxbridge::histogram_fit(counts, claimed, false);
+        const ggxref::ChiSquare theirs = ggxbridge::user_histogram_fit(counts, claimed.kept, {}, true);
         py::dict against_claim;
         against_claim["distribution"] = std::string(ggxcl::distribution_name(r.params.user_sampler->distribution()));
         against_claim["chi_square"] = theirs.statistic;
         against_claim["dof"] = theirs.dof;
         against_claim["p_value"] = theirs.p_value;
+        against_claim["below_horizon"] = claimed.below;
         result["claimed"] = against_claim;
     }
     return result;

@@ -93,3 +93,20 @@ def test_bad_method_or_dielectric_names_the_argument(sampler, kwargs, parameter)
     with pytest.raises(ggxcl.InvalidArgument) as error:
         sampler.sample(args.pop("method"), args.pop("n"), **args)
     assert error.value.parameter == parameter
+
+
+def test_histogram_of_a_user_sampler_counts_discarded_samples_apart_and_bins_m(sampler):
+    n = 200000
+    kept = sampler.histogram(user("harness/bounded_discards.h"), n, alpha=0.5, theta=70)
+    assert kept["discarded"] == kept["invalid"] > 0
+    assert kept["p_value"] > 1e-3
+    # A pdf of 0 where it discards integrates to what it keeps.
+    assert abs(kept["pdf_integral"] - (1.0 - kept["discarded"] / n)) < 4e-3
+    assert kept["pdf_integral_error"] < 1e-4
+    m = sampler.histogram(user("caps_copy.h"), n, alpha=0.3, theta=45, of="m")
+    assert m["p_value"] > 1e-3
+    assert m["claimed"]["p_value"] > 1e-3
+    assert abs(m["pdf_integral"] - 1.0) < 1e-3
+    with pytest.raises(ggxcl.InvalidArgument) as error:
+        sampler.histogram(user("caps_copy.h"), 1000, bins_z=31)
+    assert error.value.parameter == "bins_z"

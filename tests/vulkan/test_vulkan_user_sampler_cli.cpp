@@ -42,11 +42,12 @@ std::string example_file(const std::string& name)
 using ggxtest::ggx;
 
 // `ggx histogram` of `sampler_args` at alpha 0.5 x 0.2 under --check 1e-3: its exit status and verdicts.
-std::pair<int, std::map<std::string, ggxtest::HistogramVerdict>> histogram(const std::string& sampler_args)
+std::pair<int, std::map<std::string, ggxtest::HistogramVerdict>> histogram(const std::string& sampler_args,
+                                                                           const std::string& config = "--alpha 0.5,0.2")
 {
     const fs::path prefix = scratch() / "histogram";
     const ggxtest::Run run =
-        ggx("histogram " + sampler_args + " --alpha 0.5,0.2 -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
+        ggx("histogram " + sampler_args + " " + config + " -n 4e5 --check 1e-3 --no-png --out " + prefix.string());
     INFO(run.err);
     return {run.status, ggxtest::histogram_verdicts(prefix)};
 }
@@ -70,11 +71,12 @@ TEST_CASE("ggx sample --sampler FILE.glsl: the Vulkan caps' samples, on Vulkan w
 TEST_CASE("ggx histogram --sampler: shader samplers pass every check; the controls, read as HLSL, fail theirs")
 {
     const ggxtest::ScratchFolder case_folder("vk-user-cli");
-    for (const std::string file : {"shaders/caps_copy.glsl", "shaders/heitz_normal_only.hlsl"}) {
+    for (const std::string file :
+         {"shaders/caps_copy.glsl", "shaders/heitz_normal_only.hlsl", "shaders/direction_adapter.glsl"}) {
         CAPTURE(file);
         const auto [status, got] = histogram("--sampler " + user_sampler_file(file));
         CHECK(status == 0);
-        CHECK(got.size() == 5);
+        CHECK(got.size() == ggxtest::all_user_checks("vndf").size());
         for (const auto& [name, verdict] : got) {
             CAPTURE(name);
             CHECK(verdict.passed);
@@ -83,7 +85,7 @@ TEST_CASE("ggx histogram --sampler: shader samplers pass every check; the contro
     for (const ggxtest::HistogramControl& control : ggxtest::histogram_controls()) {
         CAPTURE(control.file);
         const auto [status, got] =
-            histogram("--api vulkan --shader-language hlsl --sampler " + user_sampler_file(control.file));
+            histogram("--api vulkan --shader-language hlsl --sampler " + user_sampler_file(control.file), control.args);
         CHECK(status == 1);
         for (const std::string& name : control.failing)
             CHECK_MESSAGE(!got.at(name).passed, name);
@@ -92,13 +94,31 @@ TEST_CASE("ggx histogram --sampler: shader samplers pass every check; the contro
     }
 }
 
+TEST_CASE("the library's methods and right engine conventions, read as GLSL, pass every check on Vulkan")
+{
+    const ggxtest::ScratchFolder case_folder("vk-user-cli");
+    for (const ggxtest::HistogramControl& row : ggxtest::harness_exact(true)) {
+        CAPTURE(row.file);
+        CAPTURE(row.args);
+        const auto [status, got] =
+            histogram("--api vulkan --shader-language glsl --sampler " + user_sampler_file(row.file), row.args);
+        CHECK(status == 0);
+        for (const std::string& name : row.passing)
+            CHECK_MESSAGE((got.count(name) == 1 && got.at(name).passed), name);
+    }
+}
+
 TEST_CASE("examples/user_sampler/engine_hlsl: the engine's port passes; the same port without G1 in its pdf fails")
 {
     const ggxtest::ScratchFolder case_folder("vk-user-cli");
-    const auto [good_status, good] = histogram("--sampler " + example_file("engine_vndf_check.hlsl"));
-    CHECK(good_status == 0);
-    for (const auto& [name, verdict] : good)
-        CHECK_MESSAGE(verdict.passed, name);
+    for (const char* adapter : {"engine_vndf_check.hlsl", "engine_direction_check.hlsl"}) {
+        CAPTURE(adapter);
+        const auto [good_status, good] = histogram("--sampler " + example_file(adapter));
+        CHECK(good_status == 0);
+        CHECK(good.size() == ggxtest::all_user_checks("vndf").size());
+        for (const auto& [name, verdict] : good)
+            CHECK_MESSAGE(verdict.passed, name);
+    }
     const auto [bad_status, bad] = histogram("--sampler " + example_file("engine_vndf_pdf_without_g1.hlsl"));
     CHECK(bad_status == 1);
     CHECK(bad.at("its own pdf").passed);  // a constant factor: the chi-square cannot see it

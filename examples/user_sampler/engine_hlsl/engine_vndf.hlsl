@@ -53,3 +53,14 @@ float EngineReflectionPdf(float3 V, float3 L, float2 alpha)
         return 0.0f;
     return EngineSmithG1(V, alpha) * EngineGgxD(m, alpha) / (4.0f * V.z);
 }
+
+// The reflected direction L for the view V, as engines return it: a visible
+// normal, V reflected about it (HLSL's reflect(-V, m) = 2 (V.m) m - V), and
+// its density in `pdf`.
+float3 EngineSampleReflection(float3 V, float2 alpha, float2 u, out float pdf)
+{
+    float3 m = EngineSampleVisibleNormal(V, alpha, u);
+    float3 L = reflect(-V, m);
+    pdf = EngineReflectionPdf(V, L, alpha);
+    return L;
+}

@@ -1,0 +1,82 @@
+// pdf_rings.cpp - rings of equal mass in theta under a device pdf.
+#include "pdf_rings.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ggxbridge {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr int fine_rings = 1024, fine_phi = 8, ring_phi = 16;
+
+// Each ring's sum over the phi bins of one BinIntegrals vector.
+std::vector<double> per_ring(const std::vector<double>& bins, int phi_bins)
+{
+    std::vector<double> out(bins.size() / std::size_t(phi_bins), 0.0);
+    for (std::size_t b = 0; b < bins.size(); ++b)
+        out[b / std::size_t(phi_bins)] += bins[b];
+    return out;
+}
+
+// The edges where the cumulative mass over `fine` (rings between fine_edges, ascending) crosses
+// k / rings of its total, linear within a fine ring.
+std::vector<double> equal_mass_edges(const std::vector<double>& fine_edges, const std::vector<double>& fine,
+                                     int rings)
+{
+    double total = 0.0;
+    for (double m : fine)
+        total += std::max(m, 0.0);
+    if (!(total > 0.0) || !std::isfinite(total))
+        return {};
+    std::vector<double> edges = {fine_edges.front()};
+    double below = 0.0;
+    int next = 1;
+    for (std::size_t k = 0; k < fine.size() && next < rings; ++k) {
+        const double m = std::max(fine[k], 0.0);
+        while (next < rings && below + m >= total * next / rings) {
+            const double t = m > 0.0 ? (total * next / rings - below) / m : 0.0;
+            const double z = fine_edges[k] + t * (fine_edges[k + 1] - fine_edges[k]);
+            if (z > edges.back())
+                edges.push_back(z);
+            ++next;
+        }
+        below += m;
+    }
+    edges.push_back(fine_edges.back());
+    return edges;
+}
+
+} // namespace
+
+PdfRings equal_mass_rings(const DirectionPdf& pdf, const ggxcl::SampleParams& params, ggxcl::Field direction,
+                          int rings, std::uint64_t samples)
+{
+    BinRequest marginal{fine_rings, fine_phi, direction, samples, nullptr};
+    for (int k = 0; k <= fine_rings; ++k)  // equal steps in theta from the horizon to the pole
+        marginal.z_edges.push_back(std::cos(0.5 * pi * (1.0 - double(k) / fine_rings)));
+    marginal.z_edges.front() = 0.0;
+    marginal.refinement_budget = 0;
+    const std::vector<double> fine = per_ring(integrate_bins(pdf, params, marginal).kept, fine_phi);
+    PdfRings out;
+    out.edges = equal_mass_edges(marginal.z_edges, fine, rings);
+    if (out.edges.size() < 3)
+        return {};
+    BinRequest exact{int(out.edges.size()) - 1, ring_phi, direction, samples, nullptr};
+    exact.z_edges = out.edges;
+    const BinIntegrals integrals = integrate_bins(pdf, params, exact);
+    out.mass = per_ring(integrals.kept, ring_phi);
+    out.error = per_ring(integrals.error, ring_phi);
+    return out;
+}
+
+int ring_of(const std::vector<double>& edges, double z)
+{
+    if (edges.size() < 2 || !(z >= edges.front()) || z > edges.back())
+        return -1;
+    const auto above = std::upper_bound(edges.begin(), edges.end(), z);
+    return int(std::min<std::ptrdiff_t>(above - edges.begin() - 1, std::ptrdiff_t(edges.size()) - 2));
+}
+
+} // namespace ggxbridge

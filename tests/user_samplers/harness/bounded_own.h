@@ -1,0 +1,15 @@
+// bounded_own.h - bounded as a user sampler declaring a density of its own:
+// must pass every check (no claimed distribution to test against).
+#include "ggx_samplers.h"
+
+#define GGX_USER_DISTRIBUTION GGX_USER_OWN
+
+GGX_INLINE ggx_sample ggx_user_sample(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    return ggx_sample_bounded(i, ax, ay, u1, u2);
+}
+
+GGX_INLINE float ggx_user_pdf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_pdf_bounded(i, o, ax, ay);
+}

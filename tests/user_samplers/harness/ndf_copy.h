@@ -1,0 +1,15 @@
+// ndf_copy.h - ndf as a user sampler (claims the NDF): must pass every check,
+// its pdf from (i, o) too, where the half vector is well conditioned.
+#include "ggx_samplers.h"
+
+#define GGX_USER_DISTRIBUTION GGX_USER_NDF
+
+GGX_INLINE ggx_sample ggx_user_sample(ggx_vec3 i, float ax, float ay, float u1, float u2)
+{
+    return ggx_sample_ndf(i, ax, ay, u1, u2);
+}
+
+GGX_INLINE float ggx_user_pdf(ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+{
+    return ggx_pdf_ndf(i, o, ax, ay);
+}

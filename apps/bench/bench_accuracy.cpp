@@ -129,8 +129,8 @@ double pdf_disagreement(Api& sampler, const ggxcl::SampleParams& who)
     double disagree = 0.0, with_density = 0.0;
     for (const ggxcl::SampleParams& p : accuracy_configs(who, who.precision))
         for (const PdfAgreement& a : pdf_agreements(pdf_device(sampler), p, {accuracy_seed, 0, accuracy_samples}, nullptr)) {
-            disagree += double(a.disagree);
-            with_density += double(a.with_density);
+            disagree += double(a.failures());  // a pdf not finite or not positive on a kept sample counts
+            with_density += double(a.with_density + a.not_finite + a.not_positive);
         }
     return with_density > 0.0 ? disagree / with_density : 1.0;
 }

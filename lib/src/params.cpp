@@ -50,6 +50,40 @@ void check_direction(const char* name, const Vec3& v)
         throw InvalidArgument(name, text(v), "a finite vector of non-zero length");
 }
 
+// A sampler of visible normals (or of a density of its own built on them, bounded) has nothing to
+// sample from a view opposite the normal: no microfacet (m.z > 0) is visible from there.  The rule
+// is the samplers' domain (kernels/ggx_guards.h): iz + t(i), twice the visible area, above 1e-20,
+// computed here in double without cancellation.  ndf, and a user sampler claiming the NDF, keep
+// that view.
+void check_view_visible(const SampleParams& params)
+{
+    const Distribution normals = params.method == Method::user && params.user_sampler
+                                     ? params.user_sampler->distribution()
+                                     : method_traits(params.method).normals;
+    if (normals == Distribution::ndf)
+        return;
+    const bool about_normal = params.world_space || params.method == Method::caps_iso;
+    const Vec3 v = params.view, n = about_normal ? params.normal : Vec3{0.0f, 0.0f, 1.0f};
+    const double lv = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+    const double ln = std::sqrt(double(n.x) * n.x + double(n.y) * n.y + double(n.z) * n.z);
+    const double iz = (double(v.x) * n.x + double(v.y) * n.y + double(v.z) * n.z) / (lv * ln);
+    double slopes;  // ax^2 ix^2 + ay^2 iy^2 in the normal's frame
+    if (about_normal) {
+        const double c[3] = {double(v.y) * n.z - double(v.z) * n.y, double(v.z) * n.x - double(v.x) * n.z,
+                             double(v.x) * n.y - double(v.y) * n.x};
+        slopes = double(params.alpha_x) * params.alpha_x * (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / (lv * lv * ln * ln);
+    } else {
+        const double ix = v.x / lv, iy = v.y / lv;
+        slopes = double(params.alpha_x) * params.alpha_x * ix * ix + double(params.alpha_y) * params.alpha_y * iy * iy;
+    }
+    const double t = std::sqrt(slopes + iz * iz);
+    const double twice_area = iz >= 0.0 ? iz + t : slopes / (t - iz);
+    if (!(twice_area > 1e-20))
+        throw InvalidArgument("view", text(v),
+                              "a view from which some microfacet is visible, not opposite the normal (theta < 180 "
+                              "degrees): " + sampler_name(params) + " samples visible normals (ndf takes this view)");
+}
+
 void check_isotropic(const SampleParams& params, float alpha_x, float alpha_y)
 {
     if (alpha_x == alpha_y)
@@ -250,6 +284,7 @@ void validate(const SampleParams& params)
     check_direction("normal", params.normal);
     check_user_sampler(params);
     check_eta(params);
+    check_view_visible(params);
 }
 
 SampleParams normalized(const SampleParams& params)

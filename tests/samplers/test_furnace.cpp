@@ -2,13 +2,14 @@
 // its sums are those of the weights the bulk kernel stores for the same
 // samples (any count, also not a multiple of the work-group size), its
 // mean is the reference albedo within 4 standard errors for every method in
-// every precision mode, and out of the domain (a view exactly opposite the
-// normal) the guarded rerun sums the fallback weights, 0.  Negative control: a range shifted by one sample
-// does not give the same sums.
+// every precision mode; a view opposite the normal is refused for the
+// samplers of visible normals, and ndf reflects nothing there (sums 0).
+// Negative control: a range shifted by one sample does not give the same sums.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
+#include "bit_compare.hpp"
 #include "device_fixture.hpp"
 
 namespace {
@@ -73,15 +74,26 @@ TEST_CASE("fused mean is the reference albedo in every precision mode")
             }
 }
 
-TEST_CASE("a view exactly opposite the normal sees nothing: the fallback weights sum to 0, not NaN")
+TEST_CASE("a view opposite the normal: refused for visible normals, nothing reflected for ndf (sums 0, not NaN)")
 {
-    for (Method method : {Method::heitz, Method::caps, Method::bounded}) {
+    for (Method method : {Method::heitz, Method::caps, Method::bounded, Method::ndf}) {
         ggxcl::SampleParams p = ggxtest::to_library(method, ggxtest::make_params(0.3, 0.3, 0.0), ggxcl::Precision::precise);
-        p.view = {0.0f, 0.0f, -1.0f};
-        ggxcl::FurnaceSums fused = ggxtest::sampler().furnace(p, {5, 0, 5000});
         CAPTURE(ggxref::method_name(method));
-        CHECK(fused.sum == 0.0);
-        CHECK(fused.sum_of_squares == 0.0);
+        for (const ggxcl::Vec3 view : {ggxcl::Vec3{0.0f, 0.0f, -1.0f}, ggxcl::view_from_angles(180.0, 0.0)}) {
+            p.view = view;
+            if (method != Method::ndf) {
+                const std::string message = ggxtest::message_of<ggxcl::InvalidArgument>(
+                    [&] { ggxtest::sampler().furnace(p, {5, 0, 5000}); });
+                CHECK(message.find("invalid view") != std::string::npos);
+                CHECK(message.find("not opposite the normal") != std::string::npos);
+                continue;
+            }
+            ggxcl::FurnaceSums fused = ggxtest::sampler().furnace(p, {5, 0, 5000});
+            CHECK(fused.sum == 0.0);
+            CHECK(fused.sum_of_squares == 0.0);
+        }
+        p.view = ggxcl::view_from_angles(179.99, 0.0);  // still sees some microfacets
+        CHECK_NOTHROW(ggxtest::sampler().furnace(p, {5, 0, 5000}));
     }
 }
 

@@ -183,14 +183,24 @@ TEST_CASE("the unguarded variant: the same bits inside the domain, no fallback o
 {
     auto& s = ggxtest::sampler();
     // m (3 planes) then pdf_m of each sample.
+    // The view of every sample, as per-sample inputs (3 planes): the library refuses a uniform view
+    // opposite the normal for caps (nothing is visible from there), the kernels meet it per sample.
     auto samples = [&](ggxcl::Vec3 view, bool guarded) {
-        ggxcl::SampleParams p{ggxcl::Method::caps, 0.4f, 0.4f, view};
+        ggxcl::SampleParams p{ggxcl::Method::caps, 0.4f, 0.4f, ggxcl::view_from_angles(50, 0)};
         p.guards = guarded;
         ggxcl::DeviceOutputs out;
         out.m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, 3 * count * sizeof(float));
         out.pdf_m = cl::Buffer(s.context(), CL_MEM_READ_WRITE, count * sizeof(float));
+        std::vector<float> planes(3 * count);
+        for (std::size_t j = 0; j < count; ++j) {
+            planes[j] = view.x;
+            planes[count + j] = view.y;
+            planes[2 * count + j] = view.z;
+        }
+        ggxcl::DeviceInputs inputs;
+        inputs.view = cl::Buffer(s.context(), planes.begin(), planes.end(), true);
         const ggxcl::SampleRange range{seed, 0, count};
-        s.enqueue(s.queue(), p, range, out).wait();
+        s.enqueue(s.queue(), p, range, out, 0, inputs).wait();
         std::vector<float> values(4 * count);
         s.queue().enqueueReadBuffer(out.m, CL_TRUE, 0, 3 * count * sizeof(float), values.data());
         s.queue().enqueueReadBuffer(out.pdf_m, CL_TRUE, 0, count * sizeof(float), values.data() + 3 * count);

@@ -222,3 +222,22 @@ TEST_CASE("Method::user and user_sampler come together, on a conductor in tangen
     world.alpha_y = world.alpha_x;
     CHECK(refused_naming(world, "world_space"));
 }
+
+TEST_CASE("a view opposite the normal is refused for a user sampler claiming visible normals or its own density, "
+          "kept for one claiming the NDF")
+{
+    ggxcl::Sampler& sampler = ggxtest::sampler();
+    for (const char* file : {"caps_copy.h", "harness/bounded_own.h", "harness/ndf_copy.h"}) {
+        CAPTURE(file);
+        ggxcl::SampleParams p = user_params(file);
+        p.view = ggxcl::view_from_angles(180.0, 0.0);
+        if (p.user_sampler->distribution() == ggxcl::Distribution::ndf) {
+            CHECK(sampler.generate(p, {1, 0, 100}, {ggxcl::Field::o}).count == 100);
+            continue;
+        }
+        const std::string message =
+            ggxtest::message_of<ggxcl::InvalidArgument>([&] { sampler.generate(p, {1, 0, 100}, {ggxcl::Field::o}); });
+        CHECK(message.find("invalid view") != std::string::npos);
+        CHECK(message.find(p.user_sampler->name()) != std::string::npos);
+    }
+}

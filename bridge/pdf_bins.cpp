@@ -205,6 +205,22 @@ std::vector<std::size_t> leaves_to_refine(const std::vector<Region>& leaves, con
     return out;
 }
 
+// Each bin's integral by one rule over it (no refinement, no error estimate).
+BinIntegrals one_pass(RuleEvaluator& rule, const std::vector<Region>& bins, std::size_t count)
+{
+    std::vector<std::array<double, 4>> rects;
+    for (const Region& r : bins)
+        rects.push_back({r.z0, r.z1, r.p0, r.p1});
+    const std::vector<Estimate> e = rule.run(rects);
+    BinIntegrals out{std::vector<double>(count, 0.0), std::vector<double>(count, 0.0), std::vector<double>(count, 0.0),
+                     rule.evaluations(), 0};
+    for (std::size_t k = 0; k < bins.size(); ++k) {
+        out.kept[std::size_t(bins[k].bin)] += e[k].kept;
+        out.whole[std::size_t(bins[k].bin)] += e[k].whole;
+    }
+    return out;
+}
+
 // The bins' edges in cos theta: the request's own, or bins_z equal steps over [-1, 1].
 std::vector<double> z_edges_of(const BinRequest& request)
 {
@@ -256,6 +272,9 @@ BinIntegrals integrate_bins(const DirectionPdf& pdf, const ggxcl::SampleParams& 
                               zb * request.bins_phi + pb, 0, {}, {}});
             bin_area.push_back(leaves.back().area());
         }
+    if (request.refinement_budget == 0) {  // one rule per bin, no error estimate
+        return one_pass(rule, leaves, bin_area.size());
+    }
     estimate(rule, leaves, true);
     const std::size_t initial = rule.evaluations();
     int deepest = 0;

@@ -39,7 +39,8 @@ struct BinRequest {
     // Edges in cos theta, ascending, when the bins are not bins_z equal steps over [-1, 1] (rings
     // of equal mass: pdf_rings.hpp); bins_z is then their count.
     std::vector<double> z_edges = {};
-    std::size_t refinement_budget = 12u << 20;  // pdf evaluations beyond the first pass, all rounds
+    // pdf evaluations beyond the first pass, all rounds; 0: one rule per bin, no error estimate.
+    std::size_t refinement_budget = 12u << 20;
 };
 
 // Each bin's probability under a pdf of o, integrated adaptively: each region gets the 8x8-point

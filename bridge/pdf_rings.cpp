@@ -9,7 +9,8 @@ namespace ggxbridge {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-constexpr int fine_rings = 1024, fine_phi = 8, ring_phi = 16;
+constexpr int fine_rings = 512, fine_phi = 4, ring_phi = 16;
+constexpr std::size_t ring_budget = 2u << 20;  // pdf evaluations refining the rings
 
 // Each ring's sum over the phi bins of one BinIntegrals vector.
 std::vector<double> per_ring(const std::vector<double>& bins, int phi_bins)
@@ -65,6 +66,7 @@ PdfRings equal_mass_rings(const DirectionPdf& pdf, const ggxcl::SampleParams& pa
         return {};
     BinRequest exact{int(out.edges.size()) - 1, ring_phi, direction, samples, nullptr};
     exact.z_edges = out.edges;
+    exact.refinement_budget = ring_budget;
     const BinIntegrals integrals = integrate_bins(pdf, params, exact);
     out.mass = per_ring(integrals.kept, ring_phi);
     out.error = per_ring(integrals.error, ring_phi);

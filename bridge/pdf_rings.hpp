@@ -1,8 +1,8 @@
 // pdf_rings.hpp - rings of equal mass in the polar angle under a sampler's
 // pdf, to test a narrow lobe in theta where the histogram's bins of equal
 // solid angle put most of it in one ring (at alpha 0.05 and V = N, 93 % of
-// the lobe falls in the top one of 32): the pdf's marginal over 1024 rings
-// of equal width in theta, edges where its cumulative mass crosses k / R,
+// the lobe falls in the top one of 32): the pdf's marginal over 512 rings
+// of equal width in theta (one rule each), edges where its cumulative mass crosses k / R,
 // and those R rings integrated again adaptively.  Rings cover the upper
 // hemisphere (o above the horizon, or m.z > 0), where samples are kept.
 #pragma once

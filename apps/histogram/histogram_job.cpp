@@ -66,16 +66,21 @@ nlohmann::json summary(const HistogramDevice& device, const HistogramJob& job, c
 // The user sampler's checks, in report order: the chi-square against its own pdf (`own_fit`, of
 // `own`, its integrals over the bins) and in rings of theta, the integral, the reach, the chi-square against the
 // distribution it claims (`claimed_whole`: that distribution's bins over the whole sphere; none for
-// a density of its own), the mean weight, and its pdfs from (i, o).
+// a density of its own), the mean weight, and its pdfs from (i, o), on one draw of up to 2^20
+// samples.
 std::vector<HistogramCheck> user_sampler_checks(const PdfDevice& device, const HistogramJob& job,
                                                 const ggxcl::Histogram& counts, const ggxref::ChiSquare& own_fit,
                                                 const ggxbridge::BinIntegrals& own,
                                                 const ggxbridge::BinRequest& request,
                                                 const std::vector<double>& claimed_whole)
 {
+    // The samples judged one by one: the first 2^20 of the range (the pdf checks take 65 536).
+    const std::uint64_t drawn_count = std::min<std::uint64_t>(job.range.count, 1u << 20);
+    const ggxcl::SampleSet drawn = device.generate(job.params, {job.range.seed, job.range.first, drawn_count},
+                                                   judged_fields());
     std::vector<HistogramCheck> checks = {
         chi_square_check("its own pdf", own_fit, job.level, samples_where_zero(counts, own.kept)),
-        theta_check(device, job.params, job.range, job.direction, job.level), integral_check(own, counts),
+        theta_check(device.pdf, job.params, drawn, job.direction, job.level), integral_check(own, counts),
         reach_check(own, counts)};
     ggxcl::Method method = ggxcl::Method::heitz;
     const ggxcl::Distribution claim = job.params.user_sampler->distribution();
@@ -90,9 +95,9 @@ std::vector<HistogramCheck> user_sampler_checks(const PdfDevice& device, const H
                          " of the samples, the claimed mass below the horizon " + readable_number(theirs.below);
         checks.push_back(check);
     }
-    checks.push_back(weight_check(device.furnace(job.params, job.range), job.params));
-    const ggxcl::SampleRange some{job.range.seed, job.range.first, std::min<std::uint64_t>(job.range.count, 1 << 16)};
-    for (HistogramCheck& check : pdf_checks(device, job.params, some, claims ? &method : nullptr))
+    checks.push_back(weight_check(drawn, job.params));
+    const std::size_t judged = std::min<std::size_t>(drawn.count, 1 << 16);
+    for (HistogramCheck& check : pdf_checks(device, job.params, drawn, judged, claims ? &method : nullptr))
         checks.push_back(check);
     return checks;
 }

@@ -14,7 +14,6 @@ namespace ggxapp {
 namespace {
 
 constexpr int ring_count = 64;
-constexpr std::uint64_t most_samples = 1u << 20;
 constexpr double degrees_per_radian = 57.29577951308232;
 
 // The kept samples in the rings, one more cell for those outside them (below the horizon with a
@@ -42,11 +41,11 @@ ggxcl::Histogram ring_counts(const ggxcl::SampleSet& samples, ggxcl::Field direc
 
 } // namespace
 
-HistogramCheck theta_check(const PdfDevice& device, const ggxcl::SampleParams& params, const ggxcl::SampleRange& range,
-                           ggxcl::Field direction, double level)
+HistogramCheck theta_check(const ggxbridge::DirectionPdf& pdf, const ggxcl::SampleParams& params,
+                           const ggxcl::SampleSet& samples, ggxcl::Field direction, double level)
 {
-    const std::uint64_t n = std::min(range.count, most_samples);
-    const ggxbridge::PdfRings rings = ggxbridge::equal_mass_rings(device.pdf, params, direction, ring_count, n);
+    const std::uint64_t n = samples.count;
+    const ggxbridge::PdfRings rings = ggxbridge::equal_mass_rings(pdf, params, direction, ring_count, n);
     const std::string name = "its own pdf, in theta";
     if (rings.edges.empty()) {
         HistogramCheck check;
@@ -56,11 +55,7 @@ HistogramCheck theta_check(const PdfDevice& device, const ggxcl::SampleParams& p
         check.numbers = {{"reason", "the pdf has no finite positive mass above the horizon"}};
         return check;
     }
-    ggxcl::FieldSet fields = {ggxcl::Field::o, ggxcl::Field::weight};
-    if (direction == ggxcl::Field::m)
-        fields = {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::weight};
-    const ggxcl::Histogram counts =
-        ring_counts(device.generate(params, {range.seed, range.first, n}, fields), direction, rings.edges);
+    const ggxcl::Histogram counts = ring_counts(samples, direction, rings.edges);
     std::vector<double> mass = rings.mass, error = rings.error;
     mass.push_back(0.0);
     error.push_back(0.0);

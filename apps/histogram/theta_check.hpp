@@ -10,9 +10,9 @@
 
 namespace ggxapp {
 
-// The first 2^20 samples of `range` (o, or m), discarded ones left out, against the rings; a
+// `samples` (judged_fields; o, or m, binned), discarded ones left out, against the rings; a
 // chi-square check named "its own pdf, in theta".
-HistogramCheck theta_check(const PdfDevice& device, const ggxcl::SampleParams& params, const ggxcl::SampleRange& range,
-                           ggxcl::Field direction, double level);
+HistogramCheck theta_check(const ggxbridge::DirectionPdf& pdf, const ggxcl::SampleParams& params,
+                           const ggxcl::SampleSet& samples, ggxcl::Field direction, double level);
 
 } // namespace ggxapp

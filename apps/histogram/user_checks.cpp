@@ -30,13 +30,13 @@ double half_vector_cosine(const ggxcl::Vec3& i, const ggxcl::Vec3& o)
     return len > 0.0 ? std::fabs(h[0] * i.x + h[1] * i.y + h[2] * i.z) / len : 0.0;
 }
 
-PdfAgreement pdf_agreement(const ggxcl::SampleSet& samples, const ggxcl::Vec3& view,
+PdfAgreement pdf_agreement(const ggxcl::SampleSet& samples, std::size_t count, const ggxcl::Vec3& view,
                            const std::vector<float>& recomputed)
 {
     PdfAgreement a;
-    a.samples = samples.count;
+    a.samples = count;
     std::vector<double> ratios;
-    for (std::size_t j = 0; j < samples.count; ++j) {
+    for (std::size_t j = 0; j < count; ++j) {
         const ggxcl::Vec3 o = samples.o_at(j), m = samples.m_at(j);
         const double m2 = double(m.x) * m.x + double(m.y) * m.y + double(m.z) * m.z;
         a.not_unit_m += !(std::fabs(m2 - 1.0) <= 2e-5);
@@ -132,28 +132,35 @@ HistogramCheck agreement_check(const std::string& name, const PdfAgreement& a, c
 } // namespace
 
 std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
-                                         const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
+                                         const ggxcl::SampleSet& samples, std::size_t count,
+                                         const ggxcl::Method* claimed)
 {
-    const ggxcl::SampleSet samples = device.generate(
-        params, range, {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_o, ggxcl::Field::weight});
-    std::vector<ggxcl::Vec3> directions(range.count);
-    for (std::size_t j = 0; j < directions.size(); ++j)
+    std::vector<ggxcl::Vec3> directions(count);
+    for (std::size_t j = 0; j < count; ++j)
         directions[j] = samples.o_at(j);
     const ggxcl::Vec3 view = ggxcl::normalized(params).view;
-    std::vector<PdfAgreement> out = {pdf_agreement(samples, view, device.pdf(params, directions))};
+    std::vector<PdfAgreement> out = {pdf_agreement(samples, count, view, device.pdf(params, directions))};
     if (claimed) {
         ggxcl::SampleParams theirs = params;
         theirs.method = *claimed;
         theirs.user_sampler = nullptr;
-        out.push_back(pdf_agreement(samples, view, device.pdf(theirs, directions)));
+        out.push_back(pdf_agreement(samples, count, view, device.pdf(theirs, directions)));
     }
     return out;
 }
 
-std::vector<HistogramCheck> pdf_checks(const PdfDevice& device, const ggxcl::SampleParams& params,
-                                       const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
+std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
+                                         const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
 {
-    const std::vector<PdfAgreement> agreements = pdf_agreements(device, params, range, claimed);
+    const ggxcl::SampleSet samples = device.generate(params, range, judged_fields());
+    return pdf_agreements(device, params, samples, samples.count, claimed);
+}
+
+std::vector<HistogramCheck> pdf_checks(const PdfDevice& device, const ggxcl::SampleParams& params,
+                                       const ggxcl::SampleSet& samples, std::size_t count,
+                                       const ggxcl::Method* claimed)
+{
+    const std::vector<PdfAgreement> agreements = pdf_agreements(device, params, samples, count, claimed);
     std::vector<HistogramCheck> checks = {agreement_check("pdf from (i, o)", agreements[0], params)};
     if (claimed) {
         const std::string claim(ggxcl::distribution_name(ggxcl::method_traits(*claimed).normals));

@@ -49,7 +49,6 @@ struct PdfAgreement {
 struct PdfDevice {
     std::function<ggxcl::SampleSet(const ggxcl::SampleParams&, const ggxcl::SampleRange&, ggxcl::FieldSet)> generate;
     ggxbridge::DirectionPdf pdf;
-    std::function<ggxcl::FurnaceSums(const ggxcl::SampleParams&, const ggxcl::SampleRange&)> furnace;
 };
 
 template <class Api>
@@ -58,19 +57,30 @@ PdfDevice pdf_device(Api& sampler)
     return {[&sampler](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, ggxcl::FieldSet f) {
                 return sampler.generate(p, r, f);
             },
-            ggxbridge::direction_pdf(sampler),
-            [&sampler](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r) { return sampler.furnace(p, r); }};
+            ggxbridge::direction_pdf(sampler)};
 }
 
-// The samples of `range` against the pdf recomputed by params' sampler and, with `claimed`, by
-// that method's (in that order).
+// The fields the checks read of each sample: one program draws them for all.
+inline ggxcl::FieldSet judged_fields()
+{
+    return {ggxcl::Field::m, ggxcl::Field::o, ggxcl::Field::pdf_o, ggxcl::Field::weight};
+}
+
+// The first `count` of `samples` (judged_fields) against the pdf recomputed by params' sampler
+// and, with `claimed`, by that method's (in that order).
+std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
+                                         const ggxcl::SampleSet& samples, std::size_t count,
+                                         const ggxcl::Method* claimed);
+// The same for the samples of `range`, drawn here.
 std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
                                          const ggxcl::SampleRange& range, const ggxcl::Method* claimed);
 
-// pdf_o of the samples of `range` against the pdf recomputed from (i, o) by the sampler and, with
-// `claimed`, by that method: a check fails when a sample's pdf is not finite or not positive
-// where it was kept, when more than 0.1 % of the judged samples disagree, or when none is judged.
+// pdf_o of the first `count` of `samples` against the pdf recomputed from (i, o) by the sampler
+// and, with `claimed`, by that method: a check fails when a sample's pdf is not finite or not
+// positive where it was kept, when more than 0.1 % of the judged samples disagree, or when none
+// is judged.
 std::vector<HistogramCheck> pdf_checks(const PdfDevice& device, const ggxcl::SampleParams& params,
-                                       const ggxcl::SampleRange& range, const ggxcl::Method* claimed);
+                                       const ggxcl::SampleSet& samples, std::size_t count,
+                                       const ggxcl::Method* claimed);
 
 } // namespace ggxapp

@@ -148,8 +148,14 @@ HistogramCheck reach_check(const ggxbridge::BinIntegrals& own, const ggxcl::Hist
     return check;
 }
 
-HistogramCheck weight_check(const ggxcl::FurnaceSums& sums, const ggxcl::SampleParams& params)
+HistogramCheck weight_check(const ggxcl::SampleSet& samples, const ggxcl::SampleParams& params)
 {
+    ggxcl::FurnaceSums sums;
+    sums.count = samples.count;
+    for (float w : samples.weight) {
+        sums.sum += double(w);
+        sums.sum_of_squares += double(w) * double(w);
+    }
     const ggxref::Params ref = ggxbridge::reference_params(ggxcl::normalized(params));
     const double albedo = ref.i.z > 0.0 ? ggxref::reflected_radiance(ref, ggxref::Light{}) : 0.0;
     const double mean = sums.mean(), noise = std::sqrt(std::max(sums.variance(), 0.0) / double(sums.count));

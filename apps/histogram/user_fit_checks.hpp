@@ -33,9 +33,9 @@ HistogramCheck integral_check(const ggxbridge::BinIntegrals& own, const ggxcl::H
 // discards); mass beyond the sampler's reach is named.
 HistogramCheck reach_check(const ggxbridge::BinIntegrals& own, const ggxcl::Histogram& counts);
 
-// The mean weight of `sums` against the albedo the BRDF gives at params' view (the reference's
+// The mean weight of `samples` against the albedo the BRDF gives at params' view (the reference's
 // quadrature): a weight that belongs to another distribution than the samples fails, naming the
 // ratio.
-HistogramCheck weight_check(const ggxcl::FurnaceSums& sums, const ggxcl::SampleParams& params);
+HistogramCheck weight_check(const ggxcl::SampleSet& samples, const ggxcl::SampleParams& params);
 
 } // namespace ggxapp

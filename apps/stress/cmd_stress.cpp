@@ -32,7 +32,7 @@ namespace {
 struct StressCommand {
     std::string methods = "all", precision = "precise", device, out, eta, html;
     UserSamplerOptions user;
-    bool no_png = false;
+    bool no_png = false, isotropic_samplers = false;
     ApiOptions api;
 };
 
@@ -152,6 +152,8 @@ StressPlan plan_stress(const StressCommand& cmd)
     if (!plan.users.empty() && !plan.etas.empty())
         throw UsageError("--eta", cmd.eta,
                          "no --eta with --sampler: " + std::string(ggxcl::method_traits(ggxcl::Method::user).limits));
+    if (cmd.isotropic_samplers && plan.users.empty())
+        throw UsageError("--isotropic-samplers maps the --sampler files: give one with --sampler");
     return plan;
 }
 
@@ -193,7 +195,7 @@ void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, Stre
         print_totals(out, name, "host", host);
     }
     for (const auto& user : plan.users) {  // the device alone: the reference does not know them
-        std::vector<StressCase> cases = stress_cases(ggxcl::Method::user, axes);
+        std::vector<StressCase> cases = stress_cases(ggxcl::Method::user, axes, cmd.isotropic_samplers);
         StressMap device =
             device_stress_map(sampler, ggxcl::Method::user, plan.precision, cases, axes, true, user.get());
         append_rows(csv, user->name(), "device", cmd.precision, axes, device);
@@ -335,6 +337,9 @@ Prepare add_stress_command(CLI::App& app)
                                      "sampler)");
     cmd->add_option("--out", s->out, "output prefix: PREFIX.csv and PREFIX-METHOD.png; required");
     cmd->add_flag("--no-png", s->no_png, "write the CSV only (no Python needed)");
+    cmd->add_flag("--isotropic-samplers", s->isotropic_samplers,
+                  "map the --sampler files on isotropic roughness alone (alpha_x = alpha_y), as an isotropic "
+                  "engine meets it");
     cmd->add_option("--html", s->html, "write a web page of the totals and the maps");
     s->api.add_to(*cmd);
     return [cmd, s]() -> std::optional<Work> {

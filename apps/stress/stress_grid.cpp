@@ -26,10 +26,10 @@ ggxcl::Vec3 view_about(const ggxref::Vec3& n, double c)
     return {float(v.x), float(v.y), float(v.z)};
 }
 
-std::vector<std::array<float, 2>> roughness_pairs(ggxcl::Method method, double a)
+std::vector<std::array<float, 2>> roughness_pairs(ggxcl::Method method, double a, bool isotropic)
 {
     float f = float(a), tiny = float(a * 1e-3);
-    if (ggxcl::method_traits(method).isotropic_only)
+    if (ggxcl::method_traits(method).isotropic_only || isotropic)
         return {{f, f}};
     return {{f, f}, {f, tiny}, {tiny, f}, {0.0f, f}, {f, 0.0f}};
 }
@@ -129,14 +129,14 @@ StressAxes stress_axes()
                     0.0, std::cos(95 * rad), std::cos(120 * rad), std::cos(150 * rad), std::cos(179 * rad), -1.0});
 }
 
-std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axes)
+std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axes, bool isotropic)
 {
     std::vector<StressCase> cases;
     const std::vector<std::array<float, 2>> uniforms = uniform_pairs();
     for (int row = 0; row < int(axes.alphas.size()); ++row)
         for (int column = 0; column < int(axes.cos_theta.size()); ++column) {
             for (const ggxref::Vec3& n : normals_for(method))
-                for (const auto& alpha : roughness_pairs(method, axes.alphas[row])) {
+                for (const auto& alpha : roughness_pairs(method, axes.alphas[row], isotropic)) {
                     const ggxcl::Vec3 view = view_about(n, axes.cos_theta[column]);
                     std::vector<std::array<float, 2>> pairs = uniforms;
                     pairs.push_back(rim_pair(method, alpha, view, n));
@@ -172,7 +172,7 @@ std::vector<StressCase> dielectric_cases(ggxcl::Method method, const StressAxes&
         for (int row = 0; row < int(axes.alphas.size()); ++row)
             for (int column = 0; column < int(axes.cos_theta.size()); ++column)
                 for (const ggxref::Vec3& n : normals_for(method))
-                    for (const auto& alpha : roughness_pairs(method, axes.alphas[row])) {
+                    for (const auto& alpha : roughness_pairs(method, axes.alphas[row], false)) {
                         const ggxcl::Vec3 view = view_about(n, axes.cos_theta[column]);
                         const ggxcl::Vec3 normal{float(n.x), float(n.y), float(n.z)};
                         for (const auto& u : uniform_triples(rim_pair(method, alpha, view_from_above(view, n), n)))

@@ -36,7 +36,9 @@ struct StressAxes {
 };
 
 StressAxes stress_axes();
-std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axes);
+// `isotropic`: the pairs (alpha, alpha) alone, as for caps-iso (`ggx stress --isotropic-samplers`:
+// a user sampler of an isotropic surface meets no other).
+std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axes, bool isotropic = false);
 
 // The indices `ggx stress --eta all` runs: near 1 from both sides (1 - 2^-24, 1 + 2^-23, 1 -+ 1e-4),
 // typical (1/1.5, 1.33, 1.5, 2.4) and extreme (1e-3, 10, 100).

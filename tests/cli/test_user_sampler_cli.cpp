@@ -211,3 +211,34 @@ TEST_CASE("ggx demo --sampler: the user sampler's cloud, histogram and row besid
         CHECK(fs::exists(out / file));
     CHECK(ggx("demo --eta 1.5 --sampler " + user_sampler_file("caps_copy.h") + " --out " + out.string()).status == 2);
 }
+
+TEST_CASE("ggx stress --isotropic-samplers: a user sampler mapped on isotropic roughness alone")
+{
+    const ggxtest::ScratchFolder case_folder("user-cli");
+    const ggxtest::Run run = ggx("stress --methods caps --sampler " + user_sampler_file("caps_copy.h") +
+                                 " --isotropic-samplers --no-png --out " + (scratch() / "iso").string());
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    const std::string csv = ggxtest::read_all(scratch() / "iso.csv");
+    auto cases_of = [&](const std::string& row) {  // the cases column summed over the device's cells
+        long total = 0;
+        std::stringstream lines(csv);
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind(row + ",device,", 0) != 0)
+                continue;
+            std::stringstream cells(line);
+            std::string cell;
+            for (int column = 0; column < 6; ++column)
+                std::getline(cells, cell, ',');
+            total += std::stol(cell);
+        }
+        return total;
+    };
+    CHECK(cases_of("caps") > 0);
+    // caps' roughness pairs are (a, a), (a, a/1000), (a/1000, a), (0, a), (a, 0): the copy keeps the first.
+    CHECK(cases_of("caps_copy") * 5 == cases_of("caps"));
+    const ggxtest::Run alone = ggx("stress --methods caps --isotropic-samplers --no-png --out " +
+                                   (scratch() / "none").string());
+    CHECK(alone.status == 2);
+    CHECK(alone.err.find("--isotropic-samplers") != std::string::npos);
+}

@@ -51,7 +51,7 @@ std::uint64_t samples_where_zero(const ggxcl::Histogram& counts, const std::vect
 {
     std::uint64_t n = counts.non_finite;
     for (std::size_t b = 0; b < kept.size(); ++b)
-        n += kept[b] > 0.0 ? 0 : counts.counts[b];
+        n += kept[b] > 0.0 || std::isnan(kept[b]) ? 0 : counts.counts[b];  // NaN: reported as not finite
     return n;
 }
 

@@ -221,6 +221,21 @@ BinIntegrals one_pass(RuleEvaluator& rule, const std::vector<Region>& bins, std:
     return out;
 }
 
+// A bin whose samples found no density at any node, however fine (a support thinner than the
+// finest subdivision, as near a view opposite the normal): its samples' share is its error, so
+// that the integral's error bar says what the quadrature could not see.
+void add_unexplained_mass(BinIntegrals& out, const BinRequest& request)
+{
+    if (!request.observed)
+        return;
+    double n = 0.0;
+    for (std::uint64_t c : *request.observed)
+        n += double(c);
+    for (std::size_t b = 0; b < out.whole.size() && n > 0.0; ++b)
+        if (out.whole[b] == 0.0 && (*request.observed)[b] > 0)
+            out.error[b] += double((*request.observed)[b]) / n;
+}
+
 // The bins' edges in cos theta: the request's own, or bins_z equal steps over [-1, 1].
 std::vector<double> z_edges_of(const BinRequest& request)
 {
@@ -311,6 +326,7 @@ BinIntegrals integrate_bins(const DirectionPdf& pdf, const ggxcl::SampleParams& 
         out.whole[std::size_t(r.bin)] += f.whole;
         out.error[std::size_t(r.bin)] += r.error();
     }
+    add_unexplained_mass(out, request);
     return out;
 }
 

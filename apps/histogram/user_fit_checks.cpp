@@ -91,7 +91,8 @@ HistogramCheck integral_check(const ggxbridge::BinIntegrals& own, const ggxcl::H
     const bool to_one = std::fabs(whole - 1.0) <= allowed;
     // An engine's rejection: pdf 0 where it discards, so the pdf integrates to what it keeps.
     const bool to_kept = d > 0.0 && std::fabs(whole - (1.0 - d)) <= allowed + 4.0 * noise;
-    check.passed = std::isfinite(whole) && (to_one || to_kept);
+    const bool resolved = error <= 1e-2;  // beyond: the quadrature did not see the pdf where samples went
+    check.passed = std::isfinite(whole) && resolved && (to_one || to_kept);
     std::ostringstream line;
     line << check.name << ": " << measured(whole, error) << " +- " << readable_number(error, 2)
          << " over the sphere (above the horizon " << measured(above, error) << "; discarded " << percent(d)
@@ -101,6 +102,9 @@ HistogramCheck integral_check(const ggxbridge::BinIntegrals& own, const ggxcl::H
              << " for a pdf of 0 where it discards";
     if (!std::isfinite(whole))
         line << " (not finite: the pdf is NaN or infinite somewhere)";
+    else if (!resolved)
+        line << " (unresolved: the quadrature found no density where some samples went, or could not converge; "
+                "its error bar is the verdict)";
     else if (to_kept && !to_one)
         line << " (a pdf of 0 where it discards: the density of what it keeps)";
     check.summary = line.str();

@@ -31,6 +31,17 @@ inline std::map<std::string, HistogramVerdict> histogram_verdicts(const std::fil
     return out;
 }
 
+// The measured numbers of one check in PREFIX.json (null when there is no such check).
+inline nlohmann::json histogram_numbers(const std::filesystem::path& prefix, const std::string& name)
+{
+    std::ifstream in(prefix.string() + ".json");
+    const nlohmann::json doc = nlohmann::json::parse(in);  // kept: the loop below reads into it
+    for (const nlohmann::json& check : doc["checks"])
+        if (check["name"] == name)
+            return check["numbers"];
+    return nullptr;
+}
+
 // Every check a user sampler gets (histogram_job.cpp's order; "the claimed ..." only for a claim).
 inline std::vector<std::string> all_user_checks(const std::string& claim)
 {

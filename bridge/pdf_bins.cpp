@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 
 #include <boost/math/quadrature/gauss.hpp>
 
@@ -249,29 +250,9 @@ std::vector<double> z_edges_of(const BinRequest& request)
 
 } // namespace
 
-double BinIntegrals::kept_total() const
-{
-    double t = 0.0;
-    for (double v : kept)
-        t += v;
-    return t;
-}
-
-double BinIntegrals::whole_total() const
-{
-    double t = 0.0;
-    for (double v : whole)
-        t += v;
-    return t;
-}
-
-double BinIntegrals::error_total() const
-{
-    double t = 0.0;
-    for (double v : error)
-        t += v;
-    return t;
-}
+double BinIntegrals::kept_total() const { return std::accumulate(kept.begin(), kept.end(), 0.0); }
+double BinIntegrals::whole_total() const { return std::accumulate(whole.begin(), whole.end(), 0.0); }
+double BinIntegrals::error_total() const { return std::accumulate(error.begin(), error.end(), 0.0); }
 
 BinIntegrals integrate_bins(const DirectionPdf& pdf, const ggxcl::SampleParams& params, const BinRequest& request)
 {
@@ -384,6 +365,20 @@ ClaimedBins claimed_bins(const ggxcl::SampleParams& params, ggxcl::Method claime
             p = 0.0;
         }
     return out;
+}
+
+UserFits user_fits(const DirectionPdf& pdf, const ggxcl::SampleParams& params, const ggxcl::Histogram& counts,
+                   const BinRequest& request, const std::vector<double>& claimed_whole)
+{
+    UserFits fits;
+    fits.own = integrate_bins(pdf, params, request);
+    fits.own_fit = user_histogram_fit(counts, fits.own.kept, fits.own.error, false);
+    fits.claims = claimed_method(params.user_sampler->distribution(), fits.claimed_method);
+    if (fits.claims) {
+        fits.claimed = claimed_bins(params, fits.claimed_method, request, claimed_whole);
+        fits.claimed_fit = user_histogram_fit(counts, fits.claimed.kept, {}, true);
+    }
+    return fits;
 }
 
 } // namespace ggxbridge

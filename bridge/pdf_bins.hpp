@@ -12,6 +12,8 @@
 
 #include <ggxcl/ggxcl.hpp>
 
+#include "ggx_stats.hpp"
+
 namespace ggxbridge {
 
 // The pdf of each direction under a request, on a device: Sampler::pdf or VulkanSampler::pdf.
@@ -80,5 +82,21 @@ struct ClaimedBins {
 };
 ClaimedBins claimed_bins(const ggxcl::SampleParams& params, ggxcl::Method claimed, const BinRequest& request,
                          const std::vector<double>& whole);
+
+// What a user sampler's histogram is tested against, computed once for every front end (`ggx
+// histogram`, Python's Sampler.histogram): its pdf's integrals over the bins and their fit (kept
+// samples, shape alone), and where it claims a distribution, that distribution's kept bins and
+// their fit (discarded samples one more category).  `claimed_whole`: the claimed distribution's
+// bins of o over the sphere (claimed_bin_probabilities; unused for bins of m).
+struct UserFits {
+    BinIntegrals own;
+    ggxref::ChiSquare own_fit{};
+    bool claims = false;
+    ggxcl::Method claimed_method = ggxcl::Method::heitz;
+    ClaimedBins claimed;
+    ggxref::ChiSquare claimed_fit{};
+};
+UserFits user_fits(const DirectionPdf& pdf, const ggxcl::SampleParams& params, const ggxcl::Histogram& counts,
+                   const BinRequest& request, const std::vector<double>& claimed_whole);
 
 } // namespace ggxbridge

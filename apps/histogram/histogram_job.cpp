@@ -4,12 +4,10 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
-#include "ggx_quadrature.hpp"
 #include "ggx_stats.hpp"
 #include "npy_file.hpp"
 #include "plot.hpp"
@@ -63,41 +61,32 @@ nlohmann::json summary(const HistogramDevice& device, const HistogramJob& job, c
     return doc;
 }
 
-// The user sampler's checks, in report order: the chi-square against its own pdf (`own_fit`, of
-// `own`, its integrals over the bins) and in rings of theta, the integral, the reach, the chi-square against the
-// distribution it claims (`claimed_whole`: that distribution's bins over the whole sphere; none for
-// a density of its own), the mean weight, and its pdfs from (i, o), on one draw of up to 2^20
-// samples.
+// The user sampler's checks, in report order: the chi-square against its own pdf and in rings of
+// theta, the integral, the reach, the chi-square against the distribution it claims, the mean
+// weight, and its pdfs from (i, o), on one draw of up to 2^20 samples.
 std::vector<HistogramCheck> user_sampler_checks(const PdfDevice& device, const HistogramJob& job,
-                                                const ggxcl::Histogram& counts, const ggxref::ChiSquare& own_fit,
-                                                const ggxbridge::BinIntegrals& own,
-                                                const ggxbridge::BinRequest& request,
-                                                const std::vector<double>& claimed_whole)
+                                                const ggxcl::Histogram& counts, const ggxbridge::UserFits& fits)
 {
     // The samples judged one by one: the first 2^20 of the range (the pdf checks take 65 536).
     const std::uint64_t drawn_count = std::min<std::uint64_t>(job.range.count, 1u << 20);
     const ggxcl::SampleSet drawn = device.generate(job.params, {job.range.seed, job.range.first, drawn_count},
                                                    judged_fields());
     std::vector<HistogramCheck> checks = {
-        chi_square_check("its own pdf", own_fit, job.level, samples_where_zero(counts, own.kept)),
-        theta_check(device.pdf, job.params, drawn, job.direction, job.level), integral_check(own, counts),
-        reach_check(own, counts)};
-    ggxcl::Method method = ggxcl::Method::heitz;
-    const ggxcl::Distribution claim = job.params.user_sampler->distribution();
-    const bool claims = ggxbridge::claimed_method(claim, method);
-    if (claims) {
-        const ggxbridge::ClaimedBins theirs = ggxbridge::claimed_bins(job.params, method, request, claimed_whole);
-        HistogramCheck check = chi_square_check("the claimed " + std::string(ggxcl::distribution_name(claim)),
-                                                ggxbridge::user_histogram_fit(counts, theirs.kept, {}, true),
-                                                job.level, samples_where_zero(counts, theirs.kept));
-        check.numbers["claimed_below_horizon"] = theirs.below;
+        chi_square_check("its own pdf", fits.own_fit, job.level, samples_where_zero(counts, fits.own.kept)),
+        theta_check(device.pdf, job.params, drawn, job.direction, job.level), integral_check(fits.own, counts),
+        reach_check(fits.own, counts)};
+    if (fits.claims) {
+        const std::string claim(ggxcl::distribution_name(job.params.user_sampler->distribution()));
+        HistogramCheck check = chi_square_check("the claimed " + claim, fits.claimed_fit, job.level,
+                                                samples_where_zero(counts, fits.claimed.kept));
+        check.numbers["claimed_below_horizon"] = fits.claimed.below;
         check.summary += "; discarded " + readable_number(double(counts.invalid) / double(counts.total())) +
-                         " of the samples, the claimed mass below the horizon " + readable_number(theirs.below);
+                         " of the samples, the claimed mass below the horizon " + readable_number(fits.claimed.below);
         checks.push_back(check);
     }
     checks.push_back(weight_check(drawn, job.params));
     const std::size_t judged = std::min<std::size_t>(drawn.count, 1 << 16);
-    for (HistogramCheck& check : pdf_checks(device, job.params, drawn, judged, claims ? &method : nullptr))
+    for (HistogramCheck& check : pdf_checks(device, job.params, drawn, judged, fits.claims ? &fits.claimed_method : nullptr))
         checks.push_back(check);
     return checks;
 }
@@ -143,11 +132,11 @@ HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool user = job.params.method == ggxcl::Method::user;
     const ggxbridge::BinRequest request{job.bins_z, job.bins_phi, job.direction, job.range.count, &counts.counts};
-    const ggxbridge::BinIntegrals own =
-        user ? ggxbridge::integrate_bins(device.pdfs.pdf, job.params, request) : ggxbridge::BinIntegrals{};
-    const std::vector<double>& probabilities = user ? own.kept : reference;
-    const ggxref::ChiSquare fit = user ? ggxbridge::user_histogram_fit(counts, own.kept, own.error, false)
-                                       : ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
+    const ggxbridge::UserFits fits =
+        user ? ggxbridge::user_fits(device.pdfs.pdf, job.params, counts, request, reference) : ggxbridge::UserFits{};
+    const std::vector<double>& probabilities = user ? fits.own.kept : reference;
+    const ggxref::ChiSquare fit =
+        user ? fits.own_fit : ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
 
     std::vector<double> observed(counts.counts.begin(), counts.counts.end()), expected(probabilities.size());
     for (std::size_t b = 0; b < expected.size(); ++b)
@@ -157,10 +146,10 @@ HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
     nlohmann::json doc = summary(device, job, counts, fit, seconds);
     HistogramResult result{fit.statistic, fit.p_value, double(job.range.count) / seconds, fit.dof, "", {}};
     if (user) {
-        result.checks = user_sampler_checks(device.pdfs, job, counts, fit, own, request, reference);
+        result.checks = user_sampler_checks(device.pdfs, job, counts, fits);
         doc["expected_from_pdf_of"] = ggxcl::sampler_name(job.params) +
                                       " (its own pdf, integrated adaptively over each bin; the samples it kept)";
-        doc["quadrature_error"] = own.error_total();
+        doc["quadrature_error"] = fits.own.error_total();
         doc["discarded_samples"] = counts.invalid;
         doc["discarded"] = "samples whose o is below the horizon with weight 0 (whatever their pdf), tested as one "
                            "more category against what the bins leave of 1";

@@ -55,7 +55,6 @@ PdfAgreement pdf_agreement(const ggxcl::SampleSet& samples, std::size_t count, c
             ratios.push_back(ratio);
             a.above += ratio > 1.0 + agreement;
             a.below += ratio < 1.0 - agreement;
-            a.worst = std::max(a.worst, std::isfinite(ratio) ? std::fabs(ratio - 1.0) / std::max(ratio, 1.0) : 1.0);
         }
     }
     a.disagree = a.above + a.below;

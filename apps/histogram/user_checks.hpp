@@ -40,7 +40,6 @@ struct PdfAgreement {
     std::size_t above = 0, below = 0;  // ratio > 1 + 1e-3, < 1 - 1e-3
     std::size_t not_unit_m = 0;        // samples whose m is off unit length by more than 1e-5 (relative)
     double median = 0, low = 0, high = 0;  // the ratio's median, 0.1 and 99.9 percentiles
-    double worst = 0.0;                    // the largest |log ratio| as a relative difference, for the bench
     // Samples that fail: not finite, not positive, disagreeing.
     std::size_t failures() const { return not_finite + not_positive + disagree; }
 };

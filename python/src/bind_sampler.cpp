@@ -136,29 +136,24 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     const ggxcl::Method expected_of = against.is_none() ? r.params.method : ggxcl::parse_method(against.cast<std::string>());
     ggxcl::Histogram counts;
     std::vector<double> probabilities;
-    ggxbridge::BinIntegrals own;
-    ggxbridge::ClaimedBins claimed;
-    ggxcl::Method claimed_method = ggxcl::Method::heitz;
-    const bool claims = user && ggxbridge::claimed_method(r.params.user_sampler->distribution(), claimed_method);
+    ggxbridge::UserFits fits;
     {
         py::gil_scoped_release released;
         counts = s.histogram(r.params, {seed, first, args.count}, bins_z, bins_phi, direction);
         const ggxbridge::BinRequest request{bins_z, bins_phi, direction, args.count, &counts.counts};
         if (user)
-            own = ggxbridge::integrate_bins(ggxbridge::direction_pdf(s), r.params, request);
+            fits = ggxbridge::user_fits(
+                ggxbridge::direction_pdf(s), r.params, counts, request,
+                direction == ggxcl::Field::o ? ggxbridge::claimed_bin_probabilities(r.params, bins_z, bins_phi)
+                                             : std::vector<double>{});
         else
             probabilities =
                 ggxbridge::bin_probabilities(expected_of, ggxcl::normalized(r.params), bins_z, bins_phi, direction);
-        if (claims)
-            claimed = ggxbridge::claimed_bins(
-                r.params, claimed_method, request,
-                direction == ggxcl::Field::o ? ggxbridge::claimed_bin_probabilities(r.params, bins_z, bins_phi)
-                                             : std::vector<double>{});
     }
     if (user)
-        probabilities = own.kept;
-    const ggxref::ChiSquare fit = user ? ggxbridge::user_histogram_fit(counts, own.kept, own.error, false)
-                                       : ggxbridge::histogram_fit(counts, probabilities, r.params.eta != 0.0f);
+        probabilities = fits.own.kept;
+    const ggxref::ChiSquare fit =
+        user ? fits.own_fit : ggxbridge::histogram_fit(counts, probabilities, r.params.eta != 0.0f);
     py::array_t<std::uint64_t> observed({bins_z, bins_phi});
     py::array_t<double> expected({bins_z, bins_phi});
     std::memcpy(observed.mutable_data(), counts.counts.data(), counts.counts.size() * sizeof(std::uint64_t));
@@ -173,20 +168,20 @@ py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t see
     result["non_finite"] = counts.non_finite;
     result["invalid"] = counts.invalid;
     if (user) {
-        result["pdf_integral"] = own.whole_total();
-        result["pdf_integral_error"] = own.error_total();
-        result["quadrature_error"] = own.error_total();
-        result["pdf_above_horizon"] = own.kept_total();
+        result["pdf_integral"] = fits.own.whole_total();
+        result["pdf_integral_error"] = fits.own.error_total();
+        result["quadrature_error"] = fits.own.error_total();
+        result["pdf_above_horizon"] = fits.own.kept_total();
         result["discarded"] = counts.invalid;
     }
-    if (claims) {
-        const ggxref::ChiSquare theirs = ggxbridge::user_histogram_fit(counts, claimed.kept, {}, true);
+    if (fits.claims) {
+        const ggxref::ChiSquare& theirs = fits.claimed_fit;
         py::dict against_claim;
         against_claim["distribution"] = std::string(ggxcl::distribution_name(r.params.user_sampler->distribution()));
         against_claim["chi_square"] = theirs.statistic;
         against_claim["dof"] = theirs.dof;
         against_claim["p_value"] = theirs.p_value;
-        against_claim["below_horizon"] = claimed.below;
+        against_claim["below_horizon"] = fits.claimed.below;
         result["claimed"] = against_claim;
     }
     return result;

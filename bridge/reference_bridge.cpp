@@ -37,13 +37,18 @@ ggxcl::Method library_method(ggxref::Method method)
     return ggxcl::all_methods[method_index(static_cast<int>(method))];
 }
 
+ggxref::Vec3 reference_direction(const ggxcl::Vec3& d)
+{
+    return ggxref::normalize({d.x, d.y, d.z});
+}
+
 ggxref::Params reference_params(const ggxcl::SampleParams& p)
 {
     ggxref::Params r;
     r.ax = p.alpha_x;
     r.ay = p.alpha_y;
-    r.i = {p.view.x, p.view.y, p.view.z};
-    r.n = {p.normal.x, p.normal.y, p.normal.z};
+    r.i = reference_direction(p.view);
+    r.n = reference_direction(p.normal);
     return r;
 }
 

@@ -18,8 +18,12 @@ namespace ggxbridge {
 ggxref::Method reference_method(ggxcl::Method method);
 ggxcl::Method library_method(ggxref::Method method);
 
-// The (already normalized) float parameters as doubles.
+// The float parameters as doubles, the view and normal scaled to unit length in
+// double: a unit float vector is off unit by up to ~1e-7, and the reference's
+// formulas take unit vectors (near a view opposite the normal, where 1 - iz^2 is
+// small, a float-rounded view made its bins sum to 1.0175 at 179.9 degrees).
 ggxref::Params reference_params(const ggxcl::SampleParams& params);
+ggxref::Vec3 reference_direction(const ggxcl::Vec3& direction);  // unit in double
 // The reference's parameters as the library's, rounded to float, in `precision`.
 ggxcl::SampleParams library_params(ggxref::Method method, const ggxref::Params& params,
                                    ggxcl::Precision precision = ggxcl::Precision::precise);

@@ -10,16 +10,6 @@ namespace ggxapp {
 
 namespace {
 
-// The reference's parameters for the float values the device sees.
-ggxref::Params reference_params(const ggxcl::SampleParams& p)
-{
-    ggxref::Params r;
-    r.ax = p.alpha_x;
-    r.ay = p.alpha_y;
-    r.i = {p.view.x, p.view.y, p.view.z};
-    return r;
-}
-
 // Squared errors and estimates, summed over streams, per count; and the
 // running sum of the stream being drawn.
 struct Accumulator {
@@ -58,7 +48,7 @@ std::vector<ConvergeCurve> measure_cell(Api& sampler, const ConvergePlan& plan, 
                                         ggxcl::Sequence sequence, const ConvergeConfig& config)
 {
     const ggxcl::SampleParams p = converge_params(method, sequence, config, plan.precision);
-    const ggxref::Params r = reference_params(p);
+    const ggxref::Params r = ggxbridge::reference_params(p);
     const std::size_t counts = std::size_t(plan.max_exponent - plan.min_exponent + 1);
     std::vector<ggxref::Light> lights;
     std::vector<double> references;

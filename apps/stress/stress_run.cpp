@@ -160,6 +160,8 @@ StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& c
     StressMap map(axes.alphas.size() * axes.cos_theta.size());
     ggxref::Method ref = ggxbridge::reference_method(method);
     for (const StressCase& c : cases) {
+        // The float vectors as they are (not the bridge's unit doubles): a view exactly opposite
+        // the normal in float stays exactly opposite, where unit doubles can miss -1 by rounding.
         ggxref::Params p{c.ax, c.ay, {c.view.x, c.view.y, c.view.z}, {c.normal.x, c.normal.y, c.normal.z}};
         ggxref::Sample r = ggxref::sample(ref, p, c.u1, c.u2);
         StressOutcome s{{r.m.x, r.m.y, r.m.z}, {r.o.x, r.o.y, r.o.z}, r.pdf_m, r.pdf_o, r.weight,

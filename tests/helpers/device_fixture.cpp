@@ -49,16 +49,12 @@ std::string describe(const ggxref::Params& p)
 
 namespace {
 
-// The float parameters the device sees, as doubles, so that the reference
-// works on exactly the same inputs.
-Config as_device_sees(ggxref::Params p)
+// The float parameters the device sees, as the reference takes them (the
+// bridge's doubles, unit in double), so that both work on the same inputs.
+Config as_device_sees(const ggxref::Params& p)
 {
-    ggxcl::SampleParams unit_params = ggxcl::normalized(to_library(ggxref::Method::caps, p));
-    p.ax = unit_params.alpha_x;
-    p.ay = unit_params.alpha_y;
-    p.i = {unit_params.view.x, unit_params.view.y, unit_params.view.z};
-    p.n = {unit_params.normal.x, unit_params.normal.y, unit_params.normal.z};
-    return {p, describe(p)};
+    const ggxref::Params seen = ggxbridge::reference_params(ggxcl::normalized(to_library(ggxref::Method::caps, p)));
+    return {seen, describe(seen)};
 }
 
 // A world normal tilted by `tilt` degrees towards azimuth 120, and the view

@@ -8,11 +8,13 @@
 // compile time, lib/src/device_contract.hpp.)
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "device_fixture.hpp"
+#include "ggx_quadrature.hpp"
 #include "ggx_contract.h"
 
 namespace {
@@ -206,4 +208,26 @@ TEST_CASE("the reference bridge maps every method both ways, by name")
         CHECK(ggxbridge::library_method(r) == m);
     }
     CHECK_THROWS_AS(ggxbridge::reference_method(ggxcl::Method(GGX_METHOD_COUNT)), std::logic_error);
+}
+
+TEST_CASE("the reference bridge gives the reference unit vectors: its bins near -n sum to 1")
+{
+    // A unit float view at 179.9 degrees is off unit by ~5e-8, a large part of 1 - iz^2 ~ 3e-6.
+    const ggxcl::SampleParams p = ggxcl::normalized(ggxtest::to_library(
+        ggxref::Method::heitz, ggxref::Params{0.3, 0.3, ggxref::Vec3{std::sin(179.9 * M_PI / 180.0), 0.0,
+                                                                    std::cos(179.9 * M_PI / 180.0)}}));
+    const ggxref::Params ref = ggxbridge::reference_params(p);
+    CHECK(std::fabs(ggxref::dot(ref.i, ref.i) - 1.0) <= 1e-15);
+    CHECK(std::fabs(ggxref::dot(ref.n, ref.n) - 1.0) <= 1e-15);
+    auto sum_of = [](const ggxref::Params& params) {
+        double sum = 0.0;
+        for (double b : ggxref::bin_probabilities(ggxref::Method::heitz, params, 16, 32))
+            sum += b;
+        return sum;
+    };
+    CHECK(std::fabs(sum_of(ref) - 1.0) <= 1e-8);
+    // Control: the float view taken as it is gives bins that do not sum to 1.
+    ggxref::Params raw = ref;
+    raw.i = {p.view.x, p.view.y, p.view.z};
+    CHECK(std::fabs(sum_of(raw) - 1.0) > 1e-3);
 }

@@ -26,6 +26,11 @@ std::optional<ggxcl::ShaderLanguage> ApiChoice::sampler_language(const std::stri
     return ggxcl::shader_language_of_file(file).value_or(language);
 }
 
+std::unique_ptr<ggxcl::Backend> ApiChoice::open() const
+{
+    return ggxcl::open_backend(vulkan ? ggxcl::Api::vulkan : ggxcl::Api::opencl, selector, language);
+}
+
 void ApiOptions::add_to(CLI::App& cmd)
 {
     api_option = cmd.add_option("--api", api,

@@ -4,6 +4,7 @@
 // and a --sampler FILE.glsl or FILE.hlsl, which runs on Vulkan.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@ struct ApiChoice {
     // The language a --sampler FILE is read in: none (OpenCL C) on OpenCL;
     // on Vulkan its extension's (.glsl, .hlsl), else `language`.
     std::optional<ggxcl::ShaderLanguage> sampler_language(const std::string& file) const;
+    // The back end of this choice on its device: the one place a command opens one.
+    std::unique_ptr<ggxcl::Backend> open() const;
 };
 
 struct ApiOptions {

@@ -179,7 +179,7 @@ void write_headers(std::ostringstream& csv, std::ostream& out)
     print_table_header(out, "method", failure_kinds, failure_name);
 }
 
-void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, StressDevice sampler, std::ostream& out)
+void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Backend& sampler, std::ostream& out)
 {
     StressAxes axes = stress_axes();
     std::ostringstream csv;
@@ -227,7 +227,7 @@ void print_eta_totals(std::ostream& out, const StressAxes& axes, const std::vect
         }
 }
 
-void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, StressDevice sampler, std::ostream& out)
+void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Backend& sampler, std::ostream& out)
 {
     StressAxes axes = dielectric_axes(plan.etas);
     std::ostringstream csv;
@@ -300,23 +300,17 @@ void run_stress(const StressCommand& cmd, const StressPlan& plan)
     check_writable_folder("--out", cmd.out + ".csv");
     if (!cmd.html.empty())
         check_writable_folder("--html", cmd.html);
-    std::unique_ptr<ggxcl::Sampler> opencl;
-    std::unique_ptr<ggxcl::VulkanSampler> vulkan;
-    if (plan.api.vulkan)
-        vulkan = std::make_unique<ggxcl::VulkanSampler>(plan.api.selector, plan.api.language);
-    else
-        opencl = std::make_unique<ggxcl::Sampler>(cmd.device);
-    const StressDevice device = vulkan ? StressDevice(*vulkan) : StressDevice(*opencl);
+    const std::unique_ptr<ggxcl::Backend> device = plan.api.open();
     std::ostringstream totals;
     if (plan.etas.empty())
-        run_conductor_stress(cmd, plan, device, totals);
+        run_conductor_stress(cmd, plan, *device, totals);
     else
-        run_dielectric_stress(cmd, plan, device, totals);
+        run_dielectric_stress(cmd, plan, *device, totals);
     std::cout << totals.str();
     if (!cmd.no_png)
         run_plot_script("plot_stress.py", {cmd.out + ".csv", cmd.out});
     if (!cmd.html.empty())
-        write_markdown_page(cmd.html, stress_markdown(cmd, plan, plan.api.device_label(device.name()), totals.str()));
+        write_markdown_page(cmd.html, stress_markdown(cmd, plan, device->device_label(), totals.str()));
 }
 
 } // namespace

@@ -41,13 +41,13 @@ std::array<bool, kinds> classify(const StressOutcome& outcome, const StressCase&
 
 // What each side returns for each case: the device (guards = false builds the kernel with
 // GGX_GUARDS=0), the double reference, the device headers compiled as C++.
-std::vector<StressOutcome> device_outcomes(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
+std::vector<StressOutcome> device_outcomes(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                                            const std::vector<StressCase>& cases, bool guards = true);
 std::vector<StressOutcome> host_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases);
 std::vector<StressOutcome> cpp_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases);
 
 // The same counted per cell.
-Map device_map(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
+Map device_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true);
 Map host_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
 Map cpp_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);

@@ -58,44 +58,6 @@ void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, 
         cell.failures[k] += kinds[k];
 }
 
-std::string stress_defines(ggxcl::Method method, bool guards, const ggxcl::UserSampler* user)
-{
-    return "-DGGX_METHOD=" + std::to_string(static_cast<int>(method)) + " -DGGX_GUARDS=" + (guards ? "1" : "0") +
-           (user ? ggxcl::user_sampler_options(*user) : std::string());
-}
-
-std::string stress_options(const cl::Device& device, const std::string& defines, ggxcl::Precision precision)
-{
-    return defines + ggxcl::device_options(device) + ggxcl::precision_options(device, precision);
-}
-
-std::vector<float> run_stress_kernel(ggxcl::Sampler& sampler, const std::string& options,
-                                     const std::vector<float>& in, std::size_t count, int output_planes)
-{
-    std::vector<float> out(output_planes * count);
-    cl::Program program;
-    try {
-        program = ggxcl::build_user_program(sampler.context(), sampler.device(),
-                                            ggxcl::program_source("ggx_stress.cl", options), options);
-    } catch (const ggxcl::BuildError& error) {
-        if (options.find("-DGGX_USER_SAMPLER=1") == std::string::npos)
-            throw;
-        throw ggxcl::BuildError(error.code(), sampler.device_name(), options, error.log(),
-                                ggxcl::user_build_summary(error.log()));
-    }
-    cl::Kernel kernel(program, "ggx_stress");
-    cl::Buffer in_buffer(sampler.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(float),
-                         const_cast<float*>(in.data()));
-    cl::Buffer out_buffer(sampler.context(), CL_MEM_WRITE_ONLY, out.size() * sizeof(float));
-    kernel.setArg(0, cl_uint(count));
-    kernel.setArg(1, in_buffer);
-    kernel.setArg(2, out_buffer);
-    std::size_t global = (count + 255) / 256 * 256;
-    sampler.queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(global), cl::NDRange(256));
-    sampler.queue().enqueueReadBuffer(out_buffer, CL_TRUE, 0, out.size() * sizeof(float), out.data());
-    return out;
-}
-
 const char* failure_name(int kind)
 {
     static const char* names[] = {"nan_inf",         "fallback",   "not_unit", "m_below", "wasted",
@@ -125,27 +87,13 @@ std::array<bool, failure_kinds> classify(const StressOutcome& s, const ggxcl::Ve
     return kinds;
 }
 
-std::string StressDevice::name() const
-{
-    return opencl_ ? opencl_->device_name() : vulkan_->device_name();
-}
-
-std::vector<float> StressDevice::run(ggxcl::Method method, ggxcl::Precision precision, bool guards, bool dielectric,
-                                     const ggxcl::UserSampler* user, const std::vector<float>& in, std::size_t count,
-                                     int output_planes) const
-{
-    if (vulkan_)  // one SPIR-V for every precision mode
-        return vulkan_->stress(method, guards, dielectric, in, std::uint32_t(count), user);
-    const std::string defines = stress_defines(method, guards, user) + (dielectric ? " -DGGX_DIELECTRIC=1" : "");
-    return run_stress_kernel(*opencl_, stress_options(opencl_->device(), defines, precision), in, count, output_planes);
-}
-
-StressMap device_stress_map(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
+StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards,
                             const ggxcl::UserSampler* user)
 {
     const std::size_t n = cases.size();
-    std::vector<float> out = device.run(method, precision, guards, false, user, planar_inputs(cases), n, output_planes);
+    std::vector<float> out =
+        device.stress({method, precision, guards, false, user}, planar_inputs(cases), std::uint32_t(n));
     StressMap map(axes.alphas.size() * axes.cos_theta.size());
     for (std::size_t j = 0; j < n; ++j) {
         auto at = [&](int k) { return double(out[k * n + j]); };
@@ -378,11 +326,12 @@ std::vector<float> planar_inputs(const std::vector<StressCase>& cases)
 
 } // namespace
 
-std::vector<StressOutcome> device_outcomes(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
+std::vector<StressOutcome> device_outcomes(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                                            const std::vector<StressCase>& cases, bool guards)
 {
     const std::size_t n = cases.size();
-    std::vector<float> out = device.run(method, precision, guards, true, nullptr, planar_inputs(cases), n, output_planes);
+    std::vector<float> out =
+        device.stress({method, precision, guards, true, nullptr}, planar_inputs(cases), std::uint32_t(n));
     std::vector<StressOutcome> outcomes(n);
     for (std::size_t j = 0; j < n; ++j) {
         auto at = [&](int k) { return double(out[k * n + j]); };
@@ -391,7 +340,7 @@ std::vector<StressOutcome> device_outcomes(StressDevice device, ggxcl::Method me
     return outcomes;
 }
 
-Map device_map(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
+Map device_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
 {
     return map_of(device_outcomes(device, method, precision, cases, guards), cases, axes);

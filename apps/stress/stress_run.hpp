@@ -28,10 +28,6 @@ namespace ggxapp {
 enum FailureKind { nan_inf, fallback, not_unit, m_below, wasted, pdf_nonpositive, pdf_mismatch, failure_kinds };
 const char* failure_name(int kind);
 
-// The -D options of kernels/ggx_stress.cl for a method, with or without the guards (the device's and
-// the precision mode's options come on top); Method::user with its sampler's options.
-std::string stress_defines(ggxcl::Method method, bool guards, const ggxcl::UserSampler* user = nullptr);
-
 struct StressOutcome {
     double m[3], o[3], pdf_m, pdf_o, weight, pdf_again;
     double weight_importance = 0.0;  // a dielectric's: the same sample's weight in importance transport
@@ -48,28 +44,10 @@ using CellCounts = Counts<failure_kinds>;
 // Counts per cell, row-major: cell (row, column) at row * columns + column.
 using StressMap = std::vector<CellCounts>;
 
-// Where the map's cases run: kernels/ggx_stress.cl on an OpenCL device, or
-// its shader (ggx_stress.comp, .hlsl) on a Vulkan one (`--api vulkan`; a
-// user sampler in GLSL or HLSL there).  Made from either sampler, which it borrows.
-class StressDevice {
-public:
-    StressDevice(ggxcl::Sampler& sampler) : opencl_(&sampler) {}
-    StressDevice(ggxcl::VulkanSampler& sampler) : vulkan_(&sampler) {}
-    std::string name() const;
-    // The kernel for `method` (a user sampler's with `user`) over `count`
-    // cases of planar inputs (in[k * count + j]): its `output_planes` planes.
-    std::vector<float> run(ggxcl::Method method, ggxcl::Precision precision, bool guards, bool dielectric,
-                           const ggxcl::UserSampler* user, const std::vector<float>& in, std::size_t count,
-                           int output_planes) const;
-
-private:
-    ggxcl::Sampler* opencl_ = nullptr;
-    ggxcl::VulkanSampler* vulkan_ = nullptr;
-};
-
+// The map's cases on `device` (Backend::stress: ggx_stress.cl on OpenCL, its shader on Vulkan);
 // guards = false builds the kernel with GGX_GUARDS=0 (what the map looks like without them).
 // Method::user runs `user`'s device functions.
-StressMap device_stress_map(StressDevice device, ggxcl::Method method, ggxcl::Precision precision,
+StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true,
                             const ggxcl::UserSampler* user = nullptr);
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
@@ -79,12 +57,5 @@ StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& ca
 
 // Adds one classified outcome of case c to its cell of the map.
 void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome);
-
-// Runs kernels/ggx_stress.cl built with `options` over `count` cases of planar inputs (in[k * count + j])
-// and returns its `output_planes` planes of outputs.
-std::vector<float> run_stress_kernel(ggxcl::Sampler& sampler, const std::string& options,
-                                     const std::vector<float>& in, std::size_t count, int output_planes);
-// The device's and the precision mode's options (the library's own) after `defines`.
-std::string stress_options(const cl::Device& device, const std::string& defines, ggxcl::Precision precision);
 
 } // namespace ggxapp

@@ -33,27 +33,4 @@ bool add_furnace_partial_sums(const float* host, std::size_t items, std::size_t 
 
 } // namespace detail
 
-double FurnaceSums::mean() const
-{
-    return count ? sum / double(count) : 0.0;
-}
-
-double FurnaceSums::reflectance() const
-{
-    return count ? reflected_sum / double(count) : 0.0;
-}
-
-double FurnaceSums::transmittance() const
-{
-    return count ? (sum - reflected_sum) / double(count) : 0.0;
-}
-
-double FurnaceSums::variance() const
-{
-    if (count < 2)
-        return 0.0;
-    double m = mean();
-    return std::max(0.0, (sum_of_squares - double(count) * m * m) / double(count - 1));
-}
-
 } // namespace ggxcl

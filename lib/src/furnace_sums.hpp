@@ -7,7 +7,7 @@
 #include <cstddef>
 
 #include "ggxcl/params.hpp"
-#include "ggxcl/sampler.hpp"
+#include "ggxcl/results.hpp"
 
 namespace ggxcl::detail {
 

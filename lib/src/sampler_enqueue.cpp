@@ -62,18 +62,6 @@ std::uint64_t DeviceOutputs::offset_of(Field field) const
     return const_cast<DeviceOutputs*>(this)->offset_of(field);
 }
 
-std::vector<float>& SampleSet::column_source(Field field)
-{
-    std::vector<float>* planes[] = {&m, &o, &pdf_m, &pdf_o, &weight, &u};
-    static_assert(std::size(planes) == all_fields.size());
-    return *planes[static_cast<int>(field)];
-}
-
-const std::vector<float>& SampleSet::column_source(Field field) const
-{
-    return const_cast<SampleSet*>(this)->column_source(field);
-}
-
 Sampler::Sampler(const std::string& selector) : Sampler(select_device(selector)) {}
 
 Sampler::Sampler(const DeviceInfo& device) : Sampler(translate_cl_errors([&] { return cl::Context(device.device); }), device.device) {}

@@ -171,28 +171,6 @@ std::uint64_t fitted_capacity(std::uint64_t max_alloc, std::uint64_t requested, 
 
 } // namespace
 
-const float*& SampleView::column_source(Field field)
-{
-    const float** planes[] = {&m, &o, &pdf_m, &pdf_o, &weight, &u};
-    static_assert(std::size(planes) == all_fields.size());
-    return *planes[int(field)];
-}
-
-const float* SampleView::column_source(Field field) const
-{
-    return const_cast<SampleView*>(this)->column_source(field);
-}
-
-SampleView view_of(const SampleSet& set)
-{
-    SampleView v;
-    v.count = set.count;
-    v.stride = set.count;
-    for (Field f : all_fields)
-        v.column_source(f) = set.column_source(f).empty() ? nullptr : set.column_source(f).data();
-    return v;
-}
-
 void Sampler::run_chunks(const detail::ValidatedParams& params, const SampleRange& range, FieldSet fields,
                          const PerSampleInputs& per_sample, const ChunkDelivery& deliver)
 {

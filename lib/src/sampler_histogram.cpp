@@ -125,11 +125,6 @@ struct Sampler::HistogramRun {
     }
 };
 
-std::uint64_t Histogram::total() const
-{
-    return std::accumulate(counts.begin(), counts.end(), non_finite + invalid);
-}
-
 Histogram Sampler::histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
                              Field direction)
 {

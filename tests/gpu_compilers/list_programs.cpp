@@ -14,7 +14,7 @@
 #include "device_quirks.hpp"
 #include "ggxcl/kernel_sources.hpp"
 #include "program_variants.hpp"
-#include "stress_run.hpp"
+#include "stress_request.hpp"
 
 namespace {
 
@@ -64,7 +64,7 @@ void print_covering()
             const ggxcl::Method m = ggxcl::all_methods[i];
             const bool guards = (i + p) % 2 == 0;
             std::cout << program("stress-" + std::to_string(k++), "ggx_stress.cl", "stress", m,
-                                 ggxcl::all_precisions[p], ggxapp::stress_defines(m, guards))
+                                 ggxcl::all_precisions[p], ggxcl::detail::stress_defines({m, ggxcl::all_precisions[p], guards}))
                              .dump()
                       << "\n";
         }

@@ -1,6 +1,6 @@
 // test_vulkan_stress.cpp - the stability map on a Vulkan device
-// (VulkanSampler::stress, kernels/ggx_stress.comp and .hlsl, through `ggx
-// stress`'s StressDevice; lavapipe in CI), in GLSL and HLSL:
+// (VulkanSampler::stress, kernels/ggx_stress.comp and .hlsl, through the
+// maps of `ggx stress` on a Backend; lavapipe in CI), in GLSL and HLSL:
 //   - every method's conductor map has no NaN or Inf and the fallback in
 //     exactly the cells and cases where OpenCL's map has it; so does every
 //     dielectric method's map over indices near 1 and typical;
@@ -89,7 +89,7 @@ TEST_CASE("stress inputs of the wrong size are refused")
 {
     ggxcl::VulkanSampler& vk = ggxvk::vulkan_sampler(ShaderLanguage::glsl);
     try {
-        vk.stress(ggxcl::Method::caps, true, false, std::vector<float>(25), 3);
+        vk.stress({ggxcl::Method::caps}, std::vector<float>(25), 3);
         FAIL("wrong size accepted");
     } catch (const ggxcl::InvalidArgument& e) {
         CHECK(std::string(e.what()).find("30 (10 planes of 3 cases)") != std::string::npos);

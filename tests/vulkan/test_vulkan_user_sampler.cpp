@@ -112,8 +112,8 @@ TEST_CASE("a user sampler's stress map on Vulkan is the built-in caps' map")
         CHECK(mine[c].failures == caps[c].failures);
     }
     const std::vector<float> in(10 * 4, 0.5f);
-    CHECK_THROWS_AS(vk.stress(ggxcl::Method::user, true, false, in, 4), ggxcl::InvalidArgument);
-    CHECK_THROWS_AS(vk.stress(ggxcl::Method::caps, true, false, in, 4, glsl.get()), ggxcl::InvalidArgument);
+    CHECK_THROWS_AS(vk.stress({ggxcl::Method::user}, in, 4), ggxcl::InvalidArgument);
+    CHECK_THROWS_AS(vk.stress({ggxcl::Method::caps, ggxcl::Precision::precise, true, false, glsl.get()}, in, 4), ggxcl::InvalidArgument);
 }
 
 TEST_CASE("an HLSL sampler of m alone is completed: heitz's m, o and weight, its own pdf")

@@ -15,10 +15,12 @@
 #include <string>
 #include <vector>
 
+#include "ggxcl/backend.hpp"
 #include "ggxcl/device.hpp"
 #include "ggxcl/fields.hpp"
 #include "ggxcl/opencl.hpp"
 #include "ggxcl/params.hpp"
+#include "ggxcl/results.hpp"
 
 namespace ggxcl {
 
@@ -29,30 +31,6 @@ class ValidatedParams;  // SampleParams validated once by a public entry point (
 struct ProgramVariant;  // the program a launch runs (internal)
 }
 
-// Samples on the host.  Fields of several columns are planar: m[c * count + j]
-// is component c (x, y, z) of sample j, u[c * count + j] its uniform u1 (c = 0)
-// or u2 (c = 1), and a dielectric's u3 (c = 2).  Fields not requested stay empty.
-struct SampleSet {
-    std::uint64_t count = 0;
-    std::vector<float> m, o, pdf_m, pdf_o, weight, u;
-
-    Vec3 m_at(std::size_t j) const { return {m[j], m[count + j], m[2 * count + j]}; }
-    Vec3 o_at(std::size_t j) const { return {o[j], o[count + j], o[2 * count + j]}; }
-    const std::vector<float>& column_source(Field field) const;
-    std::vector<float>& column_source(Field field);
-};
-
-// A chunk of samples in memory the Sampler owns, valid only during the call
-// that receives it: planar like SampleSet but with planes `stride` floats
-// apart (m[c * stride + j] is component c of sample j); fields not
-// requested are null.
-struct SampleView {
-    std::uint64_t count = 0, stride = 0;
-    const float *m = nullptr, *o = nullptr, *pdf_m = nullptr, *pdf_o = nullptr, *weight = nullptr, *u = nullptr;
-    const float* column_source(Field field) const;
-    const float*& column_source(Field field);
-};
-SampleView view_of(const SampleSet& set);  // its fields, stride = count
 
 // Per-sample parameters in the caller's buffers, planar with the stride of
 // the call: view and normal 3 planes (unit vectors), alpha 2 planes
@@ -97,38 +75,6 @@ struct DeviceOutputs {
     std::uint64_t offset_of(Field field) const;
 };
 
-// Counts of directions in bins of equal solid angle over (phi, cos theta):
-// z = cos(theta) in [-1, 1] split into bins_z, phi in [0, 2 pi) into
-// bins_phi; counts[z_bin * bins_phi + phi_bin].  Of a dielectric's o the
-// whole sphere holds both lobes.
-struct Histogram {
-    int bins_z = 0, bins_phi = 0;
-    std::vector<std::uint64_t> counts;
-    std::uint64_t non_finite = 0;  // samples whose direction was NaN or Inf
-    // Dielectrics (SampleParams::eta): samples without density (pdf_o = 0, a
-    // reflection that left the view's side or a transmission that did not
-    // cross), counted here instead of in a bin.  A user sampler
-    // (Method::user): its discarded samples (o below the horizon with weight
-    // 0, whatever their pdf), o or m binned.
-    std::uint64_t invalid = 0;
-    std::uint64_t total() const;
-};
-
-// Sums of the white-furnace estimator weights (Fresnel 1, or a
-// dielectric's) of a range of samples: their mean estimates the directional
-// albedo of the surface.  For a dielectric (SampleParams::eta) the weights
-// of reflected samples (o on the view's side) are also summed apart: the
-// mean splits into reflectance + transmittance.
-struct FurnaceSums {
-    std::uint64_t count = 0;
-    double sum = 0.0, sum_of_squares = 0.0;
-    double reflected_sum = 0.0;  // dielectrics: the reflected samples' weights (else 0)
-    double mean() const;           // the albedo estimate
-    double variance() const;       // per-sample variance of the weight
-    double reflectance() const;    // reflected_sum / count
-    double transmittance() const;  // (sum - reflected_sum) / count
-};
-
 // Threads: every member of a Sampler may be called from several threads at
 // once, with the bits one thread gets; the calls without a queue argument
 // share the sampler's own queue, so for parallel launches give each thread
@@ -137,7 +83,7 @@ struct FurnaceSums {
 // Errors: InvalidArgument for bad arguments, ClError for OpenCL failures,
 // DeviceLost (a ClError) when the device stops working mid-call; a call
 // that throws has delivered only whole chunks, in order, to a ChunkSink.
-class Sampler {
+class Sampler : public Backend {
 public:
     // A sampler with its own context and in-order queue on the device that
     // `selector` names (see select_device: index or name part; empty means
@@ -150,7 +96,9 @@ public:
     const cl::Context& context() const { return context_; }
     const cl::Device& device() const { return device_; }
     cl::CommandQueue& queue() { return queue_; }
-    std::string device_name() const;
+    Api api() const override { return Api::opencl; }
+    std::optional<ShaderLanguage> shader_language() const override { return std::nullopt; }
+    std::string device_name() const override;
 
     // Samples per device pass in generate()/pdf(); memory stays bounded by
     // it and the result does not depend on it.  Default 2^20.
@@ -159,8 +107,8 @@ public:
     // and go on from the first sample not yet delivered, down to 1024
     // samples; memory_retries() counts the halvings.  Chunks are also kept
     // within the device's largest allocation.
-    void set_chunk_size(std::uint64_t samples);
-    std::uint64_t chunk_size() const { return chunk_size_; }
+    void set_chunk_size(std::uint64_t samples) override;
+    std::uint64_t chunk_size() const override { return chunk_size_; }
     std::uint64_t memory_retries() const { return memory_retries_; }
 
     // Work-items per work-group of every launch: 0 (the default) picks 256,
@@ -171,34 +119,32 @@ public:
 
     // Draws the samples of `range` into host vectors.
     SampleSet generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
-                       const PerSampleInputs& per_sample = {});
+                       const PerSampleInputs& per_sample = {}) override;
 
     // Draws the samples of `range` chunk by chunk (chunk_size() at most) and
     // hands each chunk to `sink` with the offset of its first sample within
     // the range; memory stays bounded whatever the count.
-    using ChunkSink = std::function<void(const SampleSet& chunk, std::uint64_t offset)>;
     void generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
-                         const ChunkSink& sink, const PerSampleInputs& per_sample = {});
+                         const ChunkSink& sink, const PerSampleInputs& per_sample = {}) override;
 
     // The same without a copy where the device shares host memory (CPU
     // devices: CL_DEVICE_HOST_UNIFIED_MEMORY): each chunk is the device
     // buffers themselves, mapped for reading; elsewhere it is read into
     // host memory first.  Either way the next chunk is drawn while `sink`
     // runs.  Same values as generate_chunks.
-    using ChunkViewSink = std::function<void(const SampleView& chunk, std::uint64_t offset)>;
     void generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
-                              const ChunkViewSink& sink, const PerSampleInputs& per_sample = {});
+                              const ChunkViewSink& sink, const PerSampleInputs& per_sample = {}) override;
 
     // The pdf of each direction o (per steradian) for the sampler of params.method (with
     // params.eta: its dielectric sampler's, both lobes over the whole sphere).
     std::vector<float> pdf(const SampleParams& params, const std::vector<Vec3>& directions,
-                           const PerSampleInputs& per_sample = {});
+                           const PerSampleInputs& per_sample = {}) override;
     // The BSDF value f(i, o) |cos theta_o| of each direction o, Fresnel 1 (kernels/ggx_bsdf.h), or
     // with params.eta the rough dielectric's in params.transport (ggx_eval_dielectric), for
     // the view, roughness and normal of params (the same for every method): with pdf(), the pair
     // multiple importance sampling needs; for a sampled o, eval / pdf_o is its weight.
     std::vector<float> eval(const SampleParams& params, const std::vector<Vec3>& directions,
-                            const PerSampleInputs& per_sample = {});
+                            const PerSampleInputs& per_sample = {}) override;
 
     // Enqueues the samples of `range` (count < 2^32) into the caller's
     // buffers on the caller's queue (of this sampler's context).  `stride`
@@ -230,11 +176,11 @@ public:
     // bins_phi is 1 .. 65536; bins_z * bins_phi fits the device's local
     // memory (InvalidArgument otherwise).
     Histogram histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
-                        Field direction = Field::o);
+                        Field direction = Field::o) override;
 
     // The fused white-furnace estimator: draws the samples of `range` and
     // sums their weights on the device; nothing per sample is stored.
-    FurnaceSums furnace(const SampleParams& params, const SampleRange& range);
+    FurnaceSums furnace(const SampleParams& params, const SampleRange& range) override;
 
     // Enqueues it for one range (count <= 2^31): `sums` receives
     // 2 * furnace_items(count) floats, the partial weight sums of the
@@ -247,6 +193,10 @@ public:
                               const DeviceArray& sums, const DeviceInputs& inputs = {},
                               const std::vector<cl::Event>* wait = nullptr);
     std::size_t furnace_items(std::uint64_t count) const;
+
+    // The stability map's cases (Backend::stress): ggx_stress.cl built for the request.
+    std::vector<float> stress(const StressRequest& request, const std::vector<float>& in,
+                              std::uint32_t count) override;
 
     // Number of distinct program variants built so far.
     std::size_t programs_built() const;

@@ -20,7 +20,8 @@
 
 #include "ggxcl/fields.hpp"
 #include "ggxcl/params.hpp"
-#include "ggxcl/sampler.hpp"
+#include "ggxcl/backend.hpp"
+#include "ggxcl/results.hpp"
 #include "ggxcl/shader_language.hpp"
 #include "ggxcl/user_sampler.hpp"
 
@@ -62,8 +63,10 @@ VulkanDeviceInfo select_vulkan_device(const std::string& selector = "");
 // User samplers in GLSL or HLSL (UserSampler::load of a .glsl or .hlsl file)
 // run in every call in place of a method, in their file's language; one in
 // OpenCL C is InvalidArgument.  Not yet on Vulkan: the caller's buffers.
-// One VulkanSampler is used by one thread at a time.
-class VulkanSampler {
+// Threads: as every Backend, it takes calls from several threads at once;
+// they run one after another (its queue and buffers are shared), each with
+// the bits it gives alone.
+class VulkanSampler : public Backend {
 public:
     explicit VulkanSampler(const std::string& selector = "", ShaderLanguage language = ShaderLanguage::glsl);
     ~VulkanSampler();
@@ -71,50 +74,46 @@ public:
     VulkanSampler& operator=(VulkanSampler&&) noexcept;
 
     const VulkanDeviceInfo& device() const;
-    std::string device_name() const;  // "vulkan:<name>"
+    Api api() const override { return Api::vulkan; }
+    std::optional<ShaderLanguage> shader_language() const override { return language(); }
+    std::string device_name() const override;  // "vulkan:<name>"
     ShaderLanguage language() const;
 
     // Samples per dispatch (default 2^20), lowered where the device's
     // storage buffers are smaller; results do not depend on it.
-    void set_chunk_size(std::uint64_t samples);
-    std::uint64_t chunk_size() const;
+    void set_chunk_size(std::uint64_t samples) override;
+    std::uint64_t chunk_size() const override;
 
     SampleSet generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
-                       const PerSampleInputs& per_sample = {});
-    using ChunkSink = std::function<void(const SampleSet& chunk, std::uint64_t offset)>;
+                       const PerSampleInputs& per_sample = {}) override;
     void generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
-                         const ChunkSink& sink, const PerSampleInputs& per_sample = {});
+                         const ChunkSink& sink, const PerSampleInputs& per_sample = {}) override;
     // The same without a copy: each chunk's planes where the device wrote
     // them (stride >= count), valid during the call of `sink`.
-    using ChunkViewSink = Sampler::ChunkViewSink;
     void generate_chunk_views(const SampleParams& params, const SampleRange& range, FieldSet fields,
-                              const ChunkViewSink& sink, const PerSampleInputs& per_sample = {});
+                              const ChunkViewSink& sink, const PerSampleInputs& per_sample = {}) override;
 
     // The pdf, and the BSDF value f |cos|, of each direction o, as
     // Sampler::pdf and Sampler::eval (kernels/ggx_pdf.comp or .hlsl).
     std::vector<float> pdf(const SampleParams& params, const std::vector<Vec3>& directions,
-                           const PerSampleInputs& per_sample = {});
+                           const PerSampleInputs& per_sample = {}) override;
     std::vector<float> eval(const SampleParams& params, const std::vector<Vec3>& directions,
-                            const PerSampleInputs& per_sample = {});
+                            const PerSampleInputs& per_sample = {}) override;
 
     // Bins the directions (Field::o or Field::m) of `range` on the device, as
     // Sampler::histogram: only the counts come back; bins_z * bins_phi + 2
     // counters fit the device's shared memory (InvalidArgument otherwise).
     Histogram histogram(const SampleParams& params, const SampleRange& range, int bins_z, int bins_phi,
-                        Field direction = Field::o);
+                        Field direction = Field::o) override;
 
     // The fused white-furnace estimator, as Sampler::furnace: the same
     // samples per invocation, so the sums do not depend on the chunk size.
-    FurnaceSums furnace(const SampleParams& params, const SampleRange& range);
+    FurnaceSums furnace(const SampleParams& params, const SampleRange& range) override;
 
-    // The stability map's cases (`ggx stress`): kernels/ggx_stress.comp or
-    // .hlsl for `method`, with or without the guards, a rough dielectric's
-    // with `dielectric`, over `count` cases of planar inputs as
-    // ggx_stress.cl reads them (in[k * count + j]: 10 planes, 12 for a
-    // dielectric); returns its output planes (10, 11 for a dielectric) alike.
-    // Method::user runs `user` (a GLSL or HLSL sampler), a conductor's map.
-    std::vector<float> stress(Method method, bool guards, bool dielectric, const std::vector<float>& in,
-                              std::uint32_t count, const UserSampler* user = nullptr);
+    // The stability map's cases (Backend::stress): kernels/ggx_stress.comp or
+    // .hlsl; a user sampler in GLSL or HLSL.  One SPIR-V for every precision.
+    std::vector<float> stress(const StressRequest& request, const std::vector<float>& in,
+                              std::uint32_t count) override;
 
     std::size_t shaders_built() const;     // pipelines made so far
     std::size_t shaders_from_disk() const;  // of those, SPIR-V read from the cache

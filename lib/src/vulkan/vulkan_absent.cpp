@@ -56,7 +56,7 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams&, const std::
 }
 Histogram VulkanSampler::histogram(const SampleParams&, const SampleRange&, int, int, Field) { not_built(); }
 FurnaceSums VulkanSampler::furnace(const SampleParams&, const SampleRange&) { not_built(); }
-std::vector<float> VulkanSampler::stress(Method, bool, bool, const std::vector<float>&, std::uint32_t, const UserSampler*)
+std::vector<float> VulkanSampler::stress(const StressRequest&, const std::vector<float>&, std::uint32_t)
 {
     not_built();
 }

@@ -7,6 +7,7 @@
 #include "furnace_sums.hpp"
 #include "histogram_bins.hpp"
 #include "validated_params.hpp"
+#include "stress_request.hpp"
 #include "vulkan_sampler_state.hpp"
 
 namespace ggxcl {
@@ -29,6 +30,7 @@ Histogram VulkanSampler::histogram(const SampleParams& params, const SampleRange
     const std::size_t bins = std::size_t(bins_z) * std::size_t(bins_phi);
     Histogram result{bins_z, bins_phi, std::vector<std::uint64_t>(bins, 0), 0, 0};
     State& s = *state_;
+    const std::lock_guard lock(s.calls);
     detail::translate_vulkan_errors(device().name, [&] {
         const vk::raii::Pipeline& pipeline = s.pipeline(variant);
         detail::MappedBuffer unused = s.compute->buffer(1), counts = s.compute->buffer(bins + 2);
@@ -61,10 +63,11 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
     const detail::ValidatedParams valid = detail::validated(params);
     validate(range);
     State& s = *state_;
+    const std::lock_guard lock(s.calls);
     const std::uint64_t per_item = detail::furnace_per_item, planes = detail::furnace_sum_planes(*valid);
     // Samples per dispatch: a multiple of the samples per invocation, their sums within one storage buffer.
     const std::uint64_t items_fit = device().max_storage_buffer_range / sizeof(float) / planes;
-    const std::uint64_t per_dispatch = std::max(per_item, std::min(s.chunk_size, items_fit * per_item) / per_item * per_item);
+    const std::uint64_t per_dispatch = std::max(per_item, std::min(s.chunk_size.load(), items_fit * per_item) / per_item * per_item);
     // The unguarded program, and the guarded one built only when a sum is not finite.
     SampleParams unguarded = *valid, guarded = *valid;
     unguarded.guards = false;
@@ -98,27 +101,19 @@ FurnaceSums VulkanSampler::furnace(const SampleParams& params, const SampleRange
     return total;
 }
 
-std::vector<float> VulkanSampler::stress(Method method, bool guards, bool dielectric, const std::vector<float>& in,
-                                         std::uint32_t count, const UserSampler* user)
+std::vector<float> VulkanSampler::stress(const StressRequest& stress, const std::vector<float>& in, std::uint32_t count)
 {
-    if ((method == Method::user) != (user != nullptr))
-        throw InvalidArgument("stress user sampler", user ? user->name() : "none",
-                              "a user sampler exactly when the method is user");
-    if (user && dielectric)
-        throw InvalidArgument("stress dielectric", "true", std::string("false for a user sampler (") + user->name() +
-                                                               "): " + std::string(method_traits(Method::user).limits));
-    const std::uint64_t in_planes = dielectric ? 12 : 10, out_planes = dielectric ? 11 : 10;
-    if (in.size() != in_planes * count)
-        throw InvalidArgument("stress inputs", std::to_string(in.size()) + " floats",
-                              std::to_string(in_planes * count) + " (" + std::to_string(in_planes) + " planes of " +
-                                  std::to_string(count) + " cases)");
+    const detail::StressPlanes planes = detail::checked_stress(stress, in, count);
+    const std::uint64_t in_planes = planes.in, out_planes = planes.out;
     State& s = *state_;
-    const detail::ShaderDefines defines = {{"GGX_METHOD", detail::method_id(method)}, {"GGX_GUARDS", guards ? 1 : 0},
-                                           {"GGX_DIELECTRIC", dielectric ? 1 : 0}};
+    const std::lock_guard lock(s.calls);
+    const detail::ShaderDefines defines = {{"GGX_METHOD", detail::method_id(stress.method)},
+                                           {"GGX_GUARDS", stress.guards ? 1 : 0},
+                                           {"GGX_DIELECTRIC", stress.dielectric ? 1 : 0}};
     const std::uint64_t capacity = s.capacity(in_planes);
     std::vector<float> out(out_planes * count);
     detail::translate_vulkan_errors(device().name, [&] {
-        const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_stress", defines, user);
+        const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_stress", defines, stress.user);
         detail::MappedBuffer inputs = s.compute->buffer(in_planes * capacity);
         detail::MappedBuffer outputs = s.compute->buffer(out_planes * capacity);
         detail::BulkRequest request{};

@@ -47,8 +47,18 @@ VulkanSampler& VulkanSampler::operator=(VulkanSampler&&) noexcept = default;
 const VulkanDeviceInfo& VulkanSampler::device() const { return state_->compute->info(); }
 std::string VulkanSampler::device_name() const { return device().label(); }
 ShaderLanguage VulkanSampler::language() const { return state_->language; }
-std::size_t VulkanSampler::shaders_built() const { return state_->pipelines.size(); }
-std::size_t VulkanSampler::shaders_from_disk() const { return state_->from_disk; }
+std::size_t VulkanSampler::shaders_built() const
+{
+    const std::lock_guard lock(state_->calls);
+    return state_->pipelines.size();
+}
+
+std::size_t VulkanSampler::shaders_from_disk() const
+{
+    const std::lock_guard lock(state_->calls);
+    return state_->from_disk;
+}
+
 std::uint64_t VulkanSampler::chunk_size() const { return state_->chunk_size; }
 
 void VulkanSampler::set_chunk_size(std::uint64_t samples)
@@ -109,6 +119,7 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
     const detail::ProgramVariant variant =
         detail::variant_of_host_inputs(detail::ProgramKind::bulk, p, detail::write_mask(fields), per_sample);
     State& s = *state_;
+    const std::lock_guard lock(s.calls);
     const std::uint64_t out_per_sample = output_floats(fields, dielectric), in_per_sample = input_floats(per_sample);
     const std::uint64_t capacity = s.capacity(std::max(out_per_sample, in_per_sample));
     detail::translate_vulkan_errors(device().name, [&] {
@@ -168,6 +179,7 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams& params, cons
     detail::ProgramVariant variant = detail::variant_of_host_inputs(detail::ProgramKind::bulk, *valid, 0, per_sample);
     variant.eval = eval;
     State& s = *state_;
+    const std::lock_guard lock(s.calls);
     const std::uint64_t in_per_sample = input_floats(per_sample) + 3, capacity = s.capacity(in_per_sample);
     std::vector<float> result(count);
     detail::translate_vulkan_errors(device().name, [&] {

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "device_contract.hpp"
@@ -99,7 +101,10 @@ struct VulkanSampler::State {
     std::shared_ptr<detail::VulkanInstance> vulkan;
     std::unique_ptr<detail::VulkanCompute> compute;
     ShaderLanguage language = ShaderLanguage::glsl;
-    std::uint64_t chunk_size = 1u << 20;
+    std::atomic<std::uint64_t> chunk_size{1u << 20};
+    // Calls from several threads run one after another: they share the queue, the pipelines and
+    // the counters (recursive: a sink may call the sampler again from the same thread).
+    std::recursive_mutex calls;
     std::map<std::string, vk::raii::Pipeline> pipelines;  // by program and defines
     std::size_t from_disk = 0;
 
@@ -158,7 +163,7 @@ struct VulkanSampler::State {
     std::uint64_t capacity(std::uint64_t floats_per_sample) const
     {
         const std::uint64_t range = compute->info().max_storage_buffer_range / sizeof(float);
-        return std::max<std::uint64_t>(1, std::min(chunk_size, range / std::max<std::uint64_t>(floats_per_sample, 1)));
+        return std::max<std::uint64_t>(1, std::min(chunk_size.load(), range / std::max<std::uint64_t>(floats_per_sample, 1)));
     }
 };
 

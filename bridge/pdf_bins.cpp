@@ -311,6 +311,11 @@ BinIntegrals integrate_bins(const DirectionPdf& pdf, const ggxcl::SampleParams& 
     return out;
 }
 
+DirectionPdf direction_pdf(ggxcl::Backend& backend)
+{
+    return [&backend](const ggxcl::SampleParams& p, const std::vector<ggxcl::Vec3>& o) { return backend.pdf(p, o); };
+}
+
 DirectionPdf reference_direction_pdf(ggxcl::Method method)
 {
     return [method](const ggxcl::SampleParams& p, const std::vector<ggxcl::Vec3>& directions) {

@@ -1,5 +1,5 @@
 // pdf_bins.hpp - a histogram's expectation from a sampler's pdf on the
-// device (Sampler::pdf or VulkanSampler::pdf), for samplers the reference does not know (a user
+// device (Backend::pdf), for samplers the reference does not know (a user
 // sampler): each bin of equal solid angle (the device histogram's, over
 // cos theta in [-1, 1] and phi) integrated adaptively in (cos theta, phi),
 // where dw = d(cos theta) dphi, with an error estimate per bin.  Used by
@@ -16,14 +16,9 @@
 
 namespace ggxbridge {
 
-// The pdf of each direction under a request, on a device: Sampler::pdf or VulkanSampler::pdf.
+// The pdf of each direction under a request: a back end's (Backend::pdf) or the reference's.
 using DirectionPdf = std::function<std::vector<float>(const ggxcl::SampleParams&, const std::vector<ggxcl::Vec3>&)>;
-
-template <class Api>
-DirectionPdf direction_pdf(Api& sampler)
-{
-    return [&sampler](const ggxcl::SampleParams& p, const std::vector<ggxcl::Vec3>& o) { return sampler.pdf(p, o); };
-}
+DirectionPdf direction_pdf(ggxcl::Backend& backend);
 
 // The double-precision reference's pdf of o (ggxref::pdf_o) of a built-in method, as a DirectionPdf
 // on the host.

@@ -105,8 +105,7 @@ std::vector<ggxcl::SampleParams> accuracy_configs(const ggxcl::SampleParams& who
     return configs;
 }
 
-template <class Api>
-NumericalError numerical_error(Api& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
+NumericalError numerical_error(ggxcl::Backend& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
                                ggxcl::Precision precision, ggxcl::Sequence sequence)
 {
     std::vector<double> angles, pdfs;
@@ -123,20 +122,18 @@ NumericalError numerical_error(Api& sampler, const ggxcl::SampleParams& who, ggx
     return error;
 }
 
-template <class Api>
-double pdf_disagreement(Api& sampler, const ggxcl::SampleParams& who)
+double pdf_disagreement(ggxcl::Backend& sampler, const ggxcl::SampleParams& who)
 {
     double disagree = 0.0, with_density = 0.0;
     for (const ggxcl::SampleParams& p : accuracy_configs(who, who.precision))
-        for (const PdfAgreement& a : pdf_agreements(pdf_device(sampler), p, {accuracy_seed, 0, accuracy_samples}, nullptr)) {
+        for (const PdfAgreement& a : pdf_agreements(sampler, p, {accuracy_seed, 0, accuracy_samples}, nullptr)) {
             disagree += double(a.failures());  // a pdf not finite or not positive on a kept sample counts
             with_density += double(a.with_density + a.not_finite + a.not_positive);
         }
     return with_density > 0.0 ? disagree / with_density : 1.0;
 }
 
-template <class Api>
-SceneVariance albedo_scene_variance(Api& sampler, const ggxcl::SampleParams& who,
+SceneVariance albedo_scene_variance(ggxcl::Backend& sampler, const ggxcl::SampleParams& who,
                                     ggxcl::Precision precision, int size, std::uint64_t samples_per_cell)
 {
     SceneVariance scene;
@@ -163,8 +160,7 @@ std::vector<double> albedo_table(int size)
     return exact;
 }
 
-template <class Api>
-double albedo_table_rmse(Api& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
+double albedo_table_rmse(ggxcl::Backend& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
                          ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
                          const std::vector<double>& exact)
 {
@@ -187,7 +183,7 @@ ggxref::DielectricAlbedo dielectric_exact(const ggxcl::SampleParams& params)
                                      params.transport == ggxcl::Transport::radiance);
 }
 
-DielectricAccuracy dielectric_accuracy(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+DielectricAccuracy dielectric_accuracy(ggxcl::Backend& sampler, const ggxcl::SampleParams& params,
                                        const ggxref::DielectricAlbedo& exact)
 {
     DielectricAccuracy a;
@@ -205,18 +201,5 @@ DielectricAccuracy dielectric_accuracy(ggxcl::Sampler& sampler, const ggxcl::Sam
     a.measured = true;
     return a;
 }
-
-// The two APIs' builds of the templates above.
-#define GGX_BENCH_ACCURACY_FOR(Api)                                                                               \
-    template NumericalError numerical_error<Api>(Api&, const ggxcl::SampleParams&, ggxcl::Method, ggxcl::Precision, \
-                                                 ggxcl::Sequence);                                               \
-    template double pdf_disagreement<Api>(Api&, const ggxcl::SampleParams&);                                     \
-    template SceneVariance albedo_scene_variance<Api>(Api&, const ggxcl::SampleParams&, ggxcl::Precision, int,    \
-                                                      std::uint64_t);                                            \
-    template double albedo_table_rmse<Api>(Api&, const ggxcl::SampleParams&, ggxcl::Precision, ggxcl::Sequence,  \
-                                           int, std::uint64_t, int, const std::vector<double>&);
-GGX_BENCH_ACCURACY_FOR(ggxcl::Sampler)
-GGX_BENCH_ACCURACY_FOR(ggxcl::VulkanSampler)
-#undef GGX_BENCH_ACCURACY_FOR
 
 } // namespace ggxapp

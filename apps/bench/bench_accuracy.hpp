@@ -32,19 +32,14 @@ struct NumericalError {
     std::uint64_t non_finite = 0;
 };
 
-// The functions below that take a device's sampler (Api) are built for ggxcl::Sampler (OpenCL)
-// and ggxcl::VulkanSampler.
-
 // `who`'s sampler (its method and user sampler) against the reference of `method` on the same
 // uniforms: for a built-in method, who.method itself; for a user sampler, the map it reproduces.
-template <class Api>
-NumericalError numerical_error(Api& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
+NumericalError numerical_error(ggxcl::Backend& sampler, const ggxcl::SampleParams& who, ggxcl::Method method,
                                ggxcl::Precision precision, ggxcl::Sequence sequence = ggxcl::Sequence::philox);
 
 // The fraction of samples with a density whose pdf recomputed from (i, o) by who's own pdf
 // function differs from pdf_o by more than 1e-3 (relative), over the accuracy configurations.
-template <class Api>
-double pdf_disagreement(Api& sampler, const ggxcl::SampleParams& who);
+double pdf_disagreement(ggxcl::Backend& sampler, const ggxcl::SampleParams& who);
 
 // What the device and the native baseline are both measured on: the 9
 // configurations (normalized parameters), samples 0 .. 2^13 - 1 of this seed.
@@ -65,8 +60,7 @@ struct SceneVariance {
 };
 
 // Of `who`'s sampler (its method and user sampler), as below.
-template <class Api>
-SceneVariance albedo_scene_variance(Api& sampler, const ggxcl::SampleParams& who,
+SceneVariance albedo_scene_variance(ggxcl::Backend& sampler, const ggxcl::SampleParams& who,
                                     ggxcl::Precision precision, int size, std::uint64_t samples_per_cell);
 
 // The exact albedo of every cell of the size x size table (reference
@@ -76,8 +70,7 @@ std::vector<double> albedo_table(int size);
 // The table's RMSE against `exact` from `samples_per_cell` samples per cell
 // of `sequence`, over `streams` independent streams (seeds; for Sobol points
 // independent scrambles) of each cell: measured, for any sequence.
-template <class Api>
-double albedo_table_rmse(Api& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
+double albedo_table_rmse(ggxcl::Backend& sampler, const ggxcl::SampleParams& who, ggxcl::Precision precision,
                          ggxcl::Sequence sequence, int size, std::uint64_t samples_per_cell, int streams,
                          const std::vector<double>& exact);
 
@@ -97,8 +90,8 @@ inline constexpr std::uint64_t dielectric_stream_samples = 1u << 17;
 // The exact reflectance and transmittance of params (eta and transport set).
 ggxref::DielectricAlbedo dielectric_exact(const ggxcl::SampleParams& params);
 
-// Sampler::furnace over dielectric_streams streams of dielectric_stream_samples each.
-DielectricAccuracy dielectric_accuracy(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params,
+// Backend::furnace over dielectric_streams streams of dielectric_stream_samples each.
+DielectricAccuracy dielectric_accuracy(ggxcl::Backend& sampler, const ggxcl::SampleParams& params,
                                        const ggxref::DielectricAlbedo& exact);
 
 } // namespace ggxapp

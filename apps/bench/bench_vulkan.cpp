@@ -58,7 +58,7 @@ std::vector<ApiTask> api_tasks(const BenchPlan& plan, const std::vector<std::str
 // sampler's pdf self-consistency; the furnace row's albedo variance (philox) and the table's
 // RMSE at the budget on its sequence, spent at the row's speed.  `exact`: the table's exact
 // albedos, computed when first needed.
-void add_accuracy(ggxcl::VulkanSampler& vulkan, const ApiTask& task, const ApiBenchReport& report,
+void add_accuracy(ggxcl::Backend& vulkan, const ApiTask& task, const ApiBenchReport& report,
                   std::vector<double>& exact, ApiBenchRow& row)
 {
     const ggxcl::SampleParams& p = task.params;
@@ -89,9 +89,8 @@ void add_accuracy(ggxcl::VulkanSampler& vulkan, const ApiTask& task, const ApiBe
                                           report.rmse_streams, exact);
 }
 
-// The job of `task` on one API; Api is ggxcl::Sampler or ggxcl::VulkanSampler.
-template <typename Api>
-void run_task(Api& api, const ApiTask& task, std::uint64_t count)
+// The job of `task` on one back end.
+void run_task(ggxcl::Backend& api, const ApiTask& task, std::uint64_t count)
 {
     const ggxcl::SampleRange range{bench_seed, 0, count};
     if (task.job == "furnace")
@@ -128,12 +127,13 @@ ApiBenchReport measure_api_bench(const BenchPlan& plan, const std::string& vulka
     report.samples_per_cell = plan.settings.samples_per_cell;
     report.budget_ms = plan.settings.budget_ms;
     report.rmse_streams = plan.settings.rmse_streams;
-    ggxcl::VulkanSampler vulkan(vulkan_selector, language);
+    const std::unique_ptr<ggxcl::Backend> vulkan_backend = ggxcl::open_backend(ggxcl::Api::vulkan, vulkan_selector, language);
+    ggxcl::Backend& vulkan = *vulkan_backend;
     report.vulkan_device = vulkan.device_name();
     report.language = ggxcl::shader_language_name(language);
-    std::unique_ptr<ggxcl::Sampler> opencl;
+    std::unique_ptr<ggxcl::Backend> opencl;
     try {
-        opencl = std::make_unique<ggxcl::Sampler>();
+        opencl = ggxcl::open_backend(ggxcl::Api::opencl);
         report.opencl_device = opencl->device_name();
     } catch (const ggxcl::Error& e) {
         report.opencl_unavailable = e.what();

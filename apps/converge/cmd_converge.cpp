@@ -46,19 +46,13 @@ void run_converge(const ConvergeCommand& cmd, const ConvergePlan& plan, const Ap
     std::vector<ConvergeSpeed> speeds;
     std::vector<ConvergeCurve> curves;
     std::string device;
-    const auto measure = [&](auto& sampler) {
-        device = api.device_label(sampler.device_name());
+    {
+        const std::unique_ptr<ggxcl::Backend> sampler = api.open();
+        device = sampler->device_label();
         std::cerr << "converge: " << plan.methods.size() * plan.sequences.size() * plan.configs.size() << " cells of "
                   << plan.randomizations << " streams of 2^" << plan.max_exponent << " samples on " << device << "\n";
-        speeds = measure_speeds(sampler, plan);
-        curves = measure_convergence(sampler, plan);
-    };
-    if (api.vulkan) {
-        ggxcl::VulkanSampler sampler(api.selector, api.language);
-        measure(sampler);
-    } else {
-        ggxcl::Sampler sampler(cmd.device);
-        measure(sampler);
+        speeds = measure_speeds(*sampler, plan);
+        curves = measure_convergence(*sampler, plan);
     }
     const std::string csv = converge_csv(curves, plan.randomizations);
     if (!cmd.csv.empty())

@@ -41,10 +41,8 @@ void add_chunk(const ggxcl::SampleView& s, std::uint64_t offset, const ConvergeP
     }
 }
 
-// The curves of one method, sequence and configuration: R streams of 2^max
-// samples.  Api: ggxcl::Sampler or ggxcl::VulkanSampler.
-template <class Api>
-std::vector<ConvergeCurve> measure_cell(Api& sampler, const ConvergePlan& plan, const SamplerChoice& method,
+// The curves of one method, sequence and configuration: R streams of 2^max samples.
+std::vector<ConvergeCurve> measure_cell(ggxcl::Backend& sampler, const ConvergePlan& plan, const SamplerChoice& method,
                                         ggxcl::Sequence sequence, const ConvergeConfig& config)
 {
     const ggxcl::SampleParams p = converge_params(method, sequence, config, plan.precision);
@@ -96,8 +94,7 @@ double log_log_slope(const std::vector<std::uint64_t>& x, const std::vector<doub
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-template <class Api>
-std::vector<ConvergeCurve> measure_all_cells(Api& sampler, const ConvergePlan& plan)
+std::vector<ConvergeCurve> measure_convergence(ggxcl::Backend& sampler, const ConvergePlan& plan)
 {
     sampler.set_chunk_size(std::uint64_t(1) << plan.max_exponent);  // a stream in one chunk
     std::vector<ConvergeCurve> curves;
@@ -109,35 +106,7 @@ std::vector<ConvergeCurve> measure_all_cells(Api& sampler, const ConvergePlan& p
     return curves;
 }
 
-std::vector<ConvergeCurve> measure_convergence(ggxcl::Sampler& sampler, const ConvergePlan& plan)
-{
-    return measure_all_cells(sampler, plan);
-}
-
-std::vector<ConvergeCurve> measure_convergence(ggxcl::VulkanSampler& sampler, const ConvergePlan& plan)
-{
-    return measure_all_cells(sampler, plan);
-}
-
-std::vector<ConvergeSpeed> measure_speeds(ggxcl::Sampler& sampler, const ConvergePlan& plan)
-{
-    if (plan.speed_count == 0)
-        return {};
-    std::vector<BenchTask> tasks;
-    std::vector<ConvergeSpeed> speeds;
-    for (const SamplerChoice& method : plan.methods)
-        for (ggxcl::Sequence sequence : plan.sequences) {
-            tasks.push_back({BenchJob::furnace, converge_params(method, sequence, plan.configs.front(), plan.precision)});
-            speeds.push_back({method, sequence, 0.0});
-        }
-    DeviceTimer timer(sampler, plan.speed_count);
-    std::vector<Timing> timings = timer.time_interleaved(tasks, 5);
-    for (std::size_t t = 0; t < tasks.size(); ++t)
-        speeds[t].ns_per_sample = timings[t].median;
-    return speeds;
-}
-
-std::vector<ConvergeSpeed> measure_speeds(ggxcl::VulkanSampler& sampler, const ConvergePlan& plan)
+std::vector<ConvergeSpeed> measure_speeds(ggxcl::Backend& sampler, const ConvergePlan& plan)
 {
     if (plan.speed_count == 0)
         return {};
@@ -147,7 +116,7 @@ std::vector<ConvergeSpeed> measure_speeds(ggxcl::VulkanSampler& sampler, const C
         for (ggxcl::Sequence sequence : plan.sequences) {
             params.push_back(converge_params(method, sequence, plan.configs.front(), plan.precision));
             speeds.push_back({method, sequence, 0.0});
-            sampler.furnace(params.back(), {1, 0, 1024});  // builds the shader
+            sampler.furnace(params.back(), {1, 0, 1024});  // builds the program
         }
     std::vector<std::vector<double>> ns(params.size());
     for (int round = 0; round < 5; ++round)

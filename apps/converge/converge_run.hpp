@@ -28,9 +28,8 @@ struct ConvergeCurve {
 };
 
 // Every curve of the plan, in the order method, sequence, configuration,
-// integrand, drawn on an OpenCL or a Vulkan device (`--api vulkan`).
-std::vector<ConvergeCurve> measure_convergence(ggxcl::Sampler& sampler, const ConvergePlan& plan);
-std::vector<ConvergeCurve> measure_convergence(ggxcl::VulkanSampler& sampler, const ConvergePlan& plan);
+// integrand, drawn on `sampler`'s device.
+std::vector<ConvergeCurve> measure_convergence(ggxcl::Backend& sampler, const ConvergePlan& plan);
 
 // Least-squares slope of log(y) against log(x) (positive x, y).
 double log_log_slope(const std::vector<std::uint64_t>& x, const std::vector<double>& y);
@@ -41,9 +40,9 @@ struct ConvergeSpeed {
     double ns_per_sample = 0;  // median of interleaved timed runs of the fused estimator
 };
 // One speed per method and sequence at the plan's first configuration (empty
-// when the plan times nothing).  On Vulkan: the median of 5 wall-clock runs
-// of VulkanSampler::furnace, interleaved as on OpenCL.
-std::vector<ConvergeSpeed> measure_speeds(ggxcl::Sampler& sampler, const ConvergePlan& plan);
-std::vector<ConvergeSpeed> measure_speeds(ggxcl::VulkanSampler& sampler, const ConvergePlan& plan);
+// when the plan times nothing): the median of 5 wall-clock runs of
+// Backend::furnace (the whole call, as a user makes it), the methods
+// interleaved round by round so that the machine's drift spreads alike.
+std::vector<ConvergeSpeed> measure_speeds(ggxcl::Backend& sampler, const ConvergePlan& plan);
 
 } // namespace ggxapp

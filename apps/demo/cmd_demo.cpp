@@ -166,12 +166,10 @@ DemoCounts check_demo(const DemoCommand& demo, const ApiChoice& api, std::vector
     return counts;
 }
 
-// Every method's files and the pages, drawn by `sampler` (ggxcl::Sampler or ggxcl::VulkanSampler)
-// named `device`.
-template <class Api>
-void run_demo_on(Api& sampler, const ApiChoice& api, const std::string& device, const DemoCommand& demo,
-                 DemoCounts counts)
+// Every method's files and the pages, drawn by `sampler`.
+void run_demo_on(ggxcl::Backend& sampler, const ApiChoice& api, const DemoCommand& demo, DemoCounts counts)
 {
+    const std::string device = sampler.device_label();
     const std::uint64_t count = counts.cloud, histogram_count = counts.histogram;
     std::cout << "device: " << device << "\n";
     std::vector<MethodResult> results;
@@ -212,13 +210,7 @@ void run_demo(const DemoCommand& demo, DemoCounts counts, const ApiChoice& api)
 {
     std::filesystem::create_directories(demo.out);
     check_writable_folder("--out", demo.out + "/index.md");
-    if (api.vulkan) {
-        ggxcl::VulkanSampler sampler(api.selector, api.language);
-        run_demo_on(sampler, api, api.device_label(sampler.device_name()), demo, counts);
-    } else {
-        ggxcl::Sampler sampler(demo.options.device);
-        run_demo_on(sampler, api, sampler.device_name(), demo, counts);
-    }
+    run_demo_on(*api.open(), api, demo, counts);
 }
 
 } // namespace

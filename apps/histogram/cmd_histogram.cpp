@@ -55,22 +55,18 @@ struct HistogramCommand {
 };
 
 // The job on the API chosen, the expectation computed while the device opens.
-HistogramResult run_on_device(const HistogramCommand& command, const HistogramJob& job, const ApiChoice& api)
+HistogramResult run_on_device(const HistogramJob& job, const ApiChoice& api)
 {
     std::future<std::vector<double>> expectation = start_expectation(job);
-    if (api.vulkan) {
-        ggxcl::VulkanSampler sampler(api.selector, api.language);
-        return run_histogram_job(sampler, job, std::move(expectation));
-    }
-    ggxcl::Sampler sampler(command.options.device);
-    return run_histogram_job(sampler, job, std::move(expectation));
+    const std::unique_ptr<ggxcl::Backend> device = api.open();
+    return run_histogram_job(*device, job, std::move(expectation));
 }
 
 // `level`: the --check significance level, 0 when none was given.
 void run_histogram(const HistogramCommand& command, const HistogramJob& job, const ApiChoice& api, double level)
 {
     check_writable_folder("--out", job.prefix);
-    HistogramResult result = run_on_device(command, job, api);
+    HistogramResult result = run_on_device(job, api);
     std::cout << job.prefix << ": chi-square " << result.chi_square << " on " << result.dof << " dof, p = "
               << result.p_value << (result.png.empty() ? "" : ", figure " + result.png) << "\n";
     std::string failed;

@@ -26,17 +26,7 @@ std::string file_name(const std::string& path)
     return path.substr(path.rfind('/') + 1);
 }
 
-// Where a job's histogram is counted: the device's name and API, its histogram call, the samples
-// of a warm-up run (a whole work-group and a tail), and the samples and pdf a user sampler's
-// checks take.
-struct HistogramDevice {
-    std::string name, api;
-    std::function<ggxcl::Histogram(const ggxcl::SampleParams&, const ggxcl::SampleRange&, int, int, ggxcl::Field)> count;
-    std::uint64_t warm_up_samples = 0;
-    PdfDevice pdfs;
-};
-
-nlohmann::json summary(const HistogramDevice& device, const HistogramJob& job, const ggxcl::Histogram& counts,
+nlohmann::json summary(const ggxcl::Backend& device, const HistogramJob& job, const ggxcl::Histogram& counts,
                        const ggxref::ChiSquare& fit, double seconds)
 {
     nlohmann::json doc = describe_sampling(job.params, job.theta_degrees, job.phi_degrees, job.range);
@@ -55,8 +45,8 @@ nlohmann::json summary(const HistogramDevice& device, const HistogramJob& job, c
     doc["pooling"] = "bins expecting fewer than 5 samples are pooled into one";
     doc["observed"] = file_name(job.prefix) + ".observed.npy";
     doc["expected"] = file_name(job.prefix) + ".expected.npy";
-    doc["device"] = device.name;
-    doc["api"] = device.api;
+    doc["device"] = device.device_name();
+    doc["api"] = device.api_label();
     doc["device_seconds"] = seconds;
     return doc;
 }
@@ -64,7 +54,7 @@ nlohmann::json summary(const HistogramDevice& device, const HistogramJob& job, c
 // The user sampler's checks, in report order: the chi-square against its own pdf and in rings of
 // theta, the integral, the reach, the chi-square against the distribution it claims, the mean
 // weight, and its pdfs from (i, o), on one draw of up to 2^20 samples.
-std::vector<HistogramCheck> user_sampler_checks(const PdfDevice& device, const HistogramJob& job,
+std::vector<HistogramCheck> user_sampler_checks(ggxcl::Backend& device, const HistogramJob& job,
                                                 const ggxcl::Histogram& counts, const ggxbridge::UserFits& fits)
 {
     // The samples judged one by one: the first 2^20 of the range (the pdf checks take 65 536).
@@ -73,7 +63,7 @@ std::vector<HistogramCheck> user_sampler_checks(const PdfDevice& device, const H
                                                    judged_fields());
     std::vector<HistogramCheck> checks = {
         chi_square_check("its own pdf", fits.own_fit, job.level, samples_where_zero(counts, fits.own.kept)),
-        theta_check(device.pdf, job.params, drawn, job.direction, job.level), integral_check(fits.own, counts),
+        theta_check(ggxbridge::direction_pdf(device), job.params, drawn, job.direction, job.level), integral_check(fits.own, counts),
         reach_check(fits.own, counts)};
     if (fits.claims) {
         const std::string claim(ggxcl::distribution_name(job.params.user_sampler->distribution()));
@@ -104,36 +94,24 @@ std::future<std::vector<double>> start_expectation(const HistogramJob& job)
     });
 }
 
-HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job)
-{
-    return run_histogram_job(sampler, job, start_expectation(job));
-}
-
-HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const HistogramJob& job)
-{
-    return run_histogram_job(sampler, job, start_expectation(job));
-}
-
-namespace {
-
-HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
-                       std::future<std::vector<double>> expectation)
+HistogramResult run_histogram_job(ggxcl::Backend& device, const HistogramJob& job,
+                                  std::future<std::vector<double>> expectation)
 {
     // A small warm-up run (a whole work-group and a tail) builds and
     // JIT-compiles the kernels, so the timing below measures sampling and
     // binning alone.
-    device.count(job.params, {job.range.seed, job.range.first, device.warm_up_samples}, job.bins_z, job.bins_phi,
-                 job.direction);
+    device.histogram(job.params, {job.range.seed, job.range.first, device.work_group_size() + 1}, job.bins_z,
+                     job.bins_phi, job.direction);
     // The expectation, started before, is awaited first: the timing below
     // then measures the device alone, not the device beside the quadrature.
     const std::vector<double> reference = expectation.get();
     auto start = std::chrono::steady_clock::now();
-    ggxcl::Histogram counts = device.count(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
+    ggxcl::Histogram counts = device.histogram(job.params, job.range, job.bins_z, job.bins_phi, job.direction);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const bool user = job.params.method == ggxcl::Method::user;
     const ggxbridge::BinRequest request{job.bins_z, job.bins_phi, job.direction, job.range.count, &counts.counts};
     const ggxbridge::UserFits fits =
-        user ? ggxbridge::user_fits(device.pdfs.pdf, job.params, counts, request, reference) : ggxbridge::UserFits{};
+        user ? ggxbridge::user_fits(ggxbridge::direction_pdf(device), job.params, counts, request, reference) : ggxbridge::UserFits{};
     const std::vector<double>& probabilities = user ? fits.own.kept : reference;
     const ggxref::ChiSquare fit =
         user ? fits.own_fit : ggxbridge::histogram_fit(counts, probabilities, job.params.eta != 0.0f);
@@ -146,7 +124,7 @@ HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
     nlohmann::json doc = summary(device, job, counts, fit, seconds);
     HistogramResult result{fit.statistic, fit.p_value, double(job.range.count) / seconds, fit.dof, "", {}};
     if (user) {
-        result.checks = user_sampler_checks(device.pdfs, job, counts, fits);
+        result.checks = user_sampler_checks(device, job, counts, fits);
         doc["expected_from_pdf_of"] = ggxcl::sampler_name(job.params) +
                                       " (its own pdf, integrated adaptively over each bin; the samples it kept)";
         doc["quadrature_error"] = fits.own.error_total();
@@ -169,27 +147,9 @@ HistogramResult run_on(const HistogramDevice& device, const HistogramJob& job,
     return result;
 }
 
-} // namespace
-
-HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job,
-                                  std::future<std::vector<double>> expectation)
+HistogramResult run_histogram_job(ggxcl::Backend& device, const HistogramJob& job)
 {
-    const HistogramDevice device{sampler.device_name(), "opencl",
-                                 [&](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, int z, int phi,
-                                     ggxcl::Field d) { return sampler.histogram(p, r, z, phi, d); },
-                                 sampler.work_group_size() + 1, pdf_device(sampler)};
-    return run_on(device, job, std::move(expectation));
-}
-
-HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const HistogramJob& job,
-                                  std::future<std::vector<double>> expectation)
-{
-    const HistogramDevice device{sampler.device_name(),
-                                 std::string("vulkan (") + ggxcl::shader_language_name(sampler.language()) + ")",
-                                 [&](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, int z, int phi,
-                                     ggxcl::Field d) { return sampler.histogram(p, r, z, phi, d); },
-                                 65, pdf_device(sampler)};
-    return run_on(device, job, std::move(expectation));
+    return run_histogram_job(device, job, start_expectation(job));
 }
 
 } // namespace ggxapp

@@ -42,13 +42,9 @@ struct HistogramResult {
 // the device and the device bins.
 std::future<std::vector<double>> start_expectation(const HistogramJob& job);
 
-HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job,
-                                  std::future<std::vector<double>> expectation);
-// The same on a Vulkan device (built-in methods: a user sampler's checks run on OpenCL).
-HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const HistogramJob& job,
+HistogramResult run_histogram_job(ggxcl::Backend& device, const HistogramJob& job,
                                   std::future<std::vector<double>> expectation);
 // Starts the expectation itself, beside the warm-up run.
-HistogramResult run_histogram_job(ggxcl::Sampler& sampler, const HistogramJob& job);
-HistogramResult run_histogram_job(ggxcl::VulkanSampler& sampler, const HistogramJob& job);
+HistogramResult run_histogram_job(ggxcl::Backend& device, const HistogramJob& job);
 
 } // namespace ggxapp

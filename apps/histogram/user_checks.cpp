@@ -130,7 +130,7 @@ HistogramCheck agreement_check(const std::string& name, const PdfAgreement& a, c
 
 } // namespace
 
-std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
+std::vector<PdfAgreement> pdf_agreements(ggxcl::Backend& device, const ggxcl::SampleParams& params,
                                          const ggxcl::SampleSet& samples, std::size_t count,
                                          const ggxcl::Method* claimed)
 {
@@ -148,14 +148,14 @@ std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::S
     return out;
 }
 
-std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
+std::vector<PdfAgreement> pdf_agreements(ggxcl::Backend& device, const ggxcl::SampleParams& params,
                                          const ggxcl::SampleRange& range, const ggxcl::Method* claimed)
 {
     const ggxcl::SampleSet samples = device.generate(params, range, judged_fields());
     return pdf_agreements(device, params, samples, samples.count, claimed);
 }
 
-std::vector<HistogramCheck> pdf_checks(const PdfDevice& device, const ggxcl::SampleParams& params,
+std::vector<HistogramCheck> pdf_checks(ggxcl::Backend& device, const ggxcl::SampleParams& params,
                                        const ggxcl::SampleSet& samples, std::size_t count,
                                        const ggxcl::Method* claimed)
 {

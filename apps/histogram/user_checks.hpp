@@ -44,21 +44,6 @@ struct PdfAgreement {
     std::size_t failures() const { return not_finite + not_positive + disagree; }
 };
 
-// Where the samples and their recomputed pdf come from: a Sampler or a VulkanSampler.
-struct PdfDevice {
-    std::function<ggxcl::SampleSet(const ggxcl::SampleParams&, const ggxcl::SampleRange&, ggxcl::FieldSet)> generate;
-    ggxbridge::DirectionPdf pdf;
-};
-
-template <class Api>
-PdfDevice pdf_device(Api& sampler)
-{
-    return {[&sampler](const ggxcl::SampleParams& p, const ggxcl::SampleRange& r, ggxcl::FieldSet f) {
-                return sampler.generate(p, r, f);
-            },
-            ggxbridge::direction_pdf(sampler)};
-}
-
 // The fields the checks read of each sample: one program draws them for all.
 inline ggxcl::FieldSet judged_fields()
 {
@@ -67,18 +52,18 @@ inline ggxcl::FieldSet judged_fields()
 
 // The first `count` of `samples` (judged_fields) against the pdf recomputed by params' sampler
 // and, with `claimed`, by that method's (in that order).
-std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
+std::vector<PdfAgreement> pdf_agreements(ggxcl::Backend& device, const ggxcl::SampleParams& params,
                                          const ggxcl::SampleSet& samples, std::size_t count,
                                          const ggxcl::Method* claimed);
 // The same for the samples of `range`, drawn here.
-std::vector<PdfAgreement> pdf_agreements(const PdfDevice& device, const ggxcl::SampleParams& params,
+std::vector<PdfAgreement> pdf_agreements(ggxcl::Backend& device, const ggxcl::SampleParams& params,
                                          const ggxcl::SampleRange& range, const ggxcl::Method* claimed);
 
 // pdf_o of the first `count` of `samples` against the pdf recomputed from (i, o) by the sampler
 // and, with `claimed`, by that method: a check fails when a sample's pdf is not finite or not
 // positive where it was kept, when more than 0.1 % of the judged samples disagree, or when none
 // is judged.
-std::vector<HistogramCheck> pdf_checks(const PdfDevice& device, const ggxcl::SampleParams& params,
+std::vector<HistogramCheck> pdf_checks(ggxcl::Backend& device, const ggxcl::SampleParams& params,
                                        const ggxcl::SampleSet& samples, std::size_t count,
                                        const ggxcl::Method* claimed);
 

@@ -31,21 +31,21 @@ struct SampleCommand {
     std::string count, first = "0", fields = "m,o,pdf_m,pdf_o,weight", out, devices, uniforms, shard;
     bool fields_given = false, all_devices = false, sequence_given = false, shard_given = false;
 
-    // One sampler per device of --devices / --all-devices, else the one of --device.
-    std::vector<std::unique_ptr<ggxcl::Sampler>> samplers() const
+    bool split() const { return all_devices || !devices.empty(); }
+
+    // One sampler per device of --devices / --all-devices.
+    std::vector<std::unique_ptr<ggxcl::Sampler>> split_samplers() const
     {
         std::vector<std::unique_ptr<ggxcl::Sampler>> list;
         if (all_devices) {
             for (const ggxcl::DeviceInfo& d : ggxcl::list_devices())
                 list.push_back(std::make_unique<ggxcl::Sampler>(d));
-        } else if (!devices.empty()) {
-            std::stringstream items(devices);
-            std::string item;
-            while (std::getline(items, item, ','))
-                list.push_back(std::make_unique<ggxcl::Sampler>(ggxcl::select_device(item)));
-        } else {
-            list.push_back(std::make_unique<ggxcl::Sampler>(options.device));
+            return list;
         }
+        std::stringstream items(devices);
+        std::string item;
+        while (std::getline(items, item, ','))
+            list.push_back(std::make_unique<ggxcl::Sampler>(ggxcl::select_device(item)));
         return list;
     }
 
@@ -148,15 +148,14 @@ void run_sample(const SampleCommand& command, const PreparedSample& prepared)
     if (!prepared.shard_warning.empty())
         std::cerr << "ggx: warning: " << prepared.shard_warning << "\n";
     check_writable_folder("--out", job.out);
-    if (prepared.api.vulkan) {
-        ggxcl::VulkanSampler sampler(prepared.api.selector, prepared.api.language);
-        run_sample_job(sampler, job);
-    } else {
-        std::vector<std::unique_ptr<ggxcl::Sampler>> owned = command.samplers();
+    if (command.split()) {
+        std::vector<std::unique_ptr<ggxcl::Sampler>> owned = command.split_samplers();
         std::vector<ggxcl::Sampler*> samplers;
         for (auto& s : owned)
             samplers.push_back(s.get());
-        run_sample_job(samplers, job);
+        run_split_sample_job(samplers, job);
+    } else {
+        run_sample_job(*prepared.api.open(), job);
     }
     std::cout << job.out << ": " << job.range.count << " samples of " << ggxcl::sampler_name(job.params)
               << (prepared.shard_note.empty() ? "" : ", " + prepared.shard_note) << "\n";

@@ -79,7 +79,7 @@ nlohmann::json sidecar(const std::string& device, const std::string& api, const 
 
 // Draws the job's samples through `draw`, which hands each chunk to the sink
 // it is given, into the job's file and sidecar (each through a temporary file).
-using DrawChunks = std::function<void(const ggxcl::Sampler::ChunkViewSink& sink)>;
+using DrawChunks = std::function<void(const ggxcl::ChunkViewSink& sink)>;
 void write_samples(const SampleJob& job, const std::string& device, const std::string& api, const DrawChunks& draw)
 {
     const bool dielectric = job.params.eta != 0.0f;
@@ -173,30 +173,22 @@ std::string sidecar_path(const std::string& npy_path)
     return (has_extension ? npy_path.substr(0, dot) : npy_path) + ".json";
 }
 
-void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job)
+void run_sample_job(ggxcl::Backend& device, const SampleJob& job)
 {
-    run_sample_job(std::vector<ggxcl::Sampler*>{&sampler}, job);
-}
-
-void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
-{
-    const ggxcl::FieldSet fields(job.fields);
-    write_samples(job, device_names(samplers), "opencl", [&](const ggxcl::Sampler::ChunkViewSink& sink) {
-        if (samplers.size() == 1)
-            samplers.front()->generate_chunk_views(job.params, job.range, fields, sink, job.per_sample);
-        else
-            ggxcl::generate_split(samplers, job.params, job.range, fields,
-                                  [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
-                                      sink(ggxcl::view_of(chunk), offset);
-                                  });
+    write_samples(job, device.device_name(), device.api_label(), [&](const ggxcl::ChunkViewSink& sink) {
+        device.generate_chunk_views(job.params, job.range, ggxcl::FieldSet(job.fields), sink, job.per_sample);
     });
 }
 
-void run_sample_job(ggxcl::VulkanSampler& sampler, const SampleJob& job)
+void run_split_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job)
 {
-    const std::string api = std::string("vulkan (") + ggxcl::shader_language_name(sampler.language()) + ")";
-    write_samples(job, sampler.device_name(), api, [&](const ggxcl::Sampler::ChunkViewSink& sink) {
-        sampler.generate_chunk_views(job.params, job.range, ggxcl::FieldSet(job.fields), sink, job.per_sample);
+    if (samplers.size() == 1)
+        return run_sample_job(*samplers.front(), job);
+    write_samples(job, device_names(samplers), "opencl", [&](const ggxcl::ChunkViewSink& sink) {
+        ggxcl::generate_split(samplers, job.params, job.range, ggxcl::FieldSet(job.fields),
+                              [&](const ggxcl::SampleSet& chunk, std::uint64_t offset) {
+                                  sink(ggxcl::view_of(chunk), offset);
+                              });
     });
 }
 

@@ -39,14 +39,12 @@ std::vector<ggxcl::Field> ply_fields(const std::vector<ggxcl::Field>& requested)
 // "samples.npy" -> "samples.json".
 std::string sidecar_path(const std::string& npy_path);
 
-// Writes the samples and their sidecar (each through a temporary file).
-void run_sample_job(ggxcl::Sampler& sampler, const SampleJob& job);
+// Writes the samples and their sidecar (each through a temporary file; the
+// sidecar's "api" says which API and shader language drew them).
+void run_sample_job(ggxcl::Backend& device, const SampleJob& job);
 
-// The same with the range split across several samplers (one per device),
-// giving the same bits as one device of the same type.
-void run_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job);
-
-// The same on a Vulkan device (the sidecar's "api" says which language).
-void run_sample_job(ggxcl::VulkanSampler& sampler, const SampleJob& job);
+// The same with the range split across several OpenCL devices (one sampler
+// each, ggxcl::generate_split), giving the same bits as one device of the same type.
+void run_split_sample_job(const std::vector<ggxcl::Sampler*>& samplers, const SampleJob& job);
 
 } // namespace ggxapp

@@ -12,6 +12,7 @@
 // call giving the bits it gives alone (docs/LIBRARY.md "Threads").
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -58,6 +59,8 @@ public:
     // Samples per device pass; memory stays bounded by it and results do not depend on it.
     virtual void set_chunk_size(std::uint64_t samples) = 0;
     virtual std::uint64_t chunk_size() const = 0;
+    // Work-items (invocations) per work-group of its launches; results do not depend on it.
+    virtual std::size_t work_group_size() const = 0;
 
     // The samples of `range` into host vectors.
     virtual SampleSet generate(const SampleParams& params, const SampleRange& range, FieldSet fields,

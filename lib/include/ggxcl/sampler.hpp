@@ -115,7 +115,7 @@ public:
     // or the device's maximum if smaller; else 1 .. the device's maximum.
     // Results do not depend on it (sample k is work-item k).
     void set_work_group_size(std::size_t items);
-    std::size_t work_group_size() const;
+    std::size_t work_group_size() const override;
 
     // Draws the samples of `range` into host vectors.
     SampleSet generate(const SampleParams& params, const SampleRange& range, FieldSet fields,

@@ -83,6 +83,7 @@ public:
     // storage buffers are smaller; results do not depend on it.
     void set_chunk_size(std::uint64_t samples) override;
     std::uint64_t chunk_size() const override;
+    std::size_t work_group_size() const override;  // the shaders' local size (64)
 
     SampleSet generate(const SampleParams& params, const SampleRange& range, FieldSet fields,
                        const PerSampleInputs& per_sample = {}) override;

@@ -27,6 +27,7 @@ std::string VulkanSampler::device_name() const { not_built(); }
 ShaderLanguage VulkanSampler::language() const { not_built(); }
 void VulkanSampler::set_chunk_size(std::uint64_t) { not_built(); }
 std::uint64_t VulkanSampler::chunk_size() const { not_built(); }
+std::size_t VulkanSampler::work_group_size() const { not_built(); }
 SampleSet VulkanSampler::generate(const SampleParams&, const SampleRange&, FieldSet, const PerSampleInputs&)
 {
     not_built();

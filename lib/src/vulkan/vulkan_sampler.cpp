@@ -60,6 +60,7 @@ std::size_t VulkanSampler::shaders_from_disk() const
 }
 
 std::uint64_t VulkanSampler::chunk_size() const { return state_->chunk_size; }
+std::size_t VulkanSampler::work_group_size() const { return detail::group_size; }
 
 void VulkanSampler::set_chunk_size(std::uint64_t samples)
 {

@@ -20,7 +20,9 @@ import sys
 
 BEGIN = "<!-- project targets: written by bench/check_targets.py from the bench's CSV -->"
 END = "<!-- end of project targets -->"
-METHODS = ["ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
+from method_table import names  # noqa: E402  (the one table of methods, ggx_contract.h)
+METHODS = names()
 
 
 class Rows:

@@ -9,16 +9,6 @@ namespace {
 const std::string vulkan_prefix = "vulkan:";
 }
 
-std::string ApiChoice::name() const
-{
-    return vulkan ? std::string("vulkan (") + ggxcl::shader_language_name(language) + ")" : "opencl";
-}
-
-std::string ApiChoice::device_label(const std::string& device_name) const
-{
-    return vulkan ? device_name + " (" + name() + ")" : device_name;
-}
-
 std::optional<ggxcl::ShaderLanguage> ApiChoice::sampler_language(const std::string& file) const
 {
     if (!vulkan)

@@ -18,9 +18,6 @@ struct ApiChoice {
     bool vulkan = false;
     std::string selector;  // the device selector without its prefix
     ggxcl::ShaderLanguage language = ggxcl::ShaderLanguage::glsl;  // of the built-in methods' shaders
-    std::string name() const;  // "opencl", or "vulkan (glsl)"
-    // How reports name the device: "NAME", or on Vulkan "NAME (vulkan (glsl))".
-    std::string device_label(const std::string& device_name) const;
     // The language a --sampler FILE is read in: none (OpenCL C) on OpenCL;
     // on Vulkan its extension's (.glsl, .hlsl), else `language`.
     std::optional<ggxcl::ShaderLanguage> sampler_language(const std::string& file) const;

@@ -10,11 +10,13 @@ namespace ggxapp {
 
 void SampleOptions::add_view_options(CLI::App& cmd)
 {
-    cmd.add_option("--alpha", alpha, "GGX roughness AX or AX,AY, each from 1e-30 to 1e30")->capture_default_str();
+    cmd.add_option("--alpha", alpha, std::string("GGX roughness AX or AX,AY, each ") + ggxcl::alpha_range)
+        ->capture_default_str();
     cmd.add_option("--theta", theta, "view polar angle in degrees, 0..180 (above 90: below the horizon)")
         ->capture_default_str();
     cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360")->capture_default_str();
-    cmd.add_option("--seed", seed, "seed of the stream of uniforms, 0..2^32-1")->capture_default_str();
+    cmd.add_option("--seed", seed, std::string("seed of the stream of uniforms, ") + ggxcl::seed_range)
+        ->capture_default_str();
     cmd.add_option("--sequence", sequence, "where the uniforms come from: philox (independent) or sobol "
                                            "(Owen-scrambled Sobol points, keyed by --seed)")
         ->capture_default_str();

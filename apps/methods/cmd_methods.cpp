@@ -1,8 +1,10 @@
 // cmd_methods.cpp - `ggx methods`: the methods and their traits, a Markdown
 // table printed from ggxcl's one table of methods (ggx_contract.h's
 // GGX_METHOD_LIST through ggxcl::method_table), with why each missing trait is
-// missing.  The README's table of methods is this output (test_readme_methods).
+// missing.  The README's table of methods is this output (test_readme_methods);
+// `--names` lists the names alone, one per line, for scripts.
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -42,10 +44,19 @@ Prepare add_methods_command(CLI::App& app)
     CLI::App* cmd = app.add_subcommand(
         "methods", "List the sampling methods and their traits: space, roughness, the normals' distribution, "
                    "dielectrics, views below the horizon");
-    return [cmd]() -> std::optional<Work> {
+    auto names = std::make_shared<bool>(false);
+    cmd->add_flag("--names", *names, "the methods' names alone, one per line (for scripts)");
+    return [cmd, names]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
-        return Work{[] { std::cout << methods_markdown(); }, {}};
+        return Work{[names] {
+                        if (!*names)
+                            std::cout << methods_markdown();
+                        else
+                            for (const ggxcl::MethodTraits& t : ggxcl::method_table)
+                                std::cout << t.name << "\n";
+                    },
+                    {}};
     };
 }
 

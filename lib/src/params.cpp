@@ -307,7 +307,7 @@ void validate(const SampleRange& range)
 {
     if (range.seed > max_seed)
         throw InvalidArgument("seed", std::to_string(range.seed),
-                              "0 .. 2^32 - 1 = " + std::to_string(max_seed) + " (the generators' 32-bit key)");
+                              std::string(seed_range) + " = " + std::to_string(max_seed) + " (the generators' 32-bit key)");
     if (range.count == 0)
         throw InvalidArgument("count", "0", "at least 1 sample");
     if (range.count > std::numeric_limits<std::uint64_t>::max() - range.first)

@@ -85,7 +85,7 @@ chi_square() {  # name, then ggx histogram's options
     failed "chi-square $name (histogram-$name.log)"
   fi
 }
-for method in ndf heitz heitz2017 caps caps-iso bounded; do
+for method in $("$ggx" methods --names); do
   chi_square "$method" --method "$method"
 done
 chi_square caps-dielectric --method caps --eta 1.5 --alpha 0.5

@@ -368,12 +368,23 @@ TEST_CASE("every command makes the folder of its output; --help shows each value
     CHECK(text.find("--theta DEGREES=60") != std::string::npos);
     CHECK(text.find("--out PATH ") != std::string::npos);
     CHECK(text.find(" TEXT") == std::string::npos);  // CLI11's name for any string
+    // The ranges as the library states them (params.hpp), not copies.
+    CHECK(text.find(std::string("each ") + ggxcl::alpha_range) != std::string::npos);
+    CHECK(text.find(std::string("uniforms, ") + ggxcl::seed_range) != std::string::npos);
     fs::remove_all(scratch() / "fresh");
 }
 
-TEST_CASE("ggx methods prints the table of methods (the README's: test_readme_methods)")
+TEST_CASE("ggx methods prints the table of methods (the README's: test_readme_methods); --names the names alone")
 {
     const ggxtest::ScratchFolder case_folder("cli");
+    const fs::path names = scratch() / "names.txt";
+    REQUIRE(ggxtest::run_ggx("{ " + ggxtest::ggx_binary() + " methods --names >" + names.string() + "; }",
+                             scratch() / "stderr.txt", false)
+                .status == 0);
+    std::string expected_names;
+    for (const ggxcl::MethodTraits& t : ggxcl::method_table)
+        expected_names += std::string(t.name) + "\n";
+    CHECK(read_all(names) == expected_names);
     const fs::path table = scratch() / "methods.md";
     Run run = ggxtest::run_ggx("{ " + ggxtest::ggx_binary() + " methods >" + table.string() + "; }",
                                scratch() / "stderr.txt", false);

@@ -8,7 +8,6 @@ compile SPIR-V further, so this measures what a shader hands them.
 usage: python3 tests/vulkan/spirv_counts.py   (from the repository root)"""
 
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -16,17 +15,10 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SHADERS = os.path.join(ROOT, "tests", "vulkan", "shaders")
 KERNELS = os.path.join(ROOT, "kernels")
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+from method_table import methods  # noqa: E402
 ARITHMETIC = ("OpF", "OpI", "OpS", "OpU", "OpExtInst", "OpDot", "OpVectorTimesScalar", "OpSelect",
               "OpBitwise", "OpShift", "OpNot", "OpLogical", "OpConvert", "OpBitcast")
-
-
-def methods():
-    """(name, has a dielectric sampler) of each line of GGX_METHOD_LIST, in id order (ggx_contract.h)."""
-    with open(os.path.join(KERNELS, "ggx_contract.h")) as contract:
-        text = contract.read()
-    lines = re.findall(r'X\((\w+), \w+, "([^"]+)",.*?(?:TANGENT|WORLD),\s*(?:ANISOTROPIC|ISOTROPIC),\s*'
-                       r'(?:VNDF|NDF|OWN),\s*(YES|NO),', text, re.DOTALL)
-    return [(name, dielectric == "YES") for _, name, dielectric in lines]
 
 
 def compile_shader(language, method_id, dielectric, work):

@@ -125,6 +125,7 @@ bool uses_normal(const SampleParams& params);
 // word 1, each its top 24 bits times 2^-24).  Seeds are 0 .. max_seed (the
 // generators' key is one 32-bit word).
 inline constexpr std::uint64_t max_seed = 0xffffffffull;
+inline constexpr const char* seed_range = "0 .. 2^32 - 1";  // what errors and help say of it
 struct SampleRange {
     std::uint64_t seed = 0;
     std::uint64_t first = 0;

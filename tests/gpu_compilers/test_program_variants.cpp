@@ -110,7 +110,7 @@ TEST_CASE("every pair of values that a reachable bulk variant can hold appears")
 TEST_CASE("a request's variant is reachable and gives its options")
 {
     SampleParams p = caps_request();
-    ProgramVariant v = variant_of(ProgramKind::bulk, p, 5, {});
+    ProgramVariant v = variant_of(ProgramKind::bulk, p, 5);
     CHECK(variant_is_reachable(v));
     CHECK(v.isotropic);
     CHECK_FALSE(v.below_horizon);
@@ -122,7 +122,7 @@ TEST_CASE("a request's variant is reachable and gives its options")
     p.alpha_y = 0.5f;
     p.view = {0.5f, 0.0f, -0.8f};
     p.guards = false;
-    v = variant_of(ProgramKind::bulk, p, 5, {});
+    v = variant_of(ProgramKind::bulk, p, 5);
     CHECK_FALSE(v.isotropic);
     CHECK(v.below_horizon);
     CHECK_FALSE(v.guards);
@@ -131,17 +131,17 @@ TEST_CASE("a request's variant is reachable and gives its options")
 
 TEST_CASE("what no request makes is unreachable")
 {
-    ProgramVariant v = variant_of(ProgramKind::bulk, caps_request(), 5, {});
+    ProgramVariant v = variant_of(ProgramKind::bulk, caps_request(), 5);
     v.method = Method::caps_iso;
     v.isotropic = false;
     CHECK_FALSE(variant_is_reachable(v));
     SampleParams unguarded = caps_request();
     unguarded.guards = false;
-    v = variant_of(ProgramKind::furnace, unguarded, 1u << 4, {});
+    v = variant_of(ProgramKind::furnace, unguarded, 1u << 4);
     CHECK(variant_is_reachable(v));
     v.write_mask = 5;  // a furnace writes the weight only
     CHECK_FALSE(variant_is_reachable(v));
-    v = variant_of(ProgramKind::histogram, caps_request(), 0, {});
+    v = variant_of(ProgramKind::histogram, caps_request(), 0);
     CHECK_FALSE(variant_is_reachable(v));  // no bins yet
     v.bins = {32, 64, false};
     CHECK(variant_is_reachable(v));

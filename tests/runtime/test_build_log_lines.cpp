@@ -1,5 +1,5 @@
 // test_build_log_lines.cpp - build logs mapped back to the files of a
-// program's #line markers (lib/src/build_log_lines.hpp), on the host: the
+// program's #line markers (lib/src/core/build_log_lines.hpp), on the host: the
 // location forms of the OpenCL compilers that ignore the markers, the logs
 // of those that honour them left as they are, a user sampler's program as
 // the library assembles it, and a user sampler's build summary starting

@@ -5,7 +5,7 @@
 // id or write mask does not build; and the device dispatchers give the
 // fallback sample ("no sample") for an id that is no method, not some
 // method's sample.  (The host's enums are checked against the contract at
-// compile time, lib/src/device_contract.hpp.)
+// compile time, lib/src/core/device_contract.hpp.)
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // program_variants.hpp - the program variants the runtime can build, enumerated
-// from the same options it writes (lib/src/program_variant.hpp), without a
+// from the same options it writes (lib/src/core/program_variant.hpp), without a
 // device: the list the offline GPU compilers build in tests/gpu_compilers.
 // Test support (library ggx_program_variants), not part of libggxcl.
 #pragma once

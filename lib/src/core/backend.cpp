@@ -1,9 +1,9 @@
-// backend.cpp - opening a back end by API, and the names reports give it.
+// backend.cpp - opening a back end by API (each back end's opener: backend_factories.hpp), and the
+// names reports give it.
 #include "ggxcl/backend.hpp"
 
+#include "backend_factories.hpp"
 #include "ggxcl/error.hpp"
-#include "ggxcl/sampler.hpp"
-#include "ggxcl/vulkan.hpp"
 
 namespace ggxcl {
 
@@ -34,9 +34,7 @@ std::string Backend::device_label() const
 
 std::unique_ptr<Backend> open_backend(Api api, const std::string& selector, ShaderLanguage language)
 {
-    if (api == Api::vulkan)
-        return std::make_unique<VulkanSampler>(selector, language);
-    return std::make_unique<Sampler>(selector);
+    return api == Api::vulkan ? detail::open_vulkan_backend(selector, language) : detail::open_opencl_backend(selector);
 }
 
 } // namespace ggxcl

@@ -5,11 +5,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "ggx_contract.h"
 #include "ggxcl/fields.hpp"
 #include "ggxcl/method.hpp"
-#include "ggxcl/opencl.hpp"
 #include "ggxcl/params.hpp"
 
 namespace ggxcl::detail {
@@ -53,17 +53,17 @@ constexpr int method_id(Method method) { return static_cast<int>(method); }
 constexpr int sequence_id(Sequence sequence) { return static_cast<int>(sequence); }
 inline unsigned write_mask(FieldSet fields) { return fields.bits(); }
 
-// Argument positions (ggx_contract.h) as cl_uint.
-constexpr cl_uint arg_seed = GGX_ARG_SEED, arg_first = GGX_ARG_FIRST, arg_count = GGX_ARG_COUNT,
+// Argument positions (ggx_contract.h), as cl_uint is: 32-bit unsigned.
+constexpr std::uint32_t arg_seed = GGX_ARG_SEED, arg_first = GGX_ARG_FIRST, arg_count = GGX_ARG_COUNT,
                   arg_stride = GGX_ARG_STRIDE, arg_params = GGX_ARG_PARAMS, arg_outputs = GGX_ARG_OUTPUTS;
-constexpr cl_uint arg_output(Field field) { return GGX_ARG_OUTPUTS + static_cast<cl_uint>(field); }
-constexpr cl_uint arg_output_offset(Field field) { return GGX_ARG_OUTPUT_OFFSETS + static_cast<cl_uint>(field); }
-constexpr cl_uint arg_sums_offset = GGX_ARG_SUMS_OFFSET;
-constexpr cl_uint pdf_arg_count = GGX_PDF_ARG_COUNT, pdf_arg_stride = GGX_PDF_ARG_STRIDE,
+constexpr std::uint32_t arg_output(Field field) { return GGX_ARG_OUTPUTS + static_cast<std::uint32_t>(field); }
+constexpr std::uint32_t arg_output_offset(Field field) { return GGX_ARG_OUTPUT_OFFSETS + static_cast<std::uint32_t>(field); }
+constexpr std::uint32_t arg_sums_offset = GGX_ARG_SUMS_OFFSET;
+constexpr std::uint32_t pdf_arg_count = GGX_PDF_ARG_COUNT, pdf_arg_stride = GGX_PDF_ARG_STRIDE,
                   pdf_arg_params = GGX_PDF_ARG_PARAMS, pdf_arg_directions = GGX_PDF_ARG_DIRECTIONS,
                   pdf_arg_pdfs = GGX_PDF_ARG_PDFS, pdf_arg_directions_offset = GGX_PDF_ARG_DIRECTIONS_OFFSET,
                   pdf_arg_pdfs_offset = GGX_PDF_ARG_PDFS_OFFSET;
-constexpr cl_uint count_arg_bins = GGX_COUNT_ARG_BINS, count_arg_count = GGX_COUNT_ARG_COUNT,
+constexpr std::uint32_t count_arg_bins = GGX_COUNT_ARG_BINS, count_arg_count = GGX_COUNT_ARG_COUNT,
                   count_arg_per_item = GGX_COUNT_ARG_PER_ITEM, count_arg_counts = GGX_COUNT_ARG_COUNTS;
 
 // Samples per work-item of ggx_furnace_bulk.

@@ -30,23 +30,7 @@ const char* program_kind_name(ProgramKind kind)
     return kind_names[static_cast<int>(kind)].name;
 }
 
-bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs)
-{
-    if (method_traits(params.method).isotropic_only || params.world_space)
-        return true;  // validated isotropic
-    return inputs.alpha() != nullptr ? inputs.isotropic : params.alpha_x == params.alpha_y;
-}
-
-bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs)
-{
-    bool against_normal = uses_normal(params);
-    if (inputs.view() != nullptr || (against_normal && inputs.normal() != nullptr))
-        return inputs.views_above_horizon;
-    return view_above_horizon(params.view, params.normal, against_normal);
-}
-
-ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
-                          const DeviceInputs& inputs)
+ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask)
 {
     ProgramVariant v;
     v.kind = kind;
@@ -54,16 +38,12 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
     v.precision = params.precision;
     v.sequence = params.sequence;
     v.write_mask = write_mask;
-    v.per_sample_view = inputs.view() != nullptr;
-    v.per_sample_alpha = inputs.alpha() != nullptr;
-    v.per_sample_normal = inputs.normal() != nullptr;
-    v.per_sample_uniforms = inputs.uniforms() != nullptr;
-    v.isotropic = is_isotropic(params, inputs);
-    v.below_horizon = !is_above_horizon(params, inputs);
+    v.isotropic = method_traits(params.method).isotropic_only || params.world_space ||
+                  params.alpha_x == params.alpha_y;
+    v.below_horizon = !view_above_horizon(params.view, params.normal, uses_normal(params));
     v.world_space = params.world_space;
     v.guards = params.guards;
-    v.normal_is_z = inputs.normal() == nullptr && params.normal.x == 0.0f && params.normal.y == 0.0f &&
-                    params.normal.z == 1.0f;
+    v.normal_is_z = params.normal.x == 0.0f && params.normal.y == 0.0f && params.normal.z == 1.0f;
     v.dielectric = params.eta != 0.0f;
     v.importance = v.dielectric && params.transport == Transport::importance;
     v.user = params.user_sampler;

@@ -13,7 +13,7 @@
 #include "ggxcl/fields.hpp"
 #include "ggxcl/method.hpp"
 #include "ggxcl/params.hpp"
-#include "ggxcl/sampler.hpp"
+#include "ggxcl/user_sampler.hpp"
 
 namespace ggxcl::detail {
 
@@ -58,15 +58,11 @@ struct ProgramVariant {
     std::shared_ptr<const UserSampler> user;  // method user: the sampler's file
 };
 
-// Whether a request's alphas are all isotropic, and its views all above the horizon.
-bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs);
-bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
-
-// The variant a request builds: its method, precision, sequence and guards, the fields written, the
-// per-sample inputs set, and what the request needs (isotropic, views below the horizon, world space,
-// n = z).  The bulk program's pdf kernels evaluate the BSDF instead with eval = true (set by the caller).
-ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
-                          const DeviceInputs& inputs = {});
+// The variant a request builds with no per-sample inputs: its method, precision, sequence and
+// guards, the fields written, and what the request needs (isotropic, views below the horizon,
+// world space, n = z).  The bulk program's pdf kernels evaluate the BSDF instead with eval = true
+// (set by the caller).  OpenCL's with the caller's buffers: kernel_launch.hpp.
+ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask);
 
 // The same for per-sample inputs in host memory (the Vulkan back end): what the caller's arrays hold
 // decides the per-sample flags and the promises.

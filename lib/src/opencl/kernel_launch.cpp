@@ -15,6 +15,35 @@ namespace ggxcl {
 
 namespace detail {
 
+bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs)
+{
+    if (method_traits(params.method).isotropic_only || params.world_space)
+        return true;  // validated isotropic
+    return inputs.alpha() != nullptr ? inputs.isotropic : params.alpha_x == params.alpha_y;
+}
+
+bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs)
+{
+    bool against_normal = uses_normal(params);
+    if (inputs.view() != nullptr || (against_normal && inputs.normal() != nullptr))
+        return inputs.views_above_horizon;
+    return view_above_horizon(params.view, params.normal, against_normal);
+}
+
+ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
+                          const DeviceInputs& inputs)
+{
+    ProgramVariant v = variant_of(kind, params, write_mask);
+    v.per_sample_view = inputs.view() != nullptr;
+    v.per_sample_alpha = inputs.alpha() != nullptr;
+    v.per_sample_normal = inputs.normal() != nullptr;
+    v.per_sample_uniforms = inputs.uniforms() != nullptr;
+    v.isotropic = is_isotropic(params, inputs);
+    v.below_horizon = !is_above_horizon(params, inputs);
+    v.normal_is_z = v.normal_is_z && !v.per_sample_normal;
+    return with_kind_fixed(v);
+}
+
 std::string build_options(const cl::Device& device, const ProgramVariant& variant)
 {
     return variant_defines(variant) + precision_options(device, variant.precision);

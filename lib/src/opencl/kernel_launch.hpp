@@ -16,6 +16,16 @@ namespace ggxcl::detail {
 
 constexpr std::size_t preferred_group_size = 256;
 
+// Whether a request's alphas are all isotropic, and its views all above the horizon, with the
+// caller's buffers (their promises where a buffer is set).
+bool is_isotropic(const SampleParams& params, const DeviceInputs& inputs);
+bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs);
+
+// The variant of a request with the caller's per-sample buffers: the per-sample flags are the
+// buffers set, the promises theirs (program_variant.hpp's variant_of without them).
+ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
+                          const DeviceInputs& inputs);
+
 // A variant's options on `device`: its -D options (variant_defines) and the precision mode's
 // options there (precision_options, ggxcl/user_kernels.hpp).
 std::string build_options(const cl::Device& device, const ProgramVariant& variant);

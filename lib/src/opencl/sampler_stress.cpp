@@ -1,8 +1,10 @@
 // sampler_stress.cpp - Sampler::stress: the stability map's cases through
 // kernels/ggx_stress.cl, built for the request (method, guards, dielectric,
-// a user sampler, the precision's options) on the sampler's queue.
+// a user sampler, the precision's options) on the sampler's queue; and open_backend's opener of
+// the OpenCL back end (backend_factories.hpp).
 #include <string>
 
+#include "backend_factories.hpp"
 #include "cl_call.hpp"
 #include "stress_request.hpp"
 #include "ggxcl/sampler.hpp"
@@ -54,5 +56,14 @@ std::vector<float> Sampler::stress(const StressRequest& request, const std::vect
     });
     return out;
 }
+
+namespace detail {
+
+std::unique_ptr<Backend> open_opencl_backend(const std::string& selector)
+{
+    return std::make_unique<Sampler>(selector);
+}
+
+} // namespace detail
 
 } // namespace ggxcl

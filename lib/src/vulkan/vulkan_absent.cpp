@@ -1,5 +1,6 @@
 // vulkan_absent.cpp - the Vulkan API of a build without the back end
 // (Vulkan-Hpp or shaderc not found): every entry point says so.
+#include "backend_factories.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/vulkan.hpp"
 
@@ -14,6 +15,10 @@ namespace {
 } // namespace
 
 struct VulkanSampler::State {};
+
+namespace detail {
+std::unique_ptr<Backend> open_vulkan_backend(const std::string&, ShaderLanguage) { not_built(); }
+} // namespace detail
 
 bool vulkan_built() { return false; }
 std::vector<VulkanDeviceInfo> list_vulkan_devices() { not_built(); }

@@ -5,6 +5,7 @@
 // requested fields' planes; the pdf and BSDF value of given directions
 // through the pdf shader (ggx_pdf.comp or .hlsl).  The histogram, furnace
 // and stress jobs: vulkan_jobs.cpp.
+#include "backend_factories.hpp"
 #include "validated_params.hpp"
 #include "vulkan_sampler_state.hpp"
 
@@ -39,6 +40,15 @@ VulkanSampler::VulkanSampler(const std::string& selector, ShaderLanguage languag
         return std::make_unique<detail::VulkanCompute>(state_->vulkan, info);
     });
 }
+
+namespace detail {
+
+std::unique_ptr<Backend> open_vulkan_backend(const std::string& selector, ShaderLanguage language)
+{
+    return std::make_unique<VulkanSampler>(selector, language);
+}
+
+} // namespace detail
 
 VulkanSampler::~VulkanSampler() = default;
 VulkanSampler::VulkanSampler(VulkanSampler&&) noexcept = default;

@@ -1,0 +1,32 @@
+# core_without_api_headers.cmake - lib/src/core (what every back end shares)
+# includes no OpenCL or Vulkan header: the compiler's dependency list (-M)
+# of each of its files names no CL/ or vulkan/ path.  Control: the same
+# search finds CL/ in opencl/kernel_launch.cpp.
+#   cmake -DCXX=<compiler> -DSOURCE=<repo> -DBINARY=<build> -P core_without_api_headers.cmake
+set(includes -I${SOURCE}/lib/src/core -I${SOURCE}/lib/src/opencl -I${SOURCE}/lib/src -I${SOURCE}/lib/include
+    -I${BINARY}/lib/include -I${BINARY}/lib -I${SOURCE}/kernels)
+function(api_headers_of file out)
+  execute_process(COMMAND ${CXX} -std=c++17 -M ${includes} -x c++ ${file}
+                  OUTPUT_VARIABLE deps ERROR_VARIABLE errors RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${CXX} -M ${file} failed: ${errors}")
+  endif()
+  string(REGEX MATCHALL "[^ \\\n]*(/CL/|/vulkan/|vulkan\\.hpp)[^ \\\n]*" found "${deps}")
+  set(${out} "${found}" PARENT_SCOPE)
+endfunction()
+file(GLOB core_files ${SOURCE}/lib/src/core/*.cpp ${SOURCE}/lib/src/core/*.hpp)
+list(LENGTH core_files count)
+if(count LESS 10)
+  message(FATAL_ERROR "only ${count} files found in ${SOURCE}/lib/src/core")
+endif()
+foreach(file ${core_files})
+  api_headers_of(${file} found)
+  if(found)
+    message(FATAL_ERROR "${file} includes an API header: ${found}")
+  endif()
+endforeach()
+api_headers_of(${SOURCE}/lib/src/opencl/kernel_launch.cpp found)
+if(NOT found)
+  message(FATAL_ERROR "control: no CL/ header found for opencl/kernel_launch.cpp: the search finds nothing")
+endif()
+message(STATUS "${count} files of lib/src/core include no OpenCL or Vulkan header")

@@ -48,18 +48,22 @@ const std::string* first_shader_file(const std::vector<std::string>& files)
 ApiChoice ApiOptions::choose(const std::string& device, const std::vector<std::string>& sampler_files) const
 {
     ApiChoice choice;
-    if (api != "opencl" && api != "vulkan")
+    ggxcl::Api named = ggxcl::Api::opencl;
+    try {
+        named = ggxcl::parse_api(api);
+    } catch (const ggxcl::InvalidArgument&) {
         throw UsageError("--api", api, "opencl or vulkan");
+    }
     const bool api_given = api_option && api_option->count() > 0;
     const bool language_given = language_option && language_option->count() > 0;
     const bool prefixed = device.rfind(vulkan_prefix, 0) == 0;
-    if (prefixed && api_given && api == "opencl")
+    if (prefixed && api_given && named == ggxcl::Api::opencl)
         throw UsageError("--device", device, "an OpenCL device with --api opencl (`ggx devices` lists both)");
     const std::string* shader_file = first_shader_file(sampler_files);
-    if (shader_file && api_given && api == "opencl")
+    if (shader_file && api_given && named == ggxcl::Api::opencl)
         throw UsageError("--api", api, "vulkan with a GLSL or HLSL --sampler (" + *shader_file +
                                            " runs on Vulkan; OpenCL runs OpenCL C)");
-    choice.vulkan = api == "vulkan" || prefixed || shader_file;
+    choice.vulkan = named == ggxcl::Api::vulkan || prefixed || shader_file;
     choice.selector = prefixed ? device.substr(vulkan_prefix.size()) : device;
     try {
         choice.language = ggxcl::parse_shader_language(shader_language);

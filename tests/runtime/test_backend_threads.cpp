@@ -12,6 +12,7 @@
 
 #include "backend_fixture.hpp"
 #include "bit_compare.hpp"
+#include "thread_tasks.hpp"
 
 namespace {
 
@@ -21,22 +22,11 @@ using ggxtest::same_bits;
 constexpr int thread_count = 8, rounds = 2;
 constexpr std::uint32_t samples = 3000;  // three chunks of 1024
 
-struct Task {
-    ggxcl::SampleParams params;
-    ggxcl::SampleRange range;
-};
+using Task = ggxtest::ThreadTask;
 
-// Task t: its own method, roughness, view, sequence and range.
 Task task_of(int t)
 {
-    Task task;
-    task.params.method = ggxcl::all_methods[t % ggxcl::all_methods.size()];
-    task.params.alpha_x = 0.1f + 0.1f * float(t);
-    task.params.alpha_y = task.params.method == ggxcl::Method::caps_iso ? task.params.alpha_x : 0.3f;
-    task.params.view = ggxcl::view_from_angles(10.0 * t, 40.0 * t);
-    task.params.sequence = t % 2 ? ggxcl::Sequence::sobol : ggxcl::Sequence::philox;
-    task.range = {std::uint64_t(t + 1), 1000ull * std::uint64_t(t), samples};
-    return task;
+    return ggxtest::thread_task(t, samples);
 }
 
 struct Results {

@@ -12,6 +12,7 @@
 // call giving the bits it gives alone (docs/LIBRARY.md "Threads").
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -28,8 +29,9 @@
 namespace ggxcl {
 
 enum class Api { opencl, vulkan };
+inline constexpr std::array<Api, 2> all_apis = {Api::opencl, Api::vulkan};
 const char* api_name(Api api);  // "opencl", "vulkan"
-Api parse_api(const std::string& name);  // "opencl" or "vulkan"; InvalidArgument("api", ...) otherwise
+Api parse_api(const std::string& name);  // a name of api_name; InvalidArgument("api", ...) otherwise
 
 // One run of the stability map's kernel or shader (`ggx stress`, kernels/ggx_stress.cl, .comp,
 // .hlsl): `method` with or without the guards, a rough dielectric's with `dielectric`;

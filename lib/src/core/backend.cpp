@@ -3,7 +3,7 @@
 #include "ggxcl/backend.hpp"
 
 #include "backend_factories.hpp"
-#include "ggxcl/error.hpp"
+#include "named_values.hpp"
 
 namespace ggxcl {
 
@@ -14,11 +14,7 @@ const char* api_name(Api api)
 
 Api parse_api(const std::string& name)
 {
-    if (name == "opencl")
-        return Api::opencl;
-    if (name == "vulkan")
-        return Api::vulkan;
-    throw InvalidArgument("api", name, "opencl or vulkan");
+    return detail::parse_named(name, all_apis, api_name, "api");
 }
 
 std::string Backend::api_label() const

@@ -50,18 +50,31 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
     return with_kind_fixed(v);
 }
 
+ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
+                          const PerSampleKinds& kinds)
+{
+    ProgramVariant v = variant_of(kind, params, write_mask);
+    v.per_sample_view = kinds.view;
+    v.per_sample_alpha = kinds.alpha;
+    v.per_sample_normal = kinds.normal;
+    v.per_sample_uniforms = kinds.uniforms;
+    v.isotropic = kinds.isotropic;
+    v.below_horizon = !kinds.above_horizon;
+    v.normal_is_z = v.normal_is_z && !kinds.normal;
+    return with_kind_fixed(v);
+}
+
 ProgramVariant variant_of_host_inputs(ProgramKind kind, const SampleParams& params, unsigned write_mask,
                                       const PerSampleInputs& inputs)
 {
-    ProgramVariant v = variant_of(kind, params, write_mask);
-    v.per_sample_view = !inputs.views.empty();
-    v.per_sample_alpha = !inputs.alphas.empty();
-    v.per_sample_normal = !inputs.normals.empty();
-    v.per_sample_uniforms = !inputs.uniforms.empty();
-    v.isotropic = method_traits(params.method).isotropic_only || params.world_space || all_isotropic(inputs, params);
-    v.below_horizon = !all_views_above_horizon(inputs, params);
-    v.normal_is_z = v.normal_is_z && !v.per_sample_normal;
-    return with_kind_fixed(v);
+    PerSampleKinds kinds;
+    kinds.view = !inputs.views.empty();
+    kinds.alpha = !inputs.alphas.empty();
+    kinds.normal = !inputs.normals.empty();
+    kinds.uniforms = !inputs.uniforms.empty();
+    kinds.isotropic = method_traits(params.method).isotropic_only || params.world_space || all_isotropic(inputs, params);
+    kinds.above_horizon = all_views_above_horizon(inputs, params);
+    return variant_of(kind, params, write_mask, kinds);
 }
 
 std::vector<std::pair<std::string, long>> variant_define_list(const ProgramVariant& v)

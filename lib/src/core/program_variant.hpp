@@ -64,6 +64,16 @@ struct ProgramVariant {
 // (set by the caller).  OpenCL's with the caller's buffers: kernel_launch.hpp.
 ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask);
 
+// What a request's per-sample inputs are, wherever they live (host arrays here, the caller's
+// cl::Buffers in opencl/kernel_launch): which are given, and what holds over all samples.
+struct PerSampleKinds {
+    bool view = false, alpha = false, normal = false, uniforms = false;
+    bool isotropic = true, above_horizon = true;  // every alpha pair, every view
+};
+// The variant of a request with per-sample inputs of these kinds.
+ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
+                          const PerSampleKinds& kinds);
+
 // The same for per-sample inputs in host memory (the Vulkan back end): what the caller's arrays hold
 // decides the per-sample flags and the promises.
 ProgramVariant variant_of_host_inputs(ProgramKind kind, const SampleParams& params, unsigned write_mask,

@@ -33,15 +33,14 @@ bool is_above_horizon(const SampleParams& params, const DeviceInputs& inputs)
 ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned write_mask,
                           const DeviceInputs& inputs)
 {
-    ProgramVariant v = variant_of(kind, params, write_mask);
-    v.per_sample_view = inputs.view() != nullptr;
-    v.per_sample_alpha = inputs.alpha() != nullptr;
-    v.per_sample_normal = inputs.normal() != nullptr;
-    v.per_sample_uniforms = inputs.uniforms() != nullptr;
-    v.isotropic = is_isotropic(params, inputs);
-    v.below_horizon = !is_above_horizon(params, inputs);
-    v.normal_is_z = v.normal_is_z && !v.per_sample_normal;
-    return with_kind_fixed(v);
+    PerSampleKinds kinds;
+    kinds.view = inputs.view() != nullptr;
+    kinds.alpha = inputs.alpha() != nullptr;
+    kinds.normal = inputs.normal() != nullptr;
+    kinds.uniforms = inputs.uniforms() != nullptr;
+    kinds.isotropic = is_isotropic(params, inputs);
+    kinds.above_horizon = is_above_horizon(params, inputs);
+    return variant_of(kind, params, write_mask, kinds);
 }
 
 std::string build_options(const cl::Device& device, const ProgramVariant& variant)

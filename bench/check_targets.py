@@ -34,6 +34,9 @@ class Rows:
         needed = {"method", "precision", "job", "ns_median"}
         if not self.rows or not needed <= set(self.rows[0]):
             sys.exit(f"check_targets: {path} is not the CSV of `ggx bench --csv` (needs columns {sorted(needed)})")
+        # A run on several APIs: the targets are the first device's (its rows, the native ones).
+        first = self.rows[0].get("api", "")
+        self.rows = [row for row in self.rows if row.get("api", "") in (first, "native", "")]
 
     def find(self, method, precision, job, sequence="philox"):
         for row in self.rows:

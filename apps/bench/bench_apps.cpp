@@ -20,11 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 
 // Nanoseconds per sample of one run of `ggx ARGUMENTS` (with -n count).
-double ns_per_sample(std::vector<std::string> arguments, const std::string& device, std::uint32_t count)
+double ns_per_sample(std::vector<std::string> arguments, const DeviceArguments& device, std::uint32_t count)
 {
     arguments.insert(arguments.end(), {"-n", std::to_string(count)});
-    if (!device.empty())
-        arguments.insert(arguments.end(), {"--device", device});
+    arguments.insert(arguments.end(), device.begin(), device.end());
     auto start = std::chrono::steady_clock::now();
     ChildOutput child = run_child("/proc/self/exe", arguments);
     std::chrono::duration<double, std::nano> elapsed = std::chrono::steady_clock::now() - start;
@@ -35,7 +34,7 @@ double ns_per_sample(std::vector<std::string> arguments, const std::string& devi
 
 // Every run writes new files: those of the run before are removed first (a
 // replaced file's pages would be freed inside the timed run).
-Timing median_of_runs(const std::vector<std::string>& arguments, const std::string& device, std::uint32_t count,
+Timing median_of_runs(const std::vector<std::string>& arguments, const DeviceArguments& device, std::uint32_t count,
                       const fs::path& dir)
 {
     auto clear = [&] {
@@ -96,7 +95,7 @@ fs::path scratch_folder()
 
 } // namespace
 
-AppTimings measure_apps(const std::string& device, std::uint32_t count)
+AppTimings measure_apps(const DeviceArguments& device, std::uint32_t count)
 {
     const fs::path dir = scratch_folder();
     AppTimings t;

@@ -14,6 +14,7 @@
 
 namespace ggxapp {
 
-AppTimings measure_apps(const std::string& device, std::uint32_t count);
+// `device`: the options that choose the device (ApiChoice::arguments).
+AppTimings measure_apps(const DeviceArguments& device, std::uint32_t count);
 
 } // namespace ggxapp

@@ -33,9 +33,7 @@ void measure_offsets(ggxcl::Sampler& sampler, cl::CommandQueue& queue, const ggx
     result.at_odd_offset_us = summarize(at_odd);
 }
 
-} // namespace
-
-EnqueueTiming measure_enqueue(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params)
+EnqueueTiming enqueue_timing(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params)
 {
     EnqueueTiming result;
     result.measured = true;
@@ -60,6 +58,18 @@ EnqueueTiming measure_enqueue(ggxcl::Sampler& sampler, const ggxcl::SampleParams
     queue.finish();
     measure_offsets(sampler, queue, params, result);
     return result;
+}
+
+} // namespace
+
+EnqueueTiming measure_enqueue(const std::vector<ApiChoice>& apis, const ggxcl::SampleParams& params)
+{
+    for (const ApiChoice& choice : apis)  // Sampler::enqueue: the caller's buffers are OpenCL's
+        if (choice.api == ggxcl::Api::opencl) {
+            ggxcl::Sampler sampler(choice.selector);
+            return enqueue_timing(sampler, params);
+        }
+    return {};
 }
 
 } // namespace ggxapp

@@ -5,15 +5,17 @@
 // enqueue on a second Sampler of the same context (its programs shared),
 // and an enqueue and its finish with the buffers at offset 0 and at an odd
 // offset, alternated call by call (what an offset costs: nothing, the
-// kernels take it).
+// kernels take it).  On the run's OpenCL device: the caller's buffers are
+// OpenCL's (a run without OpenCL has no such rows).
 #pragma once
 
 #include <ggxcl/ggxcl.hpp>
 
+#include "api_options.hpp"
 #include "bench_report.hpp"
 
 namespace ggxapp {
 
-EnqueueTiming measure_enqueue(ggxcl::Sampler& sampler, const ggxcl::SampleParams& params);
+EnqueueTiming measure_enqueue(const std::vector<ApiChoice>& apis, const ggxcl::SampleParams& params);
 
 } // namespace ggxapp

@@ -2,6 +2,8 @@
 // bandwidth limits, the CSV columns, the tables and the 2x target.
 #include "bench_limits.hpp"
 
+#include <algorithm>
+
 #include <iomanip>
 #include <sstream>
 
@@ -140,6 +142,13 @@ std::string limit_csv_cells(const BenchRow& row, const BenchReport& report)
 
 void write_limit_section(std::ostream& md, const BenchReport& r)
 {
+    const std::vector<const BenchRow*> rows = table_rows(r);
+    if (std::none_of(rows.begin(), rows.end(), [&](const BenchRow* row) { return row_limit(*row, r).has_value(); })) {
+        md << "\n## How close to this device's limits\n\nNot known here: the limits need the kernels' op counts "
+              "(OpenCL C through clang" << (r.ops_unavailable.empty() ? "" : ": " + r.ops_unavailable)
+           << ") or the store-only kernel's speed (OpenCL), and neither was measured for this device.\n";
+        return;
+    }
     md << "\n## How close to this device's limits\n\nEach method's precise write and fused (furnace) jobs against "
           "the limits of this device measured in this run: the compute limit, ns per sample = max over op classes "
           "of (ops per sample / the class's peak), the class that binds in brackets, and beside it the sum over "
@@ -147,7 +156,6 @@ void write_limit_section(std::ostream& md, const BenchReport& r)
           "job's stored bytes per sample at the store-only kernel's speed; % = the tighter (larger) limit / the "
           "measured time.\n\n";
     write_peaks(md, r);
-    const std::vector<const BenchRow*> rows = table_rows(r);
     md << "| method | job | measured ns | compute limit ns (binds) | sum over classes ns | bandwidth limit ns | "
           "% of the tighter limit |\n|---|---|---|---|---|---|---|\n";
     for (const BenchRow* row : rows) {

@@ -19,30 +19,27 @@ bool counts_ops(const BenchTask& task)
            task.params.sequence == ggxcl::Sequence::philox && task.params.eta == 0.0f;
 }
 
-std::vector<std::optional<OpCounts>> count_task_ops(const ggxcl::Sampler& sampler, const std::vector<BenchTask>& tasks,
-                                                    std::string& unavailable)
+std::vector<std::optional<OpCounts>> count_task_ops(const std::vector<BenchTask>& tasks, std::string& unavailable)
 {
     std::vector<std::optional<OpCounts>> counts(tasks.size());
-    const ClangTool clang = find_clang();
-    if (clang.path.empty()) {
-        unavailable = clang.unavailable;
-        return counts;
-    }
     std::vector<std::size_t> counted;
     std::vector<ggxcl::benchmark::ProgramText> programs;
     std::vector<IrRequest> requests;
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         if (!counts_ops(tasks[t]))
             continue;
-        // The programs the timed runs build (bench_speed.cpp): the furnace runs unguarded, as
-        // Sampler::furnace does.
-        ggxcl::SampleParams p = tasks[t].params;
-        p.guards = tasks[t].job == BenchJob::write;
-        programs.push_back(tasks[t].job == BenchJob::write
-                               ? ggxcl::benchmark::enqueue_program(sampler, p, {ggxcl::Field::m, ggxcl::Field::pdf_m})
-                               : ggxcl::benchmark::furnace_program(sampler, p));
+        // The program the timed runs build, where the device's is OpenCL C.
+        std::optional<ggxcl::benchmark::ProgramText> program = tasks[t].device->jobs->program(tasks[t].job, tasks[t].params);
+        if (!program)
+            continue;
+        programs.push_back(*program);
         requests.push_back({ggxcl::kernel_source(programs.back().file), programs.back().options});
         counted.push_back(t);
+    }
+    const ClangTool clang = counted.empty() ? ClangTool{} : find_clang();
+    if (counted.empty() || clang.path.empty()) {
+        unavailable = clang.unavailable;
+        return counts;
     }
     try {
         const int parallel = int(std::max(1u, std::thread::hardware_concurrency()));

@@ -1,6 +1,7 @@
 // bench_plan.cpp - checking the options of `ggx bench` into its plan.
 #include "bench_plan.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "cli_values.hpp"
@@ -33,29 +34,53 @@ std::vector<ggxcl::SampleParams> other_sequences(const BenchPlan& plan, const gg
     std::vector<ggxcl::SampleParams> others;
     if (params.precision != ggxcl::Precision::precise)
         return others;
-    for (const std::string& sequence : plan.sequences) {
+    for (ggxcl::Sequence sequence : plan.sequences) {
         others.push_back(params);
-        others.back().sequence = ggxcl::parse_sequence(sequence);
+        others.back().sequence = sequence;
     }
     return others;
 }
 
-BenchJob job_named(const std::string& name)
+bool BenchPlan::plans(BenchJob job) const
 {
-    for (BenchJob job : all_bench_jobs)
-        if (job_name(job) == name)
-            return job;
-    throw UsageError("--jobs", name, "write, furnace, world or per-sample");
+    return std::find(jobs.begin(), jobs.end(), job) != jobs.end();
+}
+
+bool runs_on(const ggxcl::UserSampler& user, const ggxcl::Backend& backend)
+{
+    return user.shader_language().has_value() == backend.shader_language().has_value();
+}
+
+namespace {
+
+// The API a --sampler file is read for: a shader file's is Vulkan, another OpenCL's where planned.
+const ApiChoice& choice_for(const std::string& file, const std::vector<ApiChoice>& apis)
+{
+    const bool shader = ggxcl::shader_language_of_file(file).has_value();
+    for (const ApiChoice& choice : apis)
+        if ((choice.api == ggxcl::Api::vulkan) == shader)
+            return choice;
+    return apis.front();
 }
 
 // --sampler, --sampler-name and --reproduces (the k-th for the k-th sampler; none: no map).
-void plan_user_samplers(const BenchCommand& cmd, const ApiChoice& api, BenchPlan& plan)
+void plan_user_samplers(const BenchCommand& cmd, const std::vector<ApiChoice>& apis, BenchPlan& plan)
 {
     if (cmd.reproduces.size() > cmd.user.files.size())
         throw UsageError("--reproduces", cmd.reproduces.back(), "at most one per --sampler");
-    for (const auto& loaded : cmd.user.load(api)) {
+    if (cmd.user.names.size() > cmd.user.files.size())
+        throw UsageError("--sampler-name", cmd.user.names.back(), "at most one name per --sampler");
+    for (std::size_t k = 0; k < cmd.user.files.size(); ++k) {
+        UserSamplerOptions one;
+        one.files = {cmd.user.files[k]};
+        if (k < cmd.user.names.size())
+            one.names = {cmd.user.names[k]};
+        const auto loaded = one.load(choice_for(cmd.user.files[k], apis)).front();
+        for (const BenchUserSampler& earlier : plan.users)
+            if (earlier.sampler->name() == loaded->name())
+                throw UsageError("--sampler-name", loaded->name(),
+                                 "a name per sampler: two samplers are named " + loaded->name());
         BenchUserSampler user{loaded};
-        const std::size_t k = plan.users.size();
         if (k < cmd.reproduces.size() && cmd.reproduces[k] != "none") {
             try {
                 user.method = ggxcl::parse_method(cmd.reproduces[k]);
@@ -68,15 +93,23 @@ void plan_user_samplers(const BenchCommand& cmd, const ApiChoice& api, BenchPlan
     }
 }
 
-BenchPlan plan_bench(const BenchCommand& cmd, const ApiChoice& api)
+} // namespace
+
+BenchPlan plan_bench(const BenchCommand& cmd, const std::vector<ApiChoice>& apis)
 {
     BenchPlan plan;
-    plan.methods = parse_name_list("--methods", cmd.methods, method_names());
-    plan.precisions = parse_name_list("--precisions", cmd.precisions, {"precise", "relaxed"});
-    plan.jobs = parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world", "per-sample"});
+    plan.apis = apis;
+    for (const std::string& name : parse_name_list("--methods", cmd.methods, method_names()))
+        plan.methods.push_back(ggxcl::parse_method(name));
+    for (const std::string& name : parse_name_list("--precisions", cmd.precisions, {"precise", "relaxed"}))
+        plan.precisions.push_back(ggxcl::parse_precision(name));
+    for (const std::string& name : parse_name_list("--jobs", cmd.jobs, {"write", "furnace", "world", "per-sample"}))
+        for (BenchJob job : all_bench_jobs)
+            if (job_name(job) == name)
+                plan.jobs.push_back(job);
     for (const std::string& name : parse_name_list("--sequences", cmd.sequences, {"philox", "sobol"}))
         if (name != "philox")  // always timed
-            plan.sequences.push_back(name);
+            plan.sequences.push_back(ggxcl::parse_sequence(name));
     plan_settings(cmd, plan.settings);
     std::array<float, 2> alpha = parse_alpha("--alpha", cmd.alpha);
     if (alpha[0] != alpha[1])
@@ -93,7 +126,7 @@ BenchPlan plan_bench(const BenchCommand& cmd, const ApiChoice& api)
         throw UsageError("--transport", cmd.transport, "one of radiance, importance");
     }
     plan.settings.transport = std::string(ggxcl::transport_name(plan.transport));
-    plan_user_samplers(cmd, api, plan);
+    plan_user_samplers(cmd, apis, plan);
     return plan;
 }
 

@@ -1,8 +1,9 @@
 // bench_plan.hpp - the options of `ggx bench` as typed, and the plan they
-// give once checked: the method, precision and job lists, the speed runs'
-// parameters (and a dielectric's index and transport) and the report's
-// settings (counts, repeats, threads, table size, budget).  Planning touches
-// no file and no device.
+// give once checked: the APIs and devices, the methods, precisions, jobs
+// and sequences as the library's enums, the speed runs' parameters (and a
+// dielectric's index and transport), the user samplers, and the report's
+// settings (counts, repeats, threads, table size, budget).  Planning opens
+// no device.
 #pragma once
 
 #include <string>
@@ -37,19 +38,25 @@ struct BenchUserSampler {
 };
 
 struct BenchPlan {
-    std::vector<std::string> methods, precisions, jobs;
-    std::vector<std::string> sequences;  // besides philox: timed in precise mode, write and furnace jobs
+    std::vector<ApiChoice> apis;  // each API's device, in the report's order
+    std::vector<ggxcl::Method> methods;
+    std::vector<ggxcl::Precision> precisions;
+    std::vector<BenchJob> jobs;
+    std::vector<ggxcl::Sequence> sequences;  // besides philox: timed in precise mode, write and furnace jobs
     ggxcl::SampleParams base;  // the speed runs' roughness and view
     BenchReport settings;      // count, native_count, repeats, threads, scene_size,
                                // samples_per_cell, budget_ms, alpha, theta, eta, transport
     ggxcl::Transport transport = ggxcl::Transport::radiance;  // the dielectric rows' (settings.eta)
     std::vector<BenchUserSampler> users;  // conductor rows beside the methods' (no world job, no native row)
+    bool plans(BenchJob job) const;
 };
 
-// Throws UsageError naming the first bad option; `api` reads the --sampler files.
-BenchPlan plan_bench(const BenchCommand& cmd, const ApiChoice& api);
+// Throws UsageError naming the first bad option; `apis` (ApiOptions::choose_list) read the --sampler
+// files: a .glsl or .hlsl file for Vulkan, another for OpenCL where it is planned.
+BenchPlan plan_bench(const BenchCommand& cmd, const std::vector<ApiChoice>& apis);
 
-BenchJob job_named(const std::string& name);
+// Whether `user` runs on `backend`: a shader on Vulkan, OpenCL C on OpenCL.
+bool runs_on(const ggxcl::UserSampler& user, const ggxcl::Backend& backend);
 
 // `params` on each of the plan's sequences besides philox (Sobol), timed side by side with it:
 // in precise mode; none in relaxed mode.

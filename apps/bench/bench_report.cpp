@@ -425,7 +425,7 @@ void write_csv_row(std::ostream& csv, const BenchRow& row, const BenchReport& r,
     csv << ",";
     if (row.pdf_disagreement >= 0)
         csv << row.pdf_disagreement;
-    csv << limit_csv_cells(row, r) << dielectric_csv_cells(row) << "," << samples_per_run << "\n";
+    csv << limit_csv_cells(row, r) << dielectric_csv_cells(row) << "," << samples_per_run << "," << row.api << "\n";
 }
 
 } // namespace
@@ -438,16 +438,18 @@ std::string bench_csv(const BenchReport& r, bool with_process_rows)
     csv << std::setprecision(6)
         << "method,precision,job,ns_median,ns_min,ns_max,gsamples_per_s,angle_p99,angle_max,pdf_rel_p99,pdf_rel_max,"
            "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured,pdf_disagreement"
-        << limit_header << dielectric_csv_header << ",samples_per_run\n";
+        << limit_header << dielectric_csv_header << ",samples_per_run,api\n";
     for (const BenchRow& row : r.rows)
         write_csv_row(csv, row, r, row.precision == "native" ? r.native_count : r.count);
     if (r.has_vectorized)
         csv << "caps,native-vectorized,furnace," << r.vectorized.median << "," << r.vectorized.low << ","
             << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,,"
-            << std::string(limit_columns, ',') << dielectric_csv_cells(BenchRow{}) << "," << r.native_count << "\n";
+            << std::string(limit_columns, ',') << dielectric_csv_cells(BenchRow{}) << "," << r.native_count << ",native\n";
     if (with_process_rows)
-        for (const CsvRow& row : process_rows(r))
+        for (CsvRow row : process_rows(r)) {
+            row.row.api = r.devices.empty() ? "" : r.devices.front().api;  // the processes ran on the first device
             write_csv_row(csv, row.row, r, row.samples_per_run);
+        }
     return csv.str();
 }
 
@@ -468,20 +470,11 @@ void write_user_pdf_section(std::ostringstream& md, const BenchReport& r)
         md << "| " << row->method << " | " << row->precision << " | " << readable_number(row->pdf_disagreement) << " |\n";
 }
 
-std::string bench_markdown(const BenchReport& r, const std::string& speed_error_png, const std::string& speed_rmse_png)
+namespace {
+
+// The sections of one device: the answer, its speed, the dielectric's, its limits and accuracy.
+void write_device_sections(std::ostringstream& md, const BenchReport& r, const ChartFiles& charts)
 {
-    std::ostringstream md;
-    md << "# ggx bench: the samplers on this device\n\nWritten by `ggx bench`; the command below runs it again.\n\n"
-       << "- Command: `" << r.command << "`\n- Date: " << r.date << "\n- Machine: " << r.machine
-       << "\n- Device: " << r.device << "\n- Speed runs: alpha " << r.alpha << ", view at " << r.theta
-       << " degrees, " << r.count << " samples per run (world job: per-sample normals and views, at most 2^22), median of "
-       << r.repeats << " runs after a warm-up, " << r.device_clock << "; (min–max) in brackets.\n"
-       << "- Native C++ baseline: ";
-    if (r.native_unavailable.empty())
-        md << r.native_count << " samples per run, " << r.threads << " threads, wall clock, median of " << r.repeats
-           << " (the child process ggx-native).\n\n";
-    else
-        md << "not available (" << r.native_unavailable << "); no native rows.\n\n";
     write_answer(md, r);
     md << "\n## Speed (ns per sample)\n\n";
     write_speed_table(md, r);
@@ -491,8 +484,8 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
     md << "\n## Speed against numerical error\n\nDevice samples against the double-precision reference on the same "
           "uniforms (alpha 0.05, 0.3, 1 x view 0, 45, 80 degrees, 8192 samples each): angle between m's and "
           "between o's, relative error of pdf_m and pdf_o (native: m and pdf_m, the fields it writes).\n\n";
-    if (!speed_error_png.empty())
-        md << "![ns per sample against numerical error](" << speed_error_png << ")\n\n";
+    if (!charts.speed_error.empty())
+        md << "![ns per sample against numerical error](" << charts.speed_error << ")\n\n";
     write_accuracy_tables(md, r);
     md << "\n## Speed against statistical error: the albedo table\n\nThe white-furnace (albedo) estimator over a "
        << r.scene_size << " x " << r.scene_size << " table of views (cos theta = (k + 1/2)/" << r.scene_size
@@ -500,8 +493,8 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
        << " samples per cell: the per-sample variance averaged over the cells, the efficiency 1/(variance x time) "
           "with the fused estimator's time, and the RMSE per cell when the whole table gets "
        << r.budget_ms << " ms.\n\n";
-    if (!speed_rmse_png.empty())
-        md << "![ns per sample against RMSE at equal time](" << speed_rmse_png << ")\n\n";
+    if (!charts.speed_rmse.empty())
+        md << "![ns per sample against RMSE at equal time](" << charts.speed_rmse << ")\n\n";
     write_variance_table(md, r);
     md << "\n## Sequences: independent uniforms against Sobol points\n\nPrecise mode with each sequence of "
           "uniforms (SampleParams::sequence): the write and fused jobs' speed, the numerical error (each sample "
@@ -513,8 +506,85 @@ std::string bench_markdown(const BenchReport& r, const std::string& speed_error_
           "measured RMSE.\n\n";
     write_sequence_table(md, r);
     write_user_pdf_section(md, r);
+}
+
+// Each row of the first device beside the same row on the others: ns per sample and the ratio.
+void write_api_comparison(std::ostringstream& md, const BenchReport& r)
+{
+    const std::string& first = r.devices.front().api;
+    md << "\n# The APIs side by side\n\nThe same rows timed in the same interleaved rounds, ns per sample (each "
+          "device by its own clock, above), and each API's time over " << first << "'s.\n\n"
+       << "| method | precision | job | sequence | eta |";
+    for (const BenchDeviceNote& d : r.devices)
+        md << " " << d.api << ": ns |";
+    for (std::size_t k = 1; k < r.devices.size(); ++k)
+        md << " " << r.devices[k].api << " / " << first << " |";
+    md << "\n|---|---|---|---|---|";
+    for (std::size_t k = 1; k < 2 * r.devices.size(); ++k)
+        md << "---|";
+    md << "\n";
+    for (const BenchRow& row : r.rows) {
+        if (row.api != first)
+            continue;
+        md << "| " << row.method << " | " << row.precision << " | " << row.job << " | " << row.sequence << " | "
+           << row.eta << " | " << fixed(row.timing.median, 2) << " |";
+        std::string ratios;
+        for (std::size_t k = 1; k < r.devices.size(); ++k) {
+            const BenchRow* other = nullptr;
+            for (const BenchRow& o : r.rows)
+                if (o.api == r.devices[k].api && o.method == row.method && o.precision == row.precision &&
+                    o.job == row.job && o.sequence == row.sequence && o.eta == row.eta)
+                    other = &o;
+            md << " " << (other ? fixed(other->timing.median, 2) : "–") << " |";
+            ratios += " " + (other ? fixed(ratio(other, &row), 2) + "x" : std::string("–")) + " |";
+        }
+        md << ratios << "\n";
+    }
+}
+
+} // namespace
+
+BenchReport device_report(const BenchReport& r, const std::string& api)
+{
+    BenchReport one = r;
+    one.rows.clear();
+    for (const BenchRow& row : r.rows)
+        if (row.api == api || row.precision == "native")
+            one.rows.push_back(row);
+    one.devices.clear();
+    for (const BenchDeviceNote& d : r.devices)
+        if (d.api == api)
+            one.devices.push_back(d);
+    one.has_peaks = r.has_peaks && r.peaks_api == api;
+    return one;
+}
+
+std::string bench_markdown(const BenchReport& r, const std::vector<ChartFiles>& charts)
+{
+    std::ostringstream md;
+    const bool several = r.devices.size() > 1;
+    md << "# ggx bench: the samplers on this device\n\nWritten by `ggx bench`; the command below runs it again.\n\n"
+       << "- Command: `" << r.command << "`\n- Date: " << r.date << "\n- Machine: " << r.machine << "\n";
+    for (const BenchDeviceNote& d : r.devices)
+        md << "- Device: " << d.label << (several ? ", timed " + d.clock : "") << "\n";
+    md << "- Speed runs: alpha " << r.alpha << ", view at " << r.theta << " degrees, " << r.count
+       << " samples per run (world job: per-sample normals and views, at most 2^22), median of " << r.repeats
+       << " runs after a warm-up, " << (several ? "each device's rows in the same interleaved rounds" : r.devices.front().clock)
+       << "; (min–max) in brackets.\n- Native C++ baseline: ";
+    if (r.native_unavailable.empty())
+        md << r.native_count << " samples per run, " << r.threads << " threads, wall clock, median of " << r.repeats
+           << " (the child process ggx-native).\n\n";
+    else
+        md << "not available (" << r.native_unavailable << "); no native rows.\n\n";
+    for (std::size_t k = 0; k < r.devices.size(); ++k) {
+        if (several)
+            md << "\n# On " << r.devices[k].label << "\n\n";
+        write_device_sections(md, device_report(r, r.devices[k].api), k < charts.size() ? charts[k] : ChartFiles{});
+    }
+    if (several)
+        write_api_comparison(md, r);
     if (r.startup.measured)
-        md << "\n## Start-up\n\nProcess start to first result (`ggx sample -n 1`): " << fixed(r.startup.cold_ms, 0)
+        md << "\n## Start-up\n\nProcess start to first result (`ggx sample -n 1` on " << r.devices.front().label << "): " << fixed(r.startup.cold_ms, 0)
            << " ms with an empty kernel cache, " << fixed(r.startup.warm_ms.median, 0) << " ms warm (median; "
            << fixed(r.startup.warm_ms.low, 0) << "–" << fixed(r.startup.warm_ms.high, 0) << ").\n";
     if (r.enqueue.measured)

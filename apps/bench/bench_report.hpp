@@ -18,6 +18,7 @@
 namespace ggxapp {
 
 struct BenchRow {
+    std::string api;  // the device's API label ("opencl", "vulkan (glsl)"); "native" for the C++ baseline
     std::string method, precision, job;
     std::string sequence = "philox";  // where the uniforms came from (precise rows also with sobol)
     Timing timing;                // ns per sample
@@ -34,6 +35,9 @@ struct BenchRow {
     std::string transport;        // dielectric rows: radiance or importance
     DielectricAccuracy dielectric;  // dielectric furnace rows: reflectance and transmittance against the reference
 };
+
+// The options that choose a child `ggx`'s device (ApiChoice::arguments).
+using DeviceArguments = std::vector<std::string>;
 
 struct StartupTiming {
     bool measured = false;
@@ -63,9 +67,14 @@ struct AppTimings {
     double sample_csv = 0, sample_ply = 0;    // ns per sample, one run each
 };
 
+// A device of the run: its rows' api, its name as reports give it, how its rows were timed.
+struct BenchDeviceNote {
+    std::string api, label, clock;
+};
+
 struct BenchReport {
-    std::string command, date, machine, device;
-    std::string device_clock = "event-profiled";  // how the device rows were timed (DeviceTimer)
+    std::string command, date, machine;
+    std::vector<BenchDeviceNote> devices;  // in the report's order
     std::uint32_t count = 0, native_count = 0;
     int repeats = 0, threads = 0, scene_size = 0;
     std::uint64_t samples_per_cell = 0;
@@ -83,6 +92,7 @@ struct BenchReport {
     AppTimings apps;
     bool has_peaks = false;       // the device's compute peaks, measured in this run (bench_peak.hpp)
     PeakRates peaks;
+    std::string peaks_api;        // the api of the device whose peaks they are (the one with op counts)
     std::string peaks_unavailable, ops_unavailable;  // why there are no peaks, no op counts
 };
 
@@ -101,8 +111,16 @@ double rmse_at_budget(const BenchRow& row, const BenchReport& report);
 // The rows as CSV; with_process_rows adds start-up, the commands and enqueues (see bench_csv's
 // process_rows), what bench/check_targets.py reads beside the device rows.
 std::string bench_csv(const BenchReport& report, bool with_process_rows = true);
-std::string bench_markdown(const BenchReport& report, const std::string& speed_error_png,
-                           const std::string& speed_rmse_png);
+
+// The report of one device: its rows and the native ones, and the peaks where they are its own.
+BenchReport device_report(const BenchReport& report, const std::string& api);
+
+// The two charts of a device (paths relative to the report; empty: none).
+struct ChartFiles {
+    std::string speed_error, speed_rmse;
+};
+// The report; `charts`: one pair per device of report.devices, or none.
+std::string bench_markdown(const BenchReport& report, const std::vector<ChartFiles>& charts);
 
 // The machine: CPU model and logical cores (Linux /proc/cpuinfo).
 std::string machine_description();

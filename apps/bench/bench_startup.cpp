@@ -18,14 +18,11 @@ namespace {
 namespace fs = std::filesystem;
 
 // Wall-clock milliseconds of `ggx sample -n 1` with the kernel cache in `cache`.
-double run_once(const fs::path& dir, const fs::path& cache, const std::string& device)
+double run_once(const fs::path& dir, const fs::path& cache, const DeviceArguments& device)
 {
     std::vector<std::string> words = {"/proc/self/exe", "sample", "--method", "caps",
                                       "-n",             "1",      "--out",    (dir / "one.npy").string()};
-    if (!device.empty()) {
-        words.push_back("--device");
-        words.push_back(device);
-    }
+    words.insert(words.end(), device.begin(), device.end());
     std::vector<std::string> env = {"POCL_CACHE_DIR=" + cache.string()};
     for (char** e = environ; *e; ++e)
         if (std::string(*e).rfind("POCL_CACHE_DIR=", 0) != 0)
@@ -49,7 +46,7 @@ double run_once(const fs::path& dir, const fs::path& cache, const std::string& d
 
 } // namespace
 
-StartupTiming measure_startup(const std::string& device, int warm_runs)
+StartupTiming measure_startup(const DeviceArguments& device, int warm_runs)
 {
     fs::path dir = fs::temp_directory_path() / ("ggx-startup-" + std::to_string(::getpid()));
     fs::create_directories(dir / "cache");

@@ -8,6 +8,7 @@
 
 namespace ggxapp {
 
-StartupTiming measure_startup(const std::string& device, int warm_runs);
+// `device`: the options that choose the device (ApiChoice::arguments).
+StartupTiming measure_startup(const DeviceArguments& device, int warm_runs);
 
 } // namespace ggxapp

@@ -1,5 +1,7 @@
 // cmd_bench.cpp - `ggx bench`: speed against accuracy of every method in
-// every precision mode on a device, side by side with the native C++
+// every precision mode on the devices of one or both APIs (--api
+// opencl,vulkan: timed in the same rounds, each device's rows with an api
+// column and a section of the report), side by side with the native C++
 // baseline: ns per sample of three jobs (m + pdf_m written, the fused
 // white-furnace estimator, world-space sampling; with --eta a rough
 // dielectric's beside the conductor's), numerical error against
@@ -26,7 +28,6 @@
 #include "bench_startup.hpp"
 #include "api_options.hpp"
 #include "bench_apps.hpp"
-#include "bench_vulkan.hpp"
 #include "bench_enqueue.hpp"
 #include "cli_values.hpp"
 #include "commands.hpp"
@@ -46,21 +47,28 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 // Seconds the peak probe's child may take, its build included (a GPU's takes about one).
 constexpr double peak_probe_limit_s = 60;
 
-// What the limits need, before any timing: the tasks' op counts (clang, in parallel) and then the
-// device's peaks (bench_limits.hpp), measured in a child process with a time limit.  Neither stops
-// the bench when it fails or runs past its time: the report says why.
-std::vector<std::optional<OpCounts>> measure_limit_inputs(ggxcl::Sampler& sampler, const std::string& device,
-                                                          const std::vector<BenchTask>& tasks, BenchReport& report)
+// What the limits need, before any timing: the tasks' op counts (clang, in parallel, where a device
+// runs OpenCL C) and then the peaks of the device whose tasks were counted (bench_limits.hpp),
+// measured in a child process with a time limit.  Neither stops the bench when it fails or runs
+// past its time: the report says why.
+std::vector<std::optional<OpCounts>> measure_limit_inputs(const std::vector<BenchTask>& tasks, BenchReport& report)
 {
     auto start = std::chrono::steady_clock::now();
-    std::cerr << "counting the operations of " << tasks.size() << " device rows' kernels (clang)\n";
-    std::vector<std::optional<OpCounts>> ops = count_task_ops(sampler, tasks, report.ops_unavailable);
+    std::cerr << "counting the operations of the device rows' kernels (clang)\n";
+    std::vector<std::optional<OpCounts>> ops = count_task_ops(tasks, report.ops_unavailable);
     std::cerr << "op counts: " << (report.ops_unavailable.empty() ? "" : "unavailable (" + report.ops_unavailable + "), ")
               << seconds_since(start) << " s\n";
+    const BenchDevice* counted = nullptr;  // the device whose programs clang reads
+    for (const BenchTask& task : tasks)
+        if (!counted && counts_ops(task) && task.device->jobs->program(task.job, task.params))
+            counted = task.device;
+    if (!counted)
+        return ops;
     std::cerr << "measuring the device's peaks (a child process, at most " << peak_probe_limit_s << " s)\n";
     try {
-        report.peaks = measure_peaks_in_child(device, peak_probe_limit_s);
+        report.peaks = measure_peaks_in_child(counted->choice.selector, peak_probe_limit_s);
         report.has_peaks = true;
+        report.peaks_api = counted->backend->api_label();
         std::cerr << "peak probe: " << report.peaks.seconds << " s\n";
     } catch (const std::exception& e) {
         report.peaks_unavailable = e.what();
@@ -69,87 +77,70 @@ std::vector<std::optional<OpCounts>> measure_limit_inputs(ggxcl::Sampler& sample
     return ops;
 }
 
-// The conductor's tasks: every method x precision x job, the guards' cost and the other
-// sequences side by side.
-void add_conductor_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
+// `p` as planned (a method or a user sampler, in a precision) with each job, and the guards' cost
+// and the other sequences side by side.
+void add_tasks_of(const BenchPlan& plan, const ggxcl::SampleParams& p, BenchDevice& device,
+                  std::vector<BenchTask>& tasks)
 {
-    for (const std::string& mode : plan.precisions)
-        for (const std::string& name : plan.methods)
-            for (const std::string& job_text : plan.jobs) {
-                ggxcl::SampleParams p = plan.base;
-                p.method = ggxcl::parse_method(name);
-                p.precision = ggxcl::parse_precision(mode);
-                tasks.push_back({job_named(job_text), p});
-                if (mode == "precise" && job_text == "write") {  // the guards' cost, side by side
-                    ggxcl::SampleParams unguarded = p;
-                    unguarded.guards = false;
-                    tasks.push_back({BenchJob::write, unguarded});
-                }
-                if (job_text == "write" || job_text == "furnace")
-                    for (const ggxcl::SampleParams& other : other_sequences(plan, p))
-                        tasks.push_back({job_named(job_text), other});
-            }
-}
-
-// A user sampler's tasks, after the methods': every precision x job but world (a user sampler
-// works in tangent space), the other sequences side by side.
-void add_user_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
-{
-    for (const BenchUserSampler& user : plan.users)
-        for (const std::string& mode : plan.precisions)
-            for (const std::string& job_text : plan.jobs) {
-                if (job_text == "world")
-                    continue;
-                ggxcl::SampleParams p = plan.base;
-                p.method = ggxcl::Method::user;
-                p.user_sampler = user.sampler;
-                p.precision = ggxcl::parse_precision(mode);
-                tasks.push_back({job_named(job_text), p});
-                if (job_text == "write" || job_text == "furnace")
-                    for (const ggxcl::SampleParams& other : other_sequences(plan, p))
-                        tasks.push_back({job_named(job_text), other});
-            }
-}
-
-bool plans_job(const BenchPlan& plan, const char* job)
-{
-    return std::find(plan.jobs.begin(), plan.jobs.end(), job) != plan.jobs.end();
+    for (BenchJob job : plan.jobs) {
+        if (!device.jobs->runs(job) || (job == BenchJob::world && p.method == ggxcl::Method::user))
+            continue;  // a user sampler works in tangent space
+        tasks.push_back({job, p, &device});
+        if (p.precision == ggxcl::Precision::precise && job == BenchJob::write && p.method != ggxcl::Method::user) {
+            ggxcl::SampleParams unguarded = p;  // the guards' cost, side by side
+            unguarded.guards = false;
+            tasks.push_back({BenchJob::write, unguarded, &device});
+        }
+        if (job == BenchJob::write || job == BenchJob::furnace)
+            for (const ggxcl::SampleParams& other : other_sequences(plan, p))
+                tasks.push_back({job, other, &device});
+    }
 }
 
 // With --eta, every method but bounded as a dielectric: o + pdf_o written (beside the conductor
 // writing the same) and the fused furnace (beside the conductor's furnace task), philox.
-void add_dielectric_tasks(const BenchPlan& plan, std::vector<BenchTask>& tasks)
+void add_dielectric_tasks(const BenchPlan& plan, const ggxcl::SampleParams& conductor, BenchDevice& device,
+                          std::vector<BenchTask>& tasks)
 {
-    if (plan.settings.eta == 0.0f)
+    if (plan.settings.eta == 0.0f || !ggxcl::method_traits(conductor.method).dielectric)
         return;
-    for (const std::string& mode : plan.precisions)
-        for (const std::string& name : plan.methods) {
-            ggxcl::SampleParams conductor = plan.base;
-            conductor.method = ggxcl::parse_method(name);
-            conductor.precision = ggxcl::parse_precision(mode);
-            if (!ggxcl::method_traits(conductor.method).dielectric)
-                continue;
-            ggxcl::SampleParams dielectric = conductor;
-            dielectric.eta = plan.settings.eta;
-            dielectric.transport = plan.transport;
-            if (plans_job(plan, "write")) {
-                tasks.push_back({BenchJob::write_o, conductor});
-                tasks.push_back({BenchJob::write_o, dielectric});
-            }
-            if (plans_job(plan, "furnace"))
-                tasks.push_back({BenchJob::furnace, dielectric});
-        }
+    ggxcl::SampleParams dielectric = conductor;
+    dielectric.eta = plan.settings.eta;
+    dielectric.transport = plan.transport;
+    if (plan.plans(BenchJob::write)) {
+        tasks.push_back({BenchJob::write_o, conductor, &device});
+        tasks.push_back({BenchJob::write_o, dielectric, &device});
+    }
+    if (plan.plans(BenchJob::furnace))
+        tasks.push_back({BenchJob::furnace, dielectric, &device});
 }
 
-std::vector<BenchTask> bench_tasks(const BenchPlan& plan)
+// A device's tasks: every method x precision x job, then the user samplers that run on it, then the
+// dielectric's, and the write job's ceiling where the device has it.
+void add_device_tasks(const BenchPlan& plan, BenchDevice& device, std::vector<BenchTask>& tasks)
 {
-    std::vector<BenchTask> tasks;
-    add_conductor_tasks(plan, tasks);
-    add_user_tasks(plan, tasks);
-    add_dielectric_tasks(plan, tasks);
-    if (plans_job(plan, "write"))  // the write job's ceiling, once: the same bytes stored, nothing computed
-        tasks.push_back({BenchJob::store, plan.base});
-    return tasks;
+    std::vector<ggxcl::SampleParams> samplers;
+    for (ggxcl::Precision precision : plan.precisions)
+        for (ggxcl::Method method : plan.methods) {
+            samplers.push_back(plan.base);
+            samplers.back().method = method;
+            samplers.back().precision = precision;
+        }
+    for (const BenchUserSampler& user : plan.users)
+        for (ggxcl::Precision precision : plan.precisions)
+            if (runs_on(*user.sampler, *device.backend)) {
+                samplers.push_back(plan.base);
+                samplers.back().method = ggxcl::Method::user;
+                samplers.back().user_sampler = user.sampler;
+                samplers.back().precision = precision;
+            }
+    for (const ggxcl::SampleParams& p : samplers)
+        add_tasks_of(plan, p, device, tasks);
+    for (const ggxcl::SampleParams& p : samplers)
+        if (p.method != ggxcl::Method::user)
+            add_dielectric_tasks(plan, p, device, tasks);
+    if (plan.plans(BenchJob::write) && device.jobs->runs(BenchJob::store))
+        tasks.push_back({BenchJob::store, plan.base, &device});
 }
 
 // Whether p's user sampler reproduces a built-in method's map (--reproduces), and which.
@@ -171,36 +162,36 @@ struct ExactValues {
 
 // The accuracy columns of a guarded device row: a conductor's numerical error (write), albedo
 // variance and table RMSE (furnace); a dielectric furnace's reflectance and transmittance.
-void add_accuracy(ggxcl::Sampler& sampler, const BenchTask& task, const BenchReport& report,
-                  const std::vector<BenchUserSampler>& plan_users, ExactValues& exact, BenchRow& row)
+void add_accuracy(const BenchTask& task, const BenchReport& report, const std::vector<BenchUserSampler>& plan_users,
+                  ExactValues& exact, BenchRow& row)
 {
+    ggxcl::Backend& backend = *task.device->backend;
     const ggxcl::SampleParams& p = task.params;
     if (p.eta != 0.0f) {
         if (task.job == BenchJob::furnace) {
             if (!exact.dielectric)
                 exact.dielectric = dielectric_exact(p);
-            row.dielectric = dielectric_accuracy(sampler, p, *exact.dielectric);
+            row.dielectric = dielectric_accuracy(backend, p, *exact.dielectric);
         }
         return;
     }
     const bool user = p.method == ggxcl::Method::user;
     ggxcl::Method reference = p.method;
     if (task.job == BenchJob::write && user && p.sequence == ggxcl::Sequence::philox)
-        row.pdf_disagreement = pdf_disagreement(sampler, p);
+        row.pdf_disagreement = pdf_disagreement(backend, p);
     if (task.job == BenchJob::write && (!user || reproduced_method(plan_users, p, reference))) {
         row.has_error = true;
-        row.error = numerical_error(sampler, p, reference, p.precision, p.sequence);
+        row.error = numerical_error(backend, p, reference, p.precision, p.sequence);
     }
     if (task.job == BenchJob::furnace && p.sequence == ggxcl::Sequence::philox) {
-        SceneVariance scene = albedo_scene_variance(sampler, p, p.precision, report.scene_size,
-                                                    report.samples_per_cell);
+        SceneVariance scene = albedo_scene_variance(backend, p, p.precision, report.scene_size, report.samples_per_cell);
         row.variance = scene.variance;
         row.mean_albedo = scene.mean_albedo;
     }
     if (task.job == BenchJob::furnace && p.precision == ggxcl::Precision::precise) {
         if (exact.albedo_table.empty())
             exact.albedo_table = albedo_table(report.scene_size);
-        row.rmse_measured = albedo_table_rmse(sampler, p, p.precision, p.sequence, report.scene_size,
+        row.rmse_measured = albedo_table_rmse(backend, p, p.precision, p.sequence, report.scene_size,
                                               samples_at_budget(row, report), report.rmse_streams, exact.albedo_table);
     }
 }
@@ -208,11 +199,13 @@ void add_accuracy(ggxcl::Sampler& sampler, const BenchTask& task, const BenchRep
 BenchRow device_row(const BenchTask& task, Timing timing)
 {
     const ggxcl::SampleParams& p = task.params;
+    BenchRow row = task.job == BenchJob::store ? row_of("all", "store-only", "write", timing)
+                   : row_of(ggxcl::sampler_name(p),
+                            std::string(ggxcl::precision_name(p.precision)) + (p.guards ? "" : "-unguarded"),
+                            job_name(task.job), timing);
+    row.api = task.device->backend->api_label();
     if (task.job == BenchJob::store)
-        return row_of("all", "store-only", "write", timing);
-    const std::string precision(ggxcl::precision_name(p.precision));
-    BenchRow row = row_of(ggxcl::sampler_name(p), task.params.guards ? precision : precision + "-unguarded",
-                          job_name(task.job), timing);
+        return row;
     row.sequence = std::string(ggxcl::sequence_name(p.sequence));
     row.eta = p.eta;
     if (p.eta != 0.0f)
@@ -220,16 +213,20 @@ BenchRow device_row(const BenchTask& task, Timing timing)
     return row;
 }
 
-void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchCommand& cmd, BenchReport& report)
+void measure_devices(std::vector<BenchDevice>& devices, const BenchPlan& plan, const BenchCommand& cmd,
+                     BenchReport& report)
 {
-    const std::vector<BenchTask> tasks = bench_tasks(plan);
-    const std::vector<std::optional<OpCounts>> ops = measure_limit_inputs(sampler, cmd.device, tasks, report);
+    std::vector<BenchTask> tasks;
+    for (BenchDevice& device : devices)
+        add_device_tasks(plan, device, tasks);
+    const std::vector<std::optional<OpCounts>> ops = measure_limit_inputs(tasks, report);
     std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
-    DeviceTimer timer(sampler, report.count);
-    std::vector<Timing> timings = timer.time_interleaved(tasks, report.repeats);
-    report.device_clock = timer.clock_description();
-    if (timer.wall_clock())
-        std::cerr << "device rows timed by wall clock: " << report.device_clock << "\n";
+    const std::vector<Timing> timings = time_interleaved(tasks, report.repeats);
+    for (const BenchDevice& device : devices) {
+        report.devices.push_back({device.backend->api_label(), device.label(), device.clock});
+        if (device.clock != profiled_clock)
+            std::cerr << device.label() << ": rows timed by wall clock: " << device.clock << "\n";
+    }
     ExactValues exact;
     if (!cmd.no_accuracy)
         std::cerr << "measuring the accuracy columns\n";
@@ -238,35 +235,36 @@ void measure_device(ggxcl::Sampler& sampler, const BenchPlan& plan, const BenchC
         if (ops[t])
             row.has_ops = true, row.ops = *ops[t];
         if (!cmd.no_accuracy && tasks[t].params.guards && tasks[t].job != BenchJob::store)  // unguarded: speed only
-            add_accuracy(sampler, tasks[t], report, plan.users, exact, row);
+            add_accuracy(tasks[t], report, plan.users, exact, row);
         report.rows.push_back(row);
     }
 }
 
-// The native rows; their albedo variance is the device's precise one for the
-// same method (the same samples, drawn from the same uniforms).  All or none:
-// they join the report only once the vectorized loop is timed too.
+// The native rows; their albedo variance is the first device's precise one for the same method (the
+// same samples, drawn from the same uniforms).  All or none: they join the report only once the
+// vectorized loop is timed too.
 void measure_native(const BenchPlan& plan, BenchReport& report)
 {
     std::cerr << "timing the native C++ baseline (ggx-native)\n";
     NativeSetup setup{report.native_count, report.threads, report.repeats, plan.base.alpha_x, plan.base.view};
     std::vector<BenchRow> rows;
-    for (const std::string& name : plan.methods) {
-        ggxcl::Method method = ggxcl::parse_method(name);
-        for (const std::string& job_text : plan.jobs) {
-            BenchJob job = job_named(job_text);
+    for (ggxcl::Method method : plan.methods) {
+        const std::string name(ggxcl::method_name(method));
+        for (BenchJob job : plan.jobs) {
             if (job == BenchJob::per_sample)  // the native baseline has no such job
                 continue;
-            BenchRow row = row_of(name, "native", job_text, native_timing(method, job, setup));
+            BenchRow row = row_of(name, "native", job_name(job), native_timing(method, job, setup));
+            row.api = "native";
             if (job == BenchJob::write) {
                 row.has_error = true;
                 row.error = native_numerical_error(method);
             }
             for (const BenchRow& device : report.rows)
-                if (job == BenchJob::furnace && device.method == name && device.precision == "precise" &&
-                    device.job == "furnace" && device.sequence == "philox" && device.eta == 0.0f)
+                if (job == BenchJob::furnace && device.api == report.devices.front().api && device.method == name &&
+                    device.precision == "precise" && device.job == "furnace" && device.sequence == "philox" &&
+                    device.eta == 0.0f)
                     row.variance = device.variance, row.mean_albedo = device.mean_albedo;
-            std::cerr << "  " << name << " native " << job_text << ": " << row.timing.median << " ns\n";
+            std::cerr << "  " << name << " native " << job_name(job) << ": " << row.timing.median << " ns\n";
             rows.push_back(row);
         }
     }
@@ -287,23 +285,39 @@ void measure_native_if_available(const BenchPlan& plan, BenchReport& report)
     }
 }
 
+// The charts of each device: PREFIX-speed-error.png and PREFIX-speed-rmse.png, with several devices
+// PREFIX-API-speed-*.png; paths as written (made relative to a page by the caller).
+std::vector<ChartFiles> write_charts(const BenchCommand& cmd, const BenchReport& report)
+{
+    std::vector<ChartFiles> charts;
+    const std::string prefix = charts_prefix(cmd.charts, cmd.html);
+    if (prefix.empty())
+        return charts;
+    for (const BenchDeviceNote& device : report.devices) {
+        std::string name = prefix;
+        if (report.devices.size() > 1)
+            name += "-" + device.api.substr(0, device.api.find(' '));
+        ChartFiles files{name + "-speed-error.png", name + "-speed-rmse.png"};
+        const std::string csv_path = name + ".plot.csv";
+        write_text_file(csv_path, bench_csv(device_report(report, device.api), false));
+        run_plot_script("plot_bench.py", {csv_path, files.speed_error, files.speed_rmse, device.label});
+        std::filesystem::remove(csv_path);
+        charts.push_back(files);
+    }
+    return charts;
+}
+
 void write_outputs(const BenchCommand& cmd, const BenchReport& report)
 {
     if (!cmd.csv.empty())
         write_text_file(cmd.csv, bench_csv(report));
-    std::string speed_error, speed_rmse;
-    if (const std::string charts = charts_prefix(cmd.charts, cmd.html); !charts.empty()) {
-        speed_error = charts + "-speed-error.png";
-        speed_rmse = charts + "-speed-rmse.png";
-        std::string csv_path = charts + ".plot.csv";
-        write_text_file(csv_path, bench_csv(report, false));
-        run_plot_script("plot_bench.py", {csv_path, speed_error, speed_rmse, report.device});
-        std::filesystem::remove(csv_path);
-    }
+    const std::vector<ChartFiles> charts = write_charts(cmd, report);
     // The report with its chart links relative to where it goes.
     const auto report_for = [&](const std::string& page) {
-        return bench_markdown(report, speed_error.empty() ? "" : relative_to(speed_error, page),
-                              speed_rmse.empty() ? "" : relative_to(speed_rmse, page));
+        std::vector<ChartFiles> linked = charts;
+        for (ChartFiles& c : linked)
+            c = {relative_to(c.speed_error, page), relative_to(c.speed_rmse, page)};
+        return bench_markdown(report, linked);
     };
     std::string md = report_for(cmd.markdown);
     if (!cmd.markdown.empty())
@@ -323,44 +337,21 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
     report.command = command_line();
     report.date = utc_now();
     report.machine = machine_description();
-    ggxcl::Sampler sampler(cmd.device);
-    report.device = sampler.device_name();
-    measure_device(sampler, plan, cmd, report);
+    std::vector<BenchDevice> devices;
+    for (const ApiChoice& choice : plan.apis)
+        devices.push_back(open_bench_device(choice, report.count));
+    measure_devices(devices, plan, cmd, report);
     if (!cmd.no_native)
         measure_native_if_available(plan, report);
     if (!cmd.no_startup) {
         std::cerr << "timing start-up, enqueue and whole commands\n";
-        report.startup = measure_startup(cmd.device, 5);
-        report.enqueue = measure_enqueue(sampler, plan.base);
+        const std::vector<std::string> device_args = plan.apis.front().arguments();
+        report.startup = measure_startup(device_args, 5);
+        report.enqueue = measure_enqueue(plan.apis, plan.base);
         // Twice the device runs' count (2^25 by default): a process's fixed costs weigh as in a dataset run.
-        report.apps = measure_apps(cmd.device, 2 * plan.settings.count);
+        report.apps = measure_apps(device_args, 2 * plan.settings.count);
     }
     write_outputs(cmd, report);
-}
-
-// --api vulkan: the write and furnace jobs on the Vulkan device beside the OpenCL one.
-void run_vulkan_bench(const BenchCommand& cmd, const BenchPlan& plan, const ApiChoice& api)
-{
-    for (const auto& [path, flag] : {std::pair{cmd.csv, "--csv"}, {cmd.markdown, "--markdown"}})
-        if (!path.empty())
-            check_writable_folder(flag, path);
-    const ApiBenchReport report = measure_api_bench(plan, api.selector, api.language, !cmd.no_accuracy);
-    if (!cmd.csv.empty())
-        write_text_file(cmd.csv, api_bench_csv(report));
-    const std::string md = api_bench_markdown(report);
-    if (!cmd.markdown.empty())
-        write_text_file(cmd.markdown, md);
-    std::cout << md;
-}
-
-// The plan of --api vulkan: its jobs (write and furnace by default), and no option it cannot honour.
-BenchPlan vulkan_plan(const BenchCommand& cmd, BenchPlan plan, bool jobs_given)
-{
-    for (const auto& [value, flag] : {std::pair{cmd.charts, "--charts"}, {cmd.html, "--html"}})
-        if (!value.empty())
-            throw UsageError(flag, value, "no charts or page with --api vulkan (its report is --markdown and --csv)");
-    plan.jobs = vulkan_bench_jobs(plan.jobs, jobs_given);
-    return plan;
 }
 
 // The speed runs: every method in every precision mode, and with --eta every method but bounded
@@ -368,11 +359,11 @@ BenchPlan vulkan_plan(const BenchCommand& cmd, BenchPlan plan, bool jobs_given)
 std::vector<Batch> timed_batches(const BenchPlan& plan)
 {
     std::vector<Batch> batches;
-    for (const std::string& mode : plan.precisions)
-        for (const std::string& name : plan.methods) {
+    for (ggxcl::Precision precision : plan.precisions)
+        for (ggxcl::Method method : plan.methods) {
             ggxcl::SampleParams p = plan.base;
-            p.method = ggxcl::parse_method(name);
-            p.precision = ggxcl::parse_precision(mode);
+            p.method = method;
+            p.precision = precision;
             batches.push_back({p, {0, 0, plan.settings.count}});
             if (plan.settings.eta == 0.0f || !ggxcl::method_traits(p.method).dielectric)
                 continue;
@@ -398,14 +389,14 @@ Prepare add_bench_command(CLI::App& app)
                                                 "beside the native C++ baseline");
     cmd->add_option("--alpha", s->alpha, "GGX roughness of the speed runs (one value)")->capture_default_str();
     cmd->add_option("--theta", s->theta, "view polar angle of the speed runs, degrees, 0..89")->capture_default_str();
-    cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
+    cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`; vulkan:NAME for Vulkan)");
     cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
     cmd->add_option("--precisions", s->precisions, "comma-separated precision modes")->capture_default_str();
     cmd->add_option("--sequences", s->sequences, "sequences of uniforms timed in precise mode (write and furnace "
                                                  "jobs): philox (always), sobol")->capture_default_str();
-    CLI::Option* jobs = cmd->add_option("--jobs", s->jobs, "comma-separated jobs: write (m + pdf_m), furnace (fused estimator), "
-                                       "world (world-space o), per-sample (a view and alpha per sample read); with "
-                                       "--api vulkan write and furnace")->capture_default_str();
+    cmd->add_option("--jobs", s->jobs, "comma-separated jobs: write (m + pdf_m), furnace (fused estimator), "
+                                       "world (world-space o), per-sample (a view and alpha per sample read)")
+        ->capture_default_str();
     cmd->add_option("-n,--count", s->count, "samples per timed device run")->capture_default_str();
     cmd->add_option("--native-count", s->native_count, "samples per timed native run")->capture_default_str();
     cmd->add_option("--repeats", s->repeats, "timed runs per row, 5..101 (median reported)")->capture_default_str();
@@ -431,15 +422,13 @@ Prepare add_bench_command(CLI::App& app)
     cmd->add_option("--html", s->html, "write the report as a web page (with its charts; beside it unless --charts)");
     auto api = std::make_shared<ApiOptions>();
     api->add_to(*cmd);
-    return [cmd, s, api, jobs]() -> std::optional<Work> {
+    api->api_option->description("opencl, vulkan, or opencl,vulkan: the APIs whose devices are timed, in the same "
+                                 "rounds (with both, --device chooses OpenCL's device, or with its vulkan: prefix "
+                                 "Vulkan's; the other is its default)");
+    return [cmd, s, api]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;
-        const ApiChoice choice = api->choose(s->device, s->user.files);
-        BenchPlan plan = plan_bench(*s, choice);
-        if (choice.vulkan) {
-            plan = vulkan_plan(*s, plan, jobs->count() > 0);
-            return Work{[s, plan, choice] { run_vulkan_bench(*s, plan, choice); }, timed_batches(plan)};
-        }
+        const BenchPlan plan = plan_bench(*s, api->choose_list(s->device, s->user.files));
         return Work{[s, plan] { run_bench(*s, plan); }, timed_batches(plan)};
     };
 }

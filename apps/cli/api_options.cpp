@@ -11,14 +11,24 @@ const std::string vulkan_prefix = "vulkan:";
 
 std::optional<ggxcl::ShaderLanguage> ApiChoice::sampler_language(const std::string& file) const
 {
-    if (!vulkan)
+    if (api != ggxcl::Api::vulkan)
         return std::nullopt;
     return ggxcl::shader_language_of_file(file).value_or(language);
 }
 
 std::unique_ptr<ggxcl::Backend> ApiChoice::open() const
 {
-    return ggxcl::open_backend(vulkan ? ggxcl::Api::vulkan : ggxcl::Api::opencl, selector, language);
+    return ggxcl::open_backend(api, selector, language);
+}
+
+std::vector<std::string> ApiChoice::arguments() const
+{
+    std::vector<std::string> words = {"--api", ggxcl::api_name(api)};
+    if (api == ggxcl::Api::vulkan)
+        words.insert(words.end(), {"--shader-language", ggxcl::shader_language_name(language)});
+    if (!selector.empty())
+        words.insert(words.end(), {"--device", selector});
+    return words;
 }
 
 void ApiOptions::add_to(CLI::App& cmd)
@@ -63,14 +73,15 @@ ApiChoice ApiOptions::choose(const std::string& device, const std::vector<std::s
     if (shader_file && api_given && named == ggxcl::Api::opencl)
         throw UsageError("--api", api, "vulkan with a GLSL or HLSL --sampler (" + *shader_file +
                                            " runs on Vulkan; OpenCL runs OpenCL C)");
-    choice.vulkan = named == ggxcl::Api::vulkan || prefixed || shader_file;
+    const bool vulkan = named == ggxcl::Api::vulkan || prefixed || shader_file;
+    choice.api = vulkan ? ggxcl::Api::vulkan : ggxcl::Api::opencl;
     choice.selector = prefixed ? device.substr(vulkan_prefix.size()) : device;
     try {
         choice.language = ggxcl::parse_shader_language(shader_language);
     } catch (const ggxcl::InvalidArgument&) {
         throw UsageError("--shader-language", shader_language, "glsl or hlsl");
     }
-    if (!choice.vulkan && language_given)
+    if (!vulkan && language_given)
         throw UsageError("--shader-language", shader_language, "nothing without --api vulkan (OpenCL runs OpenCL C)");
     for (const std::string& file : sampler_files) {
         const std::optional<ggxcl::ShaderLanguage> own = ggxcl::shader_language_of_file(file);
@@ -82,6 +93,23 @@ ApiChoice ApiOptions::choose(const std::string& device, const std::vector<std::s
     if (shader_file && !language_given)
         choice.language = *ggxcl::shader_language_of_file(*shader_file);
     return choice;
+}
+
+std::vector<ApiChoice> ApiOptions::choose_list(const std::string& device,
+                                               const std::vector<std::string>& sampler_files) const
+{
+    const std::vector<std::string> names = parse_name_list("--api", api, {"opencl", "vulkan"});
+    if (names.size() == 1)
+        return {choose(device, sampler_files)};
+    ApiOptions each = *this;
+    const bool prefixed = device.rfind(vulkan_prefix, 0) == 0;
+    each.api = "opencl";
+    each.language_option = nullptr;  // --shader-language is Vulkan's
+    ApiChoice opencl = each.choose(prefixed ? "" : device);
+    each.api = "vulkan";
+    each.language_option = language_option;
+    ApiChoice vulkan = each.choose(prefixed ? device : "", sampler_files);
+    return {opencl, vulkan};
 }
 
 } // namespace ggxapp

@@ -15,7 +15,7 @@
 namespace ggxapp {
 
 struct ApiChoice {
-    bool vulkan = false;
+    ggxcl::Api api = ggxcl::Api::opencl;
     std::string selector;  // the device selector without its prefix
     ggxcl::ShaderLanguage language = ggxcl::ShaderLanguage::glsl;  // of the built-in methods' shaders
     // The language a --sampler FILE is read in: none (OpenCL C) on OpenCL;
@@ -23,6 +23,8 @@ struct ApiChoice {
     std::optional<ggxcl::ShaderLanguage> sampler_language(const std::string& file) const;
     // The back end of this choice on its device: the one place a command opens one.
     std::unique_ptr<ggxcl::Backend> open() const;
+    // The options that choose it again in a child `ggx` process (--api, --shader-language, --device).
+    std::vector<std::string> arguments() const;
 };
 
 struct ApiOptions {
@@ -38,6 +40,9 @@ struct ApiOptions {
     // Vulkan or against a file's extension, or --api opencl with a vulkan:
     // selector or a shader file.
     ApiChoice choose(const std::string& device, const std::vector<std::string>& sampler_files = {}) const;
+    // `ggx bench`'s --api, a list (opencl,vulkan): one API as choose(); with both, `device` chooses
+    // OpenCL's device, or with the vulkan: prefix Vulkan's, and the other API's is its default.
+    std::vector<ApiChoice> choose_list(const std::string& device, const std::vector<std::string>& sampler_files) const;
 };
 
 } // namespace ggxapp

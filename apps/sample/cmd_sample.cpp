@@ -87,7 +87,7 @@ struct SampleCommand {
     ApiChoice api() const
     {
         const ApiChoice choice = api_options.choose(options.device, {options.sampler});
-        if (choice.vulkan && (all_devices || !devices.empty()))
+        if (choice.api == ggxcl::Api::vulkan && (all_devices || !devices.empty()))
             throw UsageError(all_devices ? "--all-devices" : "--devices", all_devices ? "" : devices,
                              "one device with --api vulkan: give it with --device");
         return choice;

@@ -2,7 +2,8 @@
 a target met and not met turns on the numbers (caps / heitz at 1.4 and 1.2),
 targets without their rows are left out, --into replaces its own section
 (run twice, one section) and keeps the rest, and a file that is not a bench
-CSV is refused with a message naming what is missing."""
+CSV is refused with a message naming what is missing; a run on two APIs is
+checked on its first device's rows."""
 import os
 import subprocess
 import sys
@@ -65,3 +66,20 @@ def test_a_file_that_is_not_a_bench_csv_is_refused(tmp_path):
     result = run(other)
     assert result.returncode == 1
     assert "is not the CSV of `ggx bench --csv`" in result.stderr and "ns_median" in result.stderr
+
+
+def test_a_run_on_two_apis_is_checked_on_its_first_device(tmp_path):
+    two = tmp_path / "two.csv"
+    with open(two, "w") as f:  # OpenCL's rows meet caps / heitz, Vulkan's (slower caps) would not
+        f.write(HEADER.rstrip("\n") + ",api\n")
+        for row in rows(5.0, 7.0):
+            f.write(",".join(map(str, row)) + ",opencl\n")
+        for row in rows(6.5, 7.0):
+            f.write(",".join(map(str, row)) + ",vulkan (glsl)\n")
+    out = run(two)
+    assert out.returncode == 0
+    assert target_line(out.stdout, "caps / heitz speed >= 1.35, write").endswith("| 1.40 | yes |")
+    flipped = tmp_path / "flipped.csv"  # the control: Vulkan first, its numbers checked
+    lines = two.read_text().splitlines()
+    flipped.write_text("\n".join([lines[0]] + lines[3:] + lines[1:3]) + "\n")
+    assert target_line(run(flipped).stdout, "caps / heitz speed >= 1.35, write").endswith("| 1.08 | **no** |")

@@ -10,10 +10,11 @@
 //   - `ggx histogram --api vulkan --check` passes, GLSL and HLSL, conductor and
 //     dielectric, and its summary names the API; negative control: the same
 //     counts tested --against another method's pdf fail (exit 1);
-//   - `ggx bench --api vulkan` (GLSL and HLSL) times the write and furnace jobs
-//     on Vulkan and OpenCL, on philox and Sobol, and writes their rows and
-//     ratio (CSV, Markdown);
-//     --jobs world and --html are refused with it;
+//   - `ggx bench --api opencl,vulkan` (GLSL and HLSL) times the write and
+//     furnace jobs on both APIs in one run, on philox and Sobol, each row with
+//     its api, and the ratio table; `--api vulkan` alone times Vulkan alone,
+//     every job, with charts, a page and the dielectric's accuracy; an
+//     unknown API in the list is a usage error;
 //   - `ggx stress --api vulkan` writes the map (CSV, page naming the Vulkan
 //     device), conductor and dielectric, GLSL and HLSL;
 //   - `ggx converge --api vulkan` (HLSL) writes OpenCL's curves within float
@@ -161,42 +162,65 @@ TEST_CASE("ggx histogram --api vulkan --check passes, and fails against another 
     CHECK(wrong.err.find("below --check") != std::string::npos);
 }
 
-TEST_CASE("ggx bench --api vulkan times each job on Vulkan and OpenCL, with their ratio")
+TEST_CASE("ggx bench --api opencl,vulkan times each job on both APIs in one run, with their ratio; --api vulkan "
+          "alone gets every job, charts, a page and the dielectric's accuracy")
 {
     const ggxtest::ScratchFolder scratch("vulkan-cli");
     for (const std::string language : {"glsl", "hlsl"}) {
         const fs::path csv = scratch / ("bench-" + language + ".csv"), md = scratch / ("bench-" + language + ".md");
-        const ggxtest::Run run = ggxtest::run_ggx("bench --api vulkan --shader-language " + language +
+        const ggxtest::Run run = ggxtest::run_ggx("bench --api opencl,vulkan --shader-language " + language +
                                                       " -n 2^12 --repeats 5 --methods caps,ndf --precisions precise "
-                                                      "--eta 1.5 --csv " + csv.string() + " --markdown " + md.string(),
+                                                      "--jobs write,furnace --eta 1.5 --no-accuracy --no-native "
+                                                      "--no-startup --csv " + csv.string() + " --markdown " + md.string(),
                                                   scratch / "err.txt");
         CAPTURE(language);
         CAPTURE(run.err);
         REQUIRE(run.status == 0);
-        const std::string text = ggxtest::read_all(csv);
-        std::istringstream rows(text);
-        std::string line;
-        std::getline(rows, line);
-        CHECK(line.rfind("method,precision,job,sequence,eta,vulkan_ns", 0) == 0);
-        std::map<std::string, int> count;  // rows per sequence
-        while (std::getline(rows, line)) {
-            CAPTURE(line);
-            ++count[ggxtest::csv_cell(text, line, "sequence")];
-            for (const char* column : {"vulkan_ns", "opencl_ns", "ratio"})
-                CHECK(std::stod(ggxtest::csv_cell(text, line, column)) > 0.0);
+        const std::string text = ggxtest::read_all(csv), vulkan = "vulkan (" + language + ")";
+        std::map<std::string, int> count;  // rows per api and sequence
+        for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(text)) {
+            CAPTURE(row.line);
+            CHECK(row.ns_median > 0.0);
+            ++count[ggxtest::csv_cell(text, row.line, "api") + " " + ggxtest::csv_cell(text, row.line, "sequence")];
         }
-        CHECK(count["philox"] == 6);  // caps and ndf: write, furnace, the dielectric's furnace
-        CHECK(count["sobol"] == 4);   // caps and ndf: write, furnace (the conductor's)
+        // caps and ndf: write, its unguarded twin, furnace, the conductor's and dielectric's write-o and the
+        // dielectric's furnace; OpenCL's store-only ceiling besides.
+        CHECK(count["opencl philox"] == 13);
+        CHECK(count[vulkan + " philox"] == 12);
+        CHECK(count["opencl sobol"] == 4);  // caps and ndf: write, furnace (the conductor's)
+        CHECK(count[vulkan + " sobol"] == 4);
         const std::string report = ggxtest::read_all(md);
-        CHECK(report.find("| Vulkan / OpenCL |") != std::string::npos);
-        CHECK(report.find("shaders in " + language) != std::string::npos);
+        CHECK(report.find("# The APIs side by side") != std::string::npos);
+        CHECK(report.find("| " + vulkan + " / opencl |") != std::string::npos);
+        CHECK(report.find("# On vulkan:") != std::string::npos);
     }
-    for (const std::string& args : {std::string("--jobs world"), "--html " + (scratch / "b.html").string()}) {
-        const ggxtest::Run run = ggxtest::run_ggx("bench --api vulkan -n 2^12 " + args, scratch / "err.txt");
-        CAPTURE(args);
-        CHECK(run.status == 2);
-        CHECK(run.err.find(args.substr(0, args.find(' '))) != std::string::npos);
+    const fs::path csv = scratch / "alone.csv", page = scratch / "alone.html";
+    const ggxtest::Run alone = ggxtest::run_ggx("bench --api vulkan -n 2^12 --repeats 5 --methods caps --precisions "
+                                                "precise --sequences philox --eta 1.5 --scene 2 --cell-samples 2^10 "
+                                                "--no-native --no-startup --csv " + csv.string() + " --html " +
+                                                    page.string(),
+                                                scratch / "err.txt");
+    CAPTURE(alone.err);
+    REQUIRE(alone.status == 0);
+    const std::string text = ggxtest::read_all(csv);
+    std::map<std::string, int> jobs;
+    for (const ggxtest::BenchCsvRow& row : ggxtest::bench_csv_rows(text)) {
+        CAPTURE(row.line);
+        CHECK(ggxtest::csv_cell(text, row.line, "api") == "vulkan (glsl)");  // Vulkan alone
+        ++jobs[row.job];
+        if (row.job == "furnace" && ggxtest::csv_cell(text, row.line, "eta") != "0")  // the dielectric's accuracy
+            CHECK(std::abs(std::stod(ggxtest::csv_cell(text, row.line, "reflectance")) -
+                           std::stod(ggxtest::csv_cell(text, row.line, "reflectance_exact"))) <
+                  6 * std::stod(ggxtest::csv_cell(text, row.line, "reflectance_se")));
     }
+    for (const char* job : {"write", "furnace", "world", "per-sample", "write-o"})
+        CHECK(jobs[job] > 0);
+    const std::string html = ggxtest::read_all(page);
+    CHECK(html.find("alone-speed-error.png") != std::string::npos);
+    CHECK(fs::exists(scratch / "alone-speed-rmse.png"));
+    const ggxtest::Run wrong = ggxtest::run_ggx("bench --api opencl,metal -n 2^12", scratch / "err.txt");
+    CHECK(wrong.status == 2);
+    CHECK(wrong.err.find("--api") != std::string::npos);
 }
 
 TEST_CASE("ggx stress --api vulkan writes the map of every method asked, conductor and dielectric")

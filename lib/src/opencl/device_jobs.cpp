@@ -1,0 +1,172 @@
+// device_jobs.cpp - the bench's jobs on an OpenCL Sampler
+// (ggxcl/benchmark.hpp): into device buffers made once, each run a launch
+// timed by its event's profiling and by wall clock around launch and wait.
+#include <chrono>
+
+#include "backend_factories.hpp"
+#include "planar_inputs.hpp"
+#include "program_variant.hpp"
+#include "ggxcl/error.hpp"
+#include "ggxcl/sampler.hpp"
+
+namespace ggxcl::detail {
+
+namespace {
+
+using benchmark::Job;
+
+// The store job's kernel: the write job's bytes (three planes of m, one of pdf_m) from values
+// that cost nothing to compute.
+const char* store_source = R"CL(
+__kernel void store_only(__global float* restrict m, __global float* restrict pdf_m, uint count, float seed)
+{
+    uint j = get_global_id(0);
+    float x = (float)j * 1e-7f + seed;
+    m[j] = x;
+    m[j + count] = x + 1.0f;
+    m[j + 2 * count] = x + 2.0f;
+    pdf_m[j] = x + 3.0f;
+}
+)CL";
+
+cl::Buffer device_copy(const cl::Context& context, std::vector<float> host)
+{
+    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, host.size() * sizeof(float), host.data());
+}
+
+// The caller's per-sample arrays in device buffers (planes of stride n), with the promises they keep.
+DeviceInputs device_inputs(const cl::Context& context, const SampleParams& params, const PerSampleInputs& in)
+{
+    const std::uint64_t n = in.views.size();
+    const PerSampleKinds kinds = host_input_kinds(params, in);
+    DeviceInputs d;
+    d.views_above_horizon = kinds.above_horizon;
+    d.isotropic = kinds.isotropic;
+    if (!in.views.empty()) d.view = device_copy(context, planar_units(in.views, 0, n, n));
+    if (!in.normals.empty()) d.normal = device_copy(context, planar_units(in.normals, 0, n, n));
+    if (!in.alphas.empty()) d.alpha = device_copy(context, planar_pairs(in.alphas, 0, n, n));
+    return d;
+}
+
+// The profiled duration of a finished command in ns; -1 when the driver gives none.
+double profiled_ns(const cl::Event& done)
+{
+    cl_ulong start = 0, end = 0;
+    if (done.getProfilingInfo(CL_PROFILING_COMMAND_START, &start) != CL_SUCCESS ||
+        done.getProfilingInfo(CL_PROFILING_COMMAND_END, &end) != CL_SUCCESS)
+        return -1.0;
+    return double(end) - double(start);
+}
+
+class OpenclJobs final : public benchmark::DeviceJobs {
+public:
+    OpenclJobs(Sampler& sampler, std::uint64_t count, const benchmark::JobInputs& inputs);
+    bool runs(Job) const override { return true; }
+    std::uint64_t samples(Job job) const override
+    {
+        return job == Job::world ? world_count_ : job == Job::per_sample ? per_sample_count_ : count_;
+    }
+    benchmark::RunTime run(Job job, const SampleParams& params, std::uint64_t seed) override;
+    std::optional<benchmark::ProgramText> program(Job job, const SampleParams& params) const override;
+
+private:
+    cl::Event launch(Job job, const SampleParams& params, std::uint64_t seed);
+
+    Sampler& sampler_;
+    std::uint32_t count_, world_count_, per_sample_count_;
+    DeviceOutputs write_out_, write_o_out_, world_out_;  // write_o_out_: write_out_'s buffers
+    DeviceInputs world_in_, per_sample_in_;
+    cl::Buffer sums_;
+    cl::Kernel store_;
+};
+
+OpenclJobs::OpenclJobs(Sampler& sampler, std::uint64_t count, const benchmark::JobInputs& inputs)
+    : sampler_(sampler), count_(std::uint32_t(count)), world_count_(std::uint32_t(inputs.world.views.size())),
+      per_sample_count_(std::uint32_t(inputs.per_sample.views.size()))
+{
+    if (count < 1 || count > (1u << 31))
+        throw InvalidArgument("count", std::to_string(count), "1 .. 2^31 samples per run");
+    const cl::Context& context = sampler.context();
+    const std::size_t most = std::max({count_, world_count_, per_sample_count_});
+    write_out_.m = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * most * sizeof(float));
+    write_out_.pdf_m = cl::Buffer(context, CL_MEM_WRITE_ONLY, most * sizeof(float));
+    write_o_out_.o = write_out_.m;  // the same bytes: 3 planes and 1
+    write_o_out_.pdf_o = write_out_.pdf_m;
+    world_out_.o = write_out_.m;
+    // Weights and their squares, and a dielectric's reflected weights (Sampler::enqueue_furnace).
+    sums_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * sampler.furnace_items(count_) * sizeof(float));
+    SampleParams world;
+    world.world_space = true;
+    if (world_count_ > 0)
+        world_in_ = device_inputs(context, world, inputs.world);
+    if (per_sample_count_ > 0)
+        per_sample_in_ = device_inputs(context, SampleParams{}, inputs.per_sample);
+    cl::Program store(context, store_source);
+    store.build({sampler.device()});
+    store_ = cl::Kernel(store, "store_only");
+}
+
+cl::Event OpenclJobs::launch(Job job, const SampleParams& params, std::uint64_t seed)
+{
+    cl::CommandQueue& queue = sampler_.queue();
+    const SampleRange range{seed, 0, samples(job)};
+    switch (job) {
+    case Job::write:  // with or without the guards (params.guards)
+        return sampler_.enqueue(queue, params, range, write_out_);
+    case Job::write_o:
+        return sampler_.enqueue(queue, params, range, write_o_out_);
+    case Job::furnace: {  // as Sampler::furnace runs it: unguarded, rerun with guards only on a NaN sum
+        SampleParams unguarded = params;
+        unguarded.guards = false;
+        return sampler_.enqueue_furnace(queue, unguarded, range, sums_);
+    }
+    case Job::world:
+        return sampler_.enqueue(queue, world_job_params(params), range, world_out_, 0, world_in_);
+    case Job::per_sample:
+        return sampler_.enqueue(queue, params, range, write_out_, 0, per_sample_in_);
+    case Job::store: {
+        store_.setArg(0, write_out_.m);
+        store_.setArg(1, write_out_.pdf_m);
+        store_.setArg(2, cl_uint(count_));
+        store_.setArg(3, cl_float(seed));
+        cl::Event done;
+        queue.enqueueNDRangeKernel(store_, cl::NullRange, cl::NDRange(count_), cl::NullRange, nullptr, &done);
+        return done;
+    }
+    }
+    return {};
+}
+
+benchmark::RunTime OpenclJobs::run(Job job, const SampleParams& params, std::uint64_t seed)
+{
+    if ((job == Job::world && world_count_ == 0) || (job == Job::per_sample && per_sample_count_ == 0))
+        throw InvalidArgument("job inputs", "none", "per-sample inputs for the world and per-sample jobs");
+    const auto start = std::chrono::steady_clock::now();
+    const cl::Event done = launch(job, params, seed);
+    done.wait();
+    const double wall_ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+    return {profiled_ns(done), wall_ns};
+}
+
+std::optional<benchmark::ProgramText> OpenclJobs::program(Job job, const SampleParams& params) const
+{
+    if (job == Job::write)
+        return benchmark::enqueue_program(sampler_, params, {Field::m, Field::pdf_m});
+    if (job == Job::write_o)
+        return benchmark::enqueue_program(sampler_, params, {Field::o, Field::pdf_o});
+    SampleParams unguarded = params;  // the furnace runs unguarded, as launch() does
+    unguarded.guards = false;
+    if (job == Job::furnace)
+        return benchmark::furnace_program(sampler_, unguarded);
+    return std::nullopt;
+}
+
+} // namespace
+
+std::unique_ptr<benchmark::DeviceJobs> opencl_device_jobs(Backend& sampler, std::uint64_t count,
+                                                          benchmark::JobInputs inputs)
+{
+    return std::make_unique<OpenclJobs>(static_cast<Sampler&>(sampler), count, inputs);
+}
+
+} // namespace ggxcl::detail

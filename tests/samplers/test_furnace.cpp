@@ -4,7 +4,9 @@
 // samples (any count, also not a multiple of the work-group size), its
 // mean is the reference albedo within 4 standard errors for every method in
 // every precision mode; a view opposite the normal is refused for the
-// samplers of visible normals, and ndf reflects nothing there (sums 0).
+// samplers of visible normals, and ndf reflects nothing there (sums 0); a
+// dielectric's sums are bit-identical whatever the chunk size splits the
+// range into, and a range's halves sum to the whole.
 // Negative control: a range shifted by one sample does not give the same sums.
 #include <doctest/doctest.h>
 
@@ -109,6 +111,33 @@ TEST_CASE("a view opposite the normal: refused for visible normals, nothing refl
         p.view = ggxcl::view_from_angles(179.99, 0.0);  // still sees some microfacets
         CHECK_NOTHROW(backend().furnace(p, {5, 0, 5000}));
     }
+}
+
+TEST_CASE("the sums do not depend on how the chunk size splits the range")
+{
+    if (!ggxtest::test_backend())
+        return;
+    ggxcl::SampleParams p =
+        ggxtest::to_library(Method::caps, ggxtest::make_params(0.5, 0.3, 50.0), ggxcl::Precision::precise);
+    p.eta = 1.33f;
+    const std::uint64_t samples = 200003;  // not a multiple of the samples per work-item
+    const ggxcl::SampleRange range{3, 64, samples};
+    const std::uint64_t chunk = backend().chunk_size();
+    const ggxcl::FurnaceSums whole = backend().furnace(p, range);
+    for (std::uint64_t size : {std::uint64_t(8), std::uint64_t(4096), std::uint64_t(50001)}) {
+        CAPTURE(size);
+        backend().set_chunk_size(size);
+        const ggxcl::FurnaceSums split = backend().furnace(p, range);
+        CHECK(split.sum == whole.sum);
+        CHECK(split.sum_of_squares == whole.sum_of_squares);
+        CHECK(split.reflected_sum == whole.reflected_sum);
+    }
+    backend().set_chunk_size(chunk);
+    // Halves that start at a multiple of the samples per work-item sum to the whole.
+    const std::uint64_t half = 100000;
+    const ggxcl::FurnaceSums first = backend().furnace(p, {3, 64, half});
+    const ggxcl::FurnaceSums second = backend().furnace(p, {3, 64 + half, samples - half});
+    CHECK(std::fabs(first.sum + second.sum - whole.sum) <= 1e-9 * whole.sum);
 }
 
 TEST_CASE("negative control: a range shifted by one sample gives other sums")

@@ -1,10 +1,13 @@
 // test_pdf_consistency.cpp - the pdf a sampler returns equals the pdf
 // recomputed from the direction alone: on the device (ggx_pdf_bulk, the
 // `ggx_pdf_<method>` device functions) and in the double reference; for
-// bounded also where both alphas exceed 1 (k < 0).  On the back end of
-// GGX_TEST_API (backend_fixture.hpp): CTest runs it on OpenCL and on Vulkan.
+// bounded also where both alphas exceed 1 (k < 0).  The pdf of directions
+// with a view per sample is the same whatever the chunk size; no directions
+// is refused.  On the back end of GGX_TEST_API (backend_fixture.hpp): CTest
+// runs it on OpenCL and on Vulkan.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "backend_fixture.hpp"
@@ -64,4 +67,38 @@ TEST_CASE("bounded: returned pdf equals the pdf recomputed from (i, o)") { check
 TEST_CASE("bounded where both alphas exceed 1 (k < 0): returned pdf equals the pdf recomputed from (i, o)")
 {
     check_method(ggxref::Method::bounded, ggxtest::rough_bounded_grid());
+}
+
+TEST_CASE("the pdf of directions with a view per sample does not depend on the chunk size")
+{
+    ggxcl::Backend* backend = ggxtest::test_backend();
+    if (!backend)
+        return;
+    const ggxcl::SampleParams p =
+        ggxtest::to_library(ggxref::Method::bounded, ggxtest::make_params(0.5, 0.2, 60.0), ggxcl::Precision::precise);
+    const ggxcl::SampleSet s = backend->generate(p, {7, 0, samples}, {ggxcl::Field::o});
+    std::vector<ggxcl::Vec3> directions(samples);
+    ggxcl::PerSampleInputs views;
+    for (std::size_t j = 0; j < samples; ++j) {
+        directions[j] = s.o_at(j);
+        views.views.push_back(ggxcl::unit_vector({0.1f * float(j % 7), -0.2f, 1.0f}));
+    }
+    const std::uint64_t chunk = backend->chunk_size();
+    const std::vector<float> whole = backend->pdf(p, directions, views);
+    backend->set_chunk_size(1000);
+    const std::vector<float> chunked = backend->pdf(p, directions, views);
+    backend->set_chunk_size(chunk);
+    CHECK(chunked == whole);
+    CHECK(std::count_if(whole.begin(), whole.end(), [](float v) { return v > 0.0f; }) > int(samples / 2));
+}
+
+TEST_CASE("no directions is refused")
+{
+    ggxcl::Backend* backend = ggxtest::test_backend();
+    if (!backend)
+        return;
+    const ggxcl::SampleParams p =
+        ggxtest::to_library(ggxref::Method::caps, ggxtest::make_params(0.5, 0.5, 30.0), ggxcl::Precision::precise);
+    CHECK_THROWS_AS(backend->pdf(p, {}), ggxcl::InvalidArgument);
+    CHECK_THROWS_AS(backend->eval(p, {}), ggxcl::InvalidArgument);
 }

@@ -4,9 +4,8 @@
 //   - every method's sums, conductor and dielectric, agree with OpenCL's
 //     furnace of the same request (the same samples, float rounding apart):
 //     the albedo, its per-sample variance and a dielectric's reflectance;
-//   - the sums are bit-identical however the range is split into
-//     dispatches (chunk sizes, counts not a multiple of the samples per
-//     invocation), and a range's halves sum to the whole;
+//   (that the sums do not depend on the chunk size is test_furnace's, run on
+//   both back ends;)
 //   - negative control: another seed moves the sums by more than the tolerance.
 #include <doctest/doctest.h>
 
@@ -54,32 +53,6 @@ TEST_CASE("every method's furnace on Vulkan agrees with OpenCL's, conductor and 
             if (ggxcl::method_traits(method).dielectric)
                 check_against_opencl(language, ggxvk::chi_square_dielectric(method, 1.5f));
         }
-}
-
-TEST_CASE("the furnace's sums do not depend on how the range is split into dispatches")
-{
-    for (ShaderLanguage language : ggxvk::all_shader_languages) {
-        CAPTURE(std::string(ggxcl::shader_language_name(language)));
-        ggxcl::VulkanSampler& vk = ggxvk::vulkan_sampler(language);
-        const ggxcl::SampleParams p = ggxvk::chi_square_dielectric(ggxcl::Method::caps, 1.33f);
-        const ggxcl::SampleRange range{3, 64, samples};
-        const std::uint64_t chunk = vk.chunk_size();
-        const ggxcl::FurnaceSums whole = vk.furnace(p, range);
-        for (std::uint64_t size : {std::uint64_t(8), std::uint64_t(4096), std::uint64_t(50001)}) {
-            CAPTURE(size);
-            vk.set_chunk_size(size);  // 50001: rounded down to a multiple of the samples per invocation
-            const ggxcl::FurnaceSums split = vk.furnace(p, range);
-            CHECK(split.sum == whole.sum);
-            CHECK(split.sum_of_squares == whole.sum_of_squares);
-            CHECK(split.reflected_sum == whole.reflected_sum);
-        }
-        vk.set_chunk_size(chunk);
-        // Halves that start at a multiple of the samples per invocation sum to the whole.
-        const std::uint64_t half = 100000;
-        const ggxcl::FurnaceSums first = vk.furnace(p, {3, 64, half});
-        const ggxcl::FurnaceSums second = vk.furnace(p, {3, 64 + half, samples - half});
-        CHECK(std::fabs(first.sum + second.sum - whole.sum) <= 1e-9 * whole.sum);
-    }
 }
 
 TEST_CASE("negative control: another seed moves the furnace's sums past the tolerance")

@@ -7,11 +7,12 @@
 //     99% <= 1e-4, no NaN or Inf; the uniforms (field u) are equal bit for bit;
 //   - so do world space, the Sobol sequence and per-sample views, roughness,
 //     normals and uniforms;
-//   - chunks are bit-identical to one dispatch, and a range's shards to the whole;
+//   (chunks and shards bit-identical to one call, and the refusal of bad
+//   requests, are test_backend_contract's, run on both back ends;)
 //   - the 2-D dispatch shape covers every sample once within the device's limits;
 //   - the device's limits are read (storage buffer range, work-groups, push constants);
 //   - the SPIR-V comes from the disk cache in a second sampler;
-//   - errors: a user sampler, an unknown selector, an unknown language;
+//   - errors: an unknown selector, an unknown language;
 //   - negative controls: another seed fails the agreement; with
 //     GGXCL_VULKAN_VALIDATION=1 (set for every suite labelled vulkan) the
 //     validation layer stops a dispatch whose push constants overrun the layout.
@@ -140,28 +141,6 @@ TEST_CASE("world space, Sobol and per-sample inputs on Vulkan agree with OpenCL"
     }
 }
 
-TEST_CASE("chunks and shards on Vulkan are bit-identical to one dispatch")
-{
-    const ggxcl::SampleParams p = request(ggxcl::Method::caps, 0.2f, 0.7f, 70);
-    ggxcl::VulkanSampler& vk = vulkan(ShaderLanguage::glsl);
-    const ggxcl::SampleSet whole = vk.generate(p, {3, 1000, 10000}, every_field);
-    vk.set_chunk_size(1536);
-    const ggxcl::SampleSet chunked = vk.generate(p, {3, 1000, 10000}, every_field);
-    vk.set_chunk_size(1u << 20);
-    const ggxcl::SampleSet head = vk.generate(p, {3, 1000, 4000}, every_field);
-    const ggxcl::SampleSet tail = vk.generate(p, {3, 5000, 6000}, every_field);
-    CHECK(chunked.m == whole.m);
-    CHECK(chunked.o == whole.o);
-    CHECK(chunked.pdf_o == whole.pdf_o);
-    CHECK(chunked.weight == whole.weight);
-    CHECK(std::equal(head.pdf_o.begin(), head.pdf_o.end(), whole.pdf_o.begin()));
-    CHECK(std::equal(tail.pdf_o.begin(), tail.pdf_o.end(), whole.pdf_o.begin() + 4000));
-    for (int c = 0; c < 3; ++c) {  // plane c of the shards against the whole's
-        CHECK(std::equal(head.o.begin() + c * 4000, head.o.begin() + (c + 1) * 4000, whole.o.begin() + c * 10000));
-        CHECK(std::equal(tail.o.begin() + c * 6000, tail.o.begin() + (c + 1) * 6000, whole.o.begin() + c * 10000 + 4000));
-    }
-}
-
 TEST_CASE("the 2-D dispatch covers every sample once within the device's limits")
 {
     using ggxcl::detail::dispatch_shape;
@@ -195,11 +174,6 @@ TEST_CASE("bad requests on Vulkan are refused with the value and what is allowed
 {
     CHECK_THROWS_WITH_AS(ggxcl::parse_shader_language("wgsl"), doctest::Contains("glsl or hlsl"), ggxcl::InvalidArgument);
     CHECK_THROWS_WITH_AS(ggxcl::VulkanSampler("no such device"), doctest::Contains("llvmpipe"), ggxcl::NoMatchingDevice);
-    CHECK_THROWS_AS(vulkan(ShaderLanguage::glsl).set_chunk_size(0), ggxcl::InvalidArgument);
-    ggxcl::SampleParams bad = request(ggxcl::Method::caps, 0.3f, 0.3f, 40);
-    bad.alpha_x = -1.0f;
-    CHECK_THROWS_WITH_AS(vulkan(ShaderLanguage::glsl).generate(bad, {1, 0, 10}, {Field::o}), doctest::Contains("alpha_x"),
-                         ggxcl::InvalidArgument);
 }
 
 TEST_CASE("negative control: another seed fails the agreement")

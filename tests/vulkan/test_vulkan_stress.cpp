@@ -5,7 +5,7 @@
 //     exactly the cells and cases where OpenCL's map has it; so does every
 //     dielectric method's map over indices near 1 and typical;
 //   - the same without the guards: the shader is built with GGX_GUARDS=0;
-//   - inputs of the wrong size are refused, naming what is expected;
+//   (inputs of the wrong size are refused: test_backend_contract, both back ends;)
 //   - negative control: another method's OpenCL map differs in its fallback
 //     cells, which the comparison sees.
 #include <doctest/doctest.h>
@@ -83,17 +83,6 @@ TEST_CASE("every dielectric method's map on Vulkan: no NaN or Inf, OpenCL's fall
             CHECK(cells_differing(vk, cl, dl::fallback) == 0);
             CHECK(total(vk, dl::fallback) > 0);
         }
-}
-
-TEST_CASE("stress inputs of the wrong size are refused")
-{
-    ggxcl::VulkanSampler& vk = ggxvk::vulkan_sampler(ShaderLanguage::glsl);
-    try {
-        vk.stress({ggxcl::Method::caps}, std::vector<float>(25), 3);
-        FAIL("wrong size accepted");
-    } catch (const ggxcl::InvalidArgument& e) {
-        CHECK(std::string(e.what()).find("30 (10 planes of 3 cases)") != std::string::npos);
-    }
 }
 
 TEST_CASE("negative control: another method's map differs in its fallback cells")

@@ -1,6 +1,7 @@
-// bench_report.cpp - CSV and Markdown of `ggx bench`: the answer (which
-// sampler is fastest, most accurate, best at equal time) first, then every
-// table and, with --eta, the rough dielectric's section.
+// bench_report.cpp - CSV and Markdown of `ggx bench`: per device the answer
+// (which sampler is fastest, most accurate, best at equal time) first, then
+// every table and, with --eta, the rough dielectric's section; with two
+// devices their rows side by side; the process rows last.
 #include "bench_report.hpp"
 
 #include "bench_limits.hpp"

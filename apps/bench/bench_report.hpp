@@ -1,10 +1,11 @@
 // bench_report.hpp - what `ggx bench` measured and how it is written: the
-// rows (one per method x precision mode x job, the native baseline with
-// precision "native"; with --eta a rough dielectric's rows, eta set, beside
-// conductor rows of the same jobs), derived columns (efficiency, RMSE at equal time),
-// the CSV, the Markdown report (which sampler to pick first), and the charts; the
-// rows' op counts and the device's peaks give how close each runs to its
-// limits (bench_limits.hpp).
+// rows (one per device x method x precision mode x job, each with its api;
+// the native baseline with precision and api "native"; with --eta a rough
+// dielectric's rows, eta set, beside conductor rows of the same jobs),
+// derived columns (efficiency, RMSE at equal time), the CSV, the Markdown
+// report (a section per device, which sampler to pick first, and with two
+// devices their rows side by side), and the charts; the rows' op counts and
+// the device's peaks give how close each runs to its limits (bench_limits.hpp).
 #pragma once
 
 #include <string>

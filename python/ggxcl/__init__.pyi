@@ -23,9 +23,9 @@ class DeviceLost(DeviceError): ...
 Alpha = Union[float, Tuple[float, float], npt.NDArray[np.floating[Any]]]
 
 class UserSampler:
-    """A sampler of your own in one file of OpenCL C (docs/USER-SAMPLERS.md): pass it as `method`. Python runs
-    on OpenCL: a .glsl or .hlsl file runs through `ggx --sampler` or ggxcl::VulkanSampler in C++, and using one
-    here raises InvalidArgument naming the file."""
+    """A sampler of your own in one file (docs/USER-SAMPLERS.md): pass it as `method`. A .glsl or .hlsl file is a
+    shader for a Sampler(api='vulkan'), any other OpenCL C for an OpenCL Sampler; the other API raises
+    InvalidArgument naming the file."""
 
     def __init__(self, path: str, name: Optional[str] = None) -> None:
         """Reads `path` and what it includes; `name` (default: the file's stem) names it in reports. A file
@@ -47,14 +47,28 @@ Method = Union[str, UserSampler]
 Vector = Union[Sequence[float], npt.NDArray[np.floating[Any]]]
 
 def devices() -> List[Dict[str, Any]]:
-    """Every OpenCL device: index, platform, name, type, label, compute_units, opencl_version."""
+    """Every device: api ('opencl' or 'vulkan'), index, selector (what Sampler's `device` takes with that api),
+    name and label; OpenCL's also platform, type, compute_units and opencl_version. Vulkan devices where ggxcl
+    was built with Vulkan and a driver is installed."""
 
 class Sampler:
-    """GGX samplers on one OpenCL device (`device`: an index or part of a label; default GGXCL_DEVICE, else the first)."""
+    """GGX samplers on one device of OpenCL or Vulkan (`device`: an index or part of a label; default GGXCL_DEVICE
+    or GGXCL_VULKAN_DEVICE, else the first). Every call works on both APIs but enqueue (OpenCL's buffers); calls
+    from several threads at once are safe and give the bits each gives alone."""
 
-    def __init__(self, device: Optional[Any] = None, context: Optional[Any] = None) -> None:
-        """`device`: an index or part of a label (default GGXCL_DEVICE, else the first); with a pyopencl.Context
-        `context`, the sampler works on that context and `device` is a pyopencl.Device."""
+    def __init__(
+        self,
+        device: Optional[Any] = None,
+        context: Optional[Any] = None,
+        *,
+        api: str = "opencl",
+        shader_language: Optional[str] = None,
+    ) -> None:
+        """`device`: an index or part of a label (default GGXCL_DEVICE, or GGXCL_VULKAN_DEVICE with api='vulkan',
+        else the first); with a pyopencl.Context `context` (OpenCL only), the sampler works on that context and
+        `device` is a pyopencl.Device. `api`: 'opencl' or 'vulkan' (compute shaders from the same headers);
+        `shader_language`: 'glsl' (the default) or 'hlsl', the Vulkan shaders' language. No driver for the API
+        raises DeviceError saying what to install."""
     def enqueue(
         self,
         queue: Any,
@@ -83,9 +97,15 @@ class Sampler:
         field at c * stride floats, stride 0 meaning n) on a pyopencl queue of this sampler's context, after the
         events of `wait_for`; per-sample inputs as Buffers too (inputs={'view', 'alpha', 'normal', 'uniforms'};
         with `eta`, uniforms and u have 3 planes). Returns a pyopencl.Event. A buffer too small raises
-        InvalidArgument naming it."""
+        InvalidArgument naming it; so does a Sampler on Vulkan (parameter 'api')."""
     @property
     def device_name(self) -> str: ...
+    @property
+    def api(self) -> str:
+        """'opencl' or 'vulkan'."""
+    @property
+    def shader_language(self) -> Optional[str]:
+        """'glsl' or 'hlsl' on Vulkan; None on OpenCL."""
     chunk_size: int
     def sample(
         self,

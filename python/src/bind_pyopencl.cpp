@@ -41,10 +41,16 @@ cl::Buffer& input_slot(ggxcl::DeviceInputs& inputs, const std::string& name)
     throw ggxcl::InvalidArgument("inputs", name, "view, alpha, normal or uniforms");
 }
 
-py::object enqueue(ggxcl::Sampler& s, const py::object& queue, const RequestArgs& args, std::uint64_t seed,
+py::object enqueue(ggxcl::Backend& backend, const py::object& queue, const RequestArgs& args, std::uint64_t seed,
                    std::uint64_t first, std::uint32_t stride, const py::object& outputs, const py::object& inputs,
                    bool views_above_horizon, bool isotropic, const py::object& wait_for)
 {
+    auto* sampler = dynamic_cast<ggxcl::Sampler*>(&backend);  // the caller's buffers are OpenCL's
+    if (!sampler)
+        throw ggxcl::InvalidArgument("api", ggxcl::api_name(backend.api()),
+                                     "opencl for enqueue, which writes into pyopencl buffers (sample() works on "
+                                     "every API)");
+    ggxcl::Sampler& s = *sampler;
     cl::CommandQueue q = handle_of<cl::CommandQueue>(queue, "queue", "CommandQueue");
     const Request r = make_request(args);
     ggxcl::DeviceOutputs out;
@@ -70,11 +76,11 @@ std::unique_ptr<ggxcl::Sampler> sampler_on(const py::object& context, const py::
                                             handle_of<cl::Device>(device, "device", "Device"));
 }
 
-void add_enqueue(py::class_<ggxcl::Sampler>& sampler)
+void add_enqueue(py::class_<ggxcl::Backend>& sampler)
 {
     sampler.def(
         "enqueue",
-        [](ggxcl::Sampler& s, const py::object& queue, const py::object& method, const py::object& n,
+        [](ggxcl::Backend& s, const py::object& queue, const py::object& method, const py::object& n,
            const py::object& outputs, std::uint64_t seed, std::uint64_t first, std::uint32_t stride,
            const py::object& alpha, double theta, double phi, const py::object& view, const py::object& normal,
            const py::object& precision, const std::string& sequence, const py::object& inputs,

@@ -15,7 +15,7 @@ namespace ggxpy {
 // A Sampler on the OpenCL context and device of pyopencl's objects.
 std::unique_ptr<ggxcl::Sampler> sampler_on(const pybind11::object& context, const pybind11::object& device);
 
-// Adds Sampler.enqueue to the bound class.
-void add_enqueue(pybind11::class_<ggxcl::Sampler>& sampler);
+// Adds Sampler.enqueue to the bound class (InvalidArgument naming the API on a Vulkan sampler).
+void add_enqueue(pybind11::class_<ggxcl::Backend>& sampler);
 
 } // namespace ggxpy

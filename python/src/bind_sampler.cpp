@@ -56,7 +56,7 @@ void copy_rows(const ggxcl::SampleSet& chunk, ggxcl::Field field, bool dielectri
             out[(offset + j) * columns + c] = planes[c * chunk.count + j];
 }
 
-py::dict sample(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first,
+py::dict sample(ggxcl::Backend& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first,
                 const py::object& fields, const py::object& out)
 {
     if (args.count == 0)
@@ -85,7 +85,7 @@ py::dict sample(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, 
 }
 
 // The pdf (eval = false) or the BRDF value (eval = true) of each direction of an (n, 3) array.
-py::array_t<float> of_directions(ggxcl::Sampler& s, RequestArgs args, const py::object& directions, bool eval)
+py::array_t<float> of_directions(ggxcl::Backend& s, RequestArgs args, const py::object& directions, bool eval)
 {
     if (!is_array(directions))
         throw ggxcl::InvalidArgument("directions", std::string(py::repr(directions)), "a NumPy array of shape (n, 3)");
@@ -100,7 +100,7 @@ py::array_t<float> of_directions(ggxcl::Sampler& s, RequestArgs args, const py::
     return py::array_t<float>(values.size(), values.data());
 }
 
-py::dict furnace(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first)
+py::dict furnace(ggxcl::Backend& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first)
 {
     const Request r = make_request(args);
     ggxcl::FurnaceSums sums;
@@ -119,7 +119,7 @@ py::dict furnace(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed,
     return result;
 }
 
-py::dict histogram(ggxcl::Sampler& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first, int bins_z,
+py::dict histogram(ggxcl::Backend& s, const RequestArgs& args, std::uint64_t seed, std::uint64_t first, int bins_z,
                    int bins_phi, const std::string& of, const py::object& against)
 {
     const Request r = make_request(args);
@@ -192,7 +192,9 @@ py::list devices()
     py::list list;
     for (const ggxcl::DeviceInfo& d : ggxcl::list_devices()) {
         py::dict info;
+        info["api"] = "opencl";
         info["index"] = d.index;
+        info["selector"] = std::to_string(d.index);
         info["platform"] = d.platform;
         info["name"] = d.name;
         info["type"] = d.type;
@@ -201,7 +203,44 @@ py::list devices()
         info["opencl_version"] = d.opencl_version;
         list.append(info);
     }
+    if (!ggxcl::vulkan_built())
+        return list;
+    std::vector<ggxcl::VulkanDeviceInfo> vulkan;
+    try {
+        vulkan = ggxcl::list_vulkan_devices();
+    } catch (const ggxcl::DeviceError&) {  // no Vulkan driver: the OpenCL devices alone
+    }
+    for (const ggxcl::VulkanDeviceInfo& d : vulkan) {
+        py::dict info;
+        info["api"] = "vulkan";
+        info["index"] = d.index;
+        info["selector"] = std::to_string(d.index);
+        info["name"] = d.name;
+        info["label"] = d.label();
+        list.append(info);
+    }
     return list;
+}
+
+// A back end on `api`'s device, or an OpenCL Sampler on pyopencl's context.
+std::unique_ptr<ggxcl::Backend> open_sampler(const py::object& device, const py::object& context, const std::string& api,
+                                             const py::object& shader_language)
+{
+    const ggxcl::Api chosen = ggxcl::parse_api(api);
+    if (chosen != ggxcl::Api::vulkan && !shader_language.is_none())
+        throw ggxcl::InvalidArgument("shader_language", std::string(py::str(shader_language)),
+                                     "None with api='opencl' (its kernels are OpenCL C)");
+    if (!context.is_none()) {  // pyopencl objects
+        if (chosen != ggxcl::Api::opencl)
+            throw ggxcl::InvalidArgument("context", std::string(py::repr(context)),
+                                         "None with api='vulkan' (a pyopencl context is OpenCL's)");
+        return sampler_on(context, device);
+    }
+    const std::string selector = device.is_none() ? "" : std::string(py::str(device));
+    const ggxcl::ShaderLanguage language = shader_language.is_none()
+                                               ? ggxcl::ShaderLanguage::glsl
+                                               : ggxcl::parse_shader_language(shader_language.cast<std::string>());
+    return ggxcl::open_backend(chosen, selector, language);
 }
 
 } // namespace
@@ -209,20 +248,25 @@ py::list devices()
 void register_sampler(py::module_& m)
 {
     m.def("devices", &devices, docs::devices);
-    py::class_<ggxcl::Sampler> sampler(m, "Sampler", docs::Sampler);
+    py::class_<ggxcl::Backend> sampler(m, "Sampler", docs::Sampler);
     sampler
-        .def(py::init([](const py::object& device, const py::object& context) {
-                 if (!context.is_none())  // pyopencl objects
-                     return sampler_on(context, device);
-                 std::string selector = device.is_none() ? "" : std::string(py::str(device));
-                 return std::make_unique<ggxcl::Sampler>(selector);
-             }),
-             py::arg("device") = py::none(), py::arg("context") = py::none(), docs::Sampler_init)
-        .def_property_readonly("device_name", &ggxcl::Sampler::device_name)
-        .def_property("chunk_size", &ggxcl::Sampler::chunk_size, &ggxcl::Sampler::set_chunk_size)
+        .def(py::init(&open_sampler), py::arg("device") = py::none(), py::arg("context") = py::none(),
+             py::kw_only(), py::arg("api") = "opencl", py::arg("shader_language") = py::none(), docs::Sampler_init)
+        .def_property_readonly("device_name", &ggxcl::Backend::device_name)
+        .def_property_readonly(
+            "api", [](const ggxcl::Backend& s) { return std::string(ggxcl::api_name(s.api())); }, docs::Sampler_api)
+        .def_property_readonly(
+            "shader_language",
+            [](const ggxcl::Backend& s) -> py::object {
+                if (!s.shader_language())
+                    return py::none();
+                return py::str(ggxcl::shader_language_name(*s.shader_language()));
+            },
+            docs::Sampler_shader_language)
+        .def_property("chunk_size", &ggxcl::Backend::chunk_size, &ggxcl::Backend::set_chunk_size)
         .def(
             "sample",
-            [](ggxcl::Sampler& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
+            [](ggxcl::Backend& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
                double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
                const py::object& fields, const py::object& precision, const std::string& sequence,
                const py::object& uniforms, bool world_space, const py::object& out, const py::object& eta,
@@ -241,7 +285,7 @@ void register_sampler(py::module_& m)
             py::arg("transport") = "radiance", docs::Sampler_sample)
         .def(
             "pdf",
-            [](ggxcl::Sampler& s, const py::object& method, const py::object& directions, const py::object& alpha,
+            [](ggxcl::Backend& s, const py::object& method, const py::object& directions, const py::object& alpha,
                double theta, double phi, const py::object& view, const py::object& normal, const py::object& precision,
                bool world_space, const py::object& eta) {
                 return of_directions(s,
@@ -256,7 +300,7 @@ void register_sampler(py::module_& m)
             docs::Sampler_pdf)
         .def(
             "eval",
-            [](ggxcl::Sampler& s, const py::object& directions, const py::object& alpha, double theta, double phi,
+            [](ggxcl::Backend& s, const py::object& directions, const py::object& alpha, double theta, double phi,
                const py::object& view, const py::object& normal, const py::object& precision, bool world_space,
                const py::object& eta, const std::string& transport) {
                 if (!normal.is_none() && !world_space)
@@ -275,7 +319,7 @@ void register_sampler(py::module_& m)
             py::arg("transport") = "radiance", docs::Sampler_eval)
         .def(
             "furnace",
-            [](ggxcl::Sampler& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
+            [](ggxcl::Backend& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
                double phi, const py::object& view, const py::object& normal, std::uint64_t seed, std::uint64_t first,
                const py::object& precision, const std::string& sequence, const py::object& eta,
                const std::string& transport) {
@@ -291,7 +335,7 @@ void register_sampler(py::module_& m)
             py::arg("eta") = py::none(), py::arg("transport") = "radiance", docs::Sampler_furnace)
         .def(
             "histogram",
-            [](ggxcl::Sampler& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
+            [](ggxcl::Backend& s, const py::object& method, const py::object& n, const py::object& alpha, double theta,
                double phi, const py::object& normal, std::uint64_t seed, std::uint64_t first, int bins_z, int bins_phi,
                const std::string& of, const py::object& against, const py::object& precision,
                const std::string& sequence, const py::object& eta) {

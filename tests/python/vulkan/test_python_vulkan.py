@@ -1,0 +1,156 @@
+"""test_python_vulkan.py - ggxcl.Sampler(api="vulkan") (a VulkanSampler behind
+the same Python class; lavapipe in CI, under the validation layer):
+- every method's samples, conductor and dielectric, in GLSL and HLSL, agree
+  with the OpenCL Sampler's on the same request within the bounds of
+  test_vulkan_sampler (angle of o 99% <= 1e-5 rad, max <= 2e-3; pdf_o
+  relative 99% <= 1e-4), and equal C++ VulkanSampler::generate's bits;
+- pdf, eval, furnace and histogram work and agree with OpenCL's (the
+  histogram passes its chi-square; control: against another method's pdf it
+  fails);
+- a GLSL user sampler runs on it and gives caps' bits; an OpenCL C file is
+  refused there, a GLSL file on OpenCL;
+- calls from several Python threads at once give the bits of one thread;
+- ggxcl.devices() lists the Vulkan device; enqueue (pyopencl's buffers), a
+  pyopencl context, a shader language on OpenCL and an unknown API raise
+  InvalidArgument naming the argument.
+
+Run by CTest (test_python_vulkan) as test_ggxcl.py is, with
+GGXCL_VULKAN_VALIDATION=1; skipped where ggxcl has no Vulkan device.
+"""
+import os
+import pathlib
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import ggxcl
+
+GENERATE_DUMP = os.environ.get("GGX_GENERATE_DUMP")
+SHADERS = pathlib.Path(__file__).resolve().parents[2] / "user_samplers" / "shaders"
+FIELDS = ("m", "o", "pdf_m", "pdf_o", "weight", "u")
+
+
+def open_vulkan(language):
+    try:
+        return ggxcl.Sampler(api="vulkan", shader_language=language)
+    except ggxcl.DeviceError as e:
+        pytest.skip(f"no Vulkan device: {e}")
+
+
+@pytest.fixture(scope="module", params=["glsl", "hlsl"])
+def vulkan(request):
+    return open_vulkan(request.param)
+
+
+@pytest.fixture(scope="module")
+def opencl():
+    return ggxcl.Sampler()
+
+
+def angles(a, b):
+    """Angles between rows of unit vectors, atan2 form (accurate near 0)."""
+    cross = np.linalg.norm(np.cross(a.astype(np.float64), b.astype(np.float64)), axis=1)
+    return np.arctan2(cross, np.sum(a.astype(np.float64) * b, axis=1))
+
+
+def check_agreement(v, c):
+    assert np.array_equal(v["u"], c["u"])  # the same uniforms, bit for bit
+    assert np.all(np.isfinite(v["o"])) and np.all(np.isfinite(v["pdf_o"]))
+    theta = angles(v["o"], c["o"])
+    assert np.quantile(theta, 0.99) <= 1e-5 and theta.max() <= 2e-3
+    kept = c["pdf_o"] > 0
+    relative = np.abs(v["pdf_o"][kept] / c["pdf_o"][kept] - 1)
+    assert np.quantile(relative, 0.99) <= 1e-4
+
+
+@pytest.mark.parametrize("method", ggxcl.methods)
+def test_samples_agree_with_opencl(vulkan, opencl, method):
+    alpha = 0.35 if method == "caps-iso" else (0.35, 0.7)
+    ask = dict(alpha=alpha, theta=55, phi=20, seed=9, first=100, fields=FIELDS)
+    check_agreement(vulkan.sample(method, 20000, **ask), opencl.sample(method, 20000, **ask))
+    if ggxcl.method_traits[method]["dielectric"]:
+        check_agreement(vulkan.sample(method, 20000, eta=1.5, **ask), opencl.sample(method, 20000, eta=1.5, **ask))
+
+
+@pytest.mark.parametrize("method", ["caps", "bounded"])
+def test_samples_equal_cpp_vulkan_sampler_bit_for_bit(vulkan, tmp_path, method):
+    if GENERATE_DUMP is None:
+        pytest.fail("GGX_GENERATE_DUMP is not set (CTest sets it to the generate_dump program)")
+    n, alpha = 3001, (0.15, 0.6)
+    raw = tmp_path / "generate.f32"
+    subprocess.run([GENERATE_DUMP, method, str(alpha[0]), str(alpha[1]), "70", "35", "11", "4096", str(n), str(raw),
+                    "vulkan", vulkan.shader_language], check=True)
+    planes = np.fromfile(raw, dtype=np.float32)
+    d = vulkan.sample(method, n, alpha=alpha, theta=70, phi=35, seed=11, first=4096, fields=FIELDS)
+    at = 0
+    for field, columns in (("m", 3), ("o", 3), ("pdf_m", 1), ("pdf_o", 1), ("weight", 1), ("u", 2)):
+        expected = planes[at:at + columns * n].reshape(columns, n).T
+        at += columns * n
+        assert np.array_equal(d[field].reshape(n, columns).view(np.uint32), expected.view(np.uint32)), field
+    assert at == planes.size
+    other = vulkan.sample(method, n, alpha=alpha, theta=70, phi=35, seed=12, first=4096, fields=("o",))  # control
+    assert not np.array_equal(other["o"], d["o"])
+
+
+def test_pdf_eval_furnace_and_histogram(vulkan, opencl):
+    d = vulkan.sample("heitz", 4000, alpha=(0.3, 0.6), theta=40, seed=2, fields=("o", "pdf_o", "weight"))
+    assert np.allclose(vulkan.pdf("heitz", d["o"], alpha=(0.3, 0.6), theta=40), d["pdf_o"], rtol=1e-4, atol=0)
+    assert np.allclose(vulkan.pdf("heitz", d["o"], alpha=(0.3, 0.6), theta=40),
+                       opencl.pdf("heitz", d["o"], alpha=(0.3, 0.6), theta=40), rtol=1e-4, atol=1e-6)
+    value = vulkan.eval(d["o"], alpha=(0.3, 0.6), theta=40)
+    assert np.allclose(value / d["pdf_o"], d["weight"], rtol=1e-4, atol=1e-6)
+    f, g = vulkan.furnace("caps", 2e5, eta=1.5, seed=4), opencl.furnace("caps", 2e5, eta=1.5, seed=4)
+    assert abs(f["mean"] - g["mean"]) <= 2e-5 * g["mean"]
+    assert abs(f["reflectance"] - g["reflectance"]) <= 2e-5 * g["reflectance"]
+    assert vulkan.histogram("bounded", 4e5, alpha=(0.3, 0.5), seed=5)["p_value"] > 1e-3
+    assert vulkan.histogram("ndf", 4e5, alpha=(0.3, 0.5), seed=5, against="caps")["p_value"] < 1e-6  # control
+
+
+def test_a_glsl_user_sampler_runs_on_vulkan_alone(vulkan, opencl):
+    copy = ggxcl.UserSampler(str(SHADERS / "caps_copy.glsl"))
+    mine = vulkan.sample(copy, 3000, alpha=(0.2, 0.5), seed=3, fields=("o", "pdf_o"))
+    caps = vulkan.sample("caps", 3000, alpha=(0.2, 0.5), seed=3, fields=("o", "pdf_o"))
+    assert np.array_equal(mine["o"], caps["o"]) and np.array_equal(mine["pdf_o"], caps["pdf_o"])
+    with pytest.raises(ggxcl.InvalidArgument, match="caps_copy.glsl"):
+        opencl.sample(copy, 10)
+    opencl_c = ggxcl.UserSampler(str(SHADERS.parent / "caps_copy.h"))
+    with pytest.raises(ggxcl.InvalidArgument, match="caps_copy.h"):
+        vulkan.sample(opencl_c, 10)
+
+
+def test_threads_share_one_vulkan_sampler(vulkan):
+    def draw(k):
+        return vulkan.sample("heitz2017", 20000, alpha=0.1 + 0.1 * k, seed=k, fields=("o", "pdf_o"))
+
+    alone = [draw(k) for k in range(4)]
+    results = [None] * 4
+
+    def run(k):
+        results[k] = draw(k)
+
+    threads = [threading.Thread(target=run, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for k in range(4):
+        assert np.array_equal(results[k]["o"], alone[k]["o"]) and np.array_equal(results[k]["pdf_o"], alone[k]["pdf_o"])
+    assert not np.array_equal(alone[0]["o"], alone[1]["o"])  # control: the tasks differ
+
+
+def test_devices_properties_and_errors(vulkan):
+    listed = [d for d in ggxcl.devices() if d["api"] == "vulkan"]
+    assert listed and vulkan.device_name in [d["label"] for d in listed]
+    assert vulkan.api == "vulkan" and vulkan.shader_language in ("glsl", "hlsl")
+    assert ggxcl.Sampler().api == "opencl" and ggxcl.Sampler().shader_language is None
+    with pytest.raises(ggxcl.InvalidArgument) as e:
+        vulkan.enqueue(None, "caps", 10, outputs={})
+    assert e.value.parameter == "api"
+    for bad, parameter in ((dict(api="metal"), "api"), (dict(shader_language="hlsl"), "shader_language"),
+                           (dict(api="vulkan", shader_language="wgsl"), "shader language"),
+                           (dict(api="vulkan", context=object()), "context")):
+        with pytest.raises(ggxcl.InvalidArgument) as e:
+            ggxcl.Sampler(**bad)
+        assert e.value.parameter == parameter, bad

@@ -5,6 +5,7 @@
 #include "bind_sampler.hpp"
 
 #include <cstring>
+#include <optional>
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -187,10 +188,19 @@ py::dict histogram(ggxcl::Backend& s, const RequestArgs& args, std::uint64_t see
     return result;
 }
 
+// The OpenCL devices and the Vulkan devices; a machine with the drivers of one API lists that one's,
+// and one with neither raises OpenCL's DeviceError (what to install).
 py::list devices()
 {
     py::list list;
-    for (const ggxcl::DeviceInfo& d : ggxcl::list_devices()) {
+    std::vector<ggxcl::DeviceInfo> opencl;
+    std::optional<ggxcl::DeviceError> no_opencl;
+    try {
+        opencl = ggxcl::list_devices();
+    } catch (const ggxcl::DeviceError& e) {
+        no_opencl = e;
+    }
+    for (const ggxcl::DeviceInfo& d : opencl) {
         py::dict info;
         info["api"] = "opencl";
         info["index"] = d.index;
@@ -203,13 +213,14 @@ py::list devices()
         info["opencl_version"] = d.opencl_version;
         list.append(info);
     }
-    if (!ggxcl::vulkan_built())
-        return list;
     std::vector<ggxcl::VulkanDeviceInfo> vulkan;
     try {
-        vulkan = ggxcl::list_vulkan_devices();
+        if (ggxcl::vulkan_built())
+            vulkan = ggxcl::list_vulkan_devices();
     } catch (const ggxcl::DeviceError&) {  // no Vulkan driver: the OpenCL devices alone
     }
+    if (no_opencl && vulkan.empty())
+        throw *no_opencl;
     for (const ggxcl::VulkanDeviceInfo& d : vulkan) {
         py::dict info;
         info["api"] = "vulkan";

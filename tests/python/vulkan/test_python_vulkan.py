@@ -12,7 +12,10 @@ the same Python class; lavapipe in CI, under the validation layer):
 - calls from several Python threads at once give the bits of one thread;
 - ggxcl.devices() lists the Vulkan device; enqueue (pyopencl's buffers), a
   pyopencl context, a shader language on OpenCL and an unknown API raise
-  InvalidArgument naming the argument.
+  InvalidArgument naming the argument;
+- on a machine with the OpenCL loader and no OpenCL platform (an empty
+  OCL_ICD_VENDORS), `import ggxcl`, devices() and every Vulkan call work,
+  and an OpenCL Sampler raises DeviceError saying what to install.
 
 Run by CTest (test_python_vulkan) as test_ggxcl.py is, with
 GGXCL_VULKAN_VALIDATION=1; skipped where ggxcl has no Vulkan device.
@@ -20,6 +23,7 @@ GGXCL_VULKAN_VALIDATION=1; skipped where ggxcl has no Vulkan device.
 import os
 import pathlib
 import subprocess
+import sys
 import threading
 
 import numpy as np
@@ -154,3 +158,28 @@ def test_devices_properties_and_errors(vulkan):
         with pytest.raises(ggxcl.InvalidArgument) as e:
             ggxcl.Sampler(**bad)
         assert e.value.parameter == parameter, bad
+
+
+NO_OPENCL = """
+import ggxcl, numpy as np
+assert [d["api"] for d in ggxcl.devices()] == ["vulkan"] * len(ggxcl.devices()) and ggxcl.devices()
+v = ggxcl.Sampler(api="vulkan")
+d = v.sample("caps", 1000, seed=1, fields=("o", "pdf_o"))
+assert np.allclose(v.pdf("caps", d["o"]), d["pdf_o"], rtol=1e-4)
+assert v.eval(d["o"]).shape == (1000,)
+assert 0.5 < v.furnace("caps", 1e4)["mean"] <= 1
+assert v.histogram("caps", 1e5)["p_value"] > 1e-3
+try:
+    ggxcl.Sampler()
+    raise SystemExit("an OpenCL Sampler without a platform")
+except ggxcl.DeviceError as e:
+    assert "install" in str(e), e
+print("ok")
+"""
+
+
+def test_without_an_opencl_platform(vulkan, tmp_path):
+    env = dict(os.environ, OCL_ICD_VENDORS=str(tmp_path))  # an empty folder: the loader finds no platform
+    run = subprocess.run([sys.executable, "-c", NO_OPENCL], env=env, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == "ok"

@@ -17,6 +17,7 @@ struct api_case {
     int importance;    /* a dielectric's transport: importance (1) or radiance (0) */
 };
 #define CASE_USER_FILE "caps_copy.h" /* in tests/user_samplers */
+#define CASE_USER_SHADER "shaders/caps_copy.glsl" /* the same sampler for Vulkan */
 
 /* Every built-in method, caps as a dielectric in importance transport, and a user sampler. */
 static const struct api_case api_cases[] = {

@@ -7,11 +7,17 @@
  *       provoke (USER_DIR holds tests/user_samplers).
  *   c_consumer threads DUMP         four threads share one sampler, each with
  *       its own queue, and get the same bits.
+ *   c_consumer vulkan DUMP VK_DUMP USER_DIR   a Vulkan sampler (ggxcl_sampler_create_api):
+ *       ggxcl_generate, _pdf and _eval of every case (the user sampler in GLSL) give the C++
+ *       VulkanSampler's bits (VK_DUMP, from cpp_dump ... vulkan) and agree with OpenCL's (DUMP)
+ *       within the shader bounds; the furnace works; the calls on OpenCL objects fail naming
+ *       the call; a bad API or language is refused.  Runs without an OpenCL platform.
  *   c_consumer no-device            (no OpenCL platform) GGXCL_DEVICE_ERROR.
  *   c_consumer no-cache             (no writable cache) GGXCL_ERROR.
  *   c_consumer out-of-memory        GGXCL_OUT_OF_HOST_MEMORY.
  * Exits 0 when every check passes, else 1 after naming the failures. */
 #define _POSIX_C_SOURCE 200809L
+#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -448,6 +454,134 @@ static void check_bits(const char* user_dir)
     clReleaseCommandQueue(queue), clReleaseContext(d.context), clReleaseDevice(d.device);
 }
 
+/* ---- A Vulkan sampler (c_consumer vulkan) ---- */
+
+static int by_value(const void* a, const void* b)
+{
+    const double x = *(const double*)a, y = *(const double*)b;
+    return x < y ? -1 : x > y;
+}
+
+/* The 99th percentile of `n` values (sorted in place). */
+static double percentile_99(double* values, size_t n)
+{
+    qsort(values, n, sizeof *values, by_value);
+    return values[(size_t)(0.99 * (double)(n - 1))];
+}
+
+/* One case from the host calls, in the dump's layout. */
+static void host_case(ggxcl_sampler* sampler, const struct api_case* c, float* floats)
+{
+    ggxcl_params params = case_params(c);
+    ggxcl_range range = {CASE_SEED, CASE_FIRST, CASE_COUNT};
+    ggxcl_host_outputs out;
+    memset(floats, 0, CASE_FLOATS * sizeof(float));
+    memset(&out, 0, sizeof out);
+    out.m = floats + PLANE_M * CASE_COUNT, out.o = floats + PLANE_O * CASE_COUNT;
+    out.pdf_m = floats + PLANE_PDF_M * CASE_COUNT, out.pdf_o = floats + PLANE_PDF_O * CASE_COUNT;
+    out.weight = floats + PLANE_WEIGHT * CASE_COUNT, out.u = floats + PLANE_U * CASE_COUNT;
+    MUST(ggxcl_generate(sampler, &params, &range, (1u << GGXCL_FIELD_COUNT) - 1u, &out));
+    MUST(ggxcl_pdf(sampler, &params, CASE_COUNT, out.o, floats + PLANE_PDF * CASE_COUNT));
+    MUST(ggxcl_eval(sampler, &params, CASE_COUNT, out.o, floats + PLANE_EVAL * CASE_COUNT));
+}
+
+/* Vulkan's o and pdf_o against OpenCL's: angle 99% <= 1e-5 rad and max <= 2e-3, pdf_o relative 99% <= 1e-4. */
+static void expect_close_to_opencl(const float* vk, const float* cl, const char* name)
+{
+    static double angle[CASE_COUNT], relative[CASE_COUNT];
+    size_t j, kept = 0;
+    double worst = 0.0;
+    for (j = 0; j < CASE_COUNT; ++j) {
+        const float* a = vk + PLANE_O * CASE_COUNT + j;
+        const float* b = cl + PLANE_O * CASE_COUNT + j;
+        double x = (double)a[CASE_COUNT] * b[2 * CASE_COUNT] - (double)a[2 * CASE_COUNT] * b[CASE_COUNT];
+        double y = (double)a[2 * CASE_COUNT] * b[0] - (double)a[0] * b[2 * CASE_COUNT];
+        double z = (double)a[0] * b[CASE_COUNT] - (double)a[CASE_COUNT] * b[0];
+        double dot = (double)a[0] * b[0] + (double)a[CASE_COUNT] * b[CASE_COUNT] + (double)a[2 * CASE_COUNT] * b[2 * CASE_COUNT];
+        angle[j] = atan2(sqrt(x * x + y * y + z * z), dot);
+        worst = angle[j] > worst ? angle[j] : worst;
+        if (cl[PLANE_PDF_O * CASE_COUNT + j] > 0.0f)
+            relative[kept++] = fabs(vk[PLANE_PDF_O * CASE_COUNT + j] / cl[PLANE_PDF_O * CASE_COUNT + j] - 1.0);
+    }
+    CHECK(percentile_99(angle, CASE_COUNT) <= 1e-5 && worst <= 2e-3, "%s: o's angle to OpenCL's: 99%% %g, max %g",
+          name, percentile_99(angle, CASE_COUNT), worst);
+    CHECK(kept > 0 && percentile_99(relative, kept) <= 1e-4, "%s: pdf_o against OpenCL's: 99%% %g", name,
+          kept ? percentile_99(relative, kept) : -1.0);
+    CHECK(memcmp(vk + PLANE_U * CASE_COUNT, cl + PLANE_U * CASE_COUNT, 3 * CASE_COUNT * sizeof(float)) == 0,
+          "%s: the uniforms differ from OpenCL's", name);
+}
+
+/* The calls on OpenCL objects fail on a Vulkan sampler, naming the call; a bad API or language too. */
+static void check_vulkan_refusals(ggxcl_sampler* sampler, const char* user_dir)
+{
+    ggxcl_params params;
+    ggxcl_range range = {1, 0, 100};
+    ggxcl_device_outputs out;
+    ggxcl_sampler* other = NULL;
+    ggxcl_user_sampler* opencl_c = NULL;
+    char path[4096], options[16];
+    ggxcl_default_params(&params);
+    memset(&out, 0, sizeof out);
+    CHECK(ggxcl_sampler_api(sampler) == GGXCL_API_VULKAN, "the sampler's API");
+    CHECK(ggxcl_sampler_context(sampler) == NULL && strstr(ggxcl_last_error(), "ggxcl_sampler_context"),
+          "a Vulkan sampler's context: %s", ggxcl_last_error());
+    CHECK(ggxcl_sampler_queue(sampler) == NULL && strstr(ggxcl_last_error(), "ggxcl_sampler_queue"),
+          "a Vulkan sampler's queue: %s", ggxcl_last_error());
+    CHECK(ggxcl_furnace_items(sampler, 100) == 0 && strstr(ggxcl_last_error(), "ggxcl_furnace_items"),
+          "a Vulkan sampler's furnace items: %s", ggxcl_last_error());
+    expect_status(ggxcl_enqueue(sampler, NULL, &params, &range, &out, 0, NULL, 0, NULL, NULL), GGXCL_INVALID_ARGUMENT,
+                  "ggxcl_enqueue", "enqueue on Vulkan");
+    CHECK(strcmp(ggxcl_last_error_parameter(), "sampler") == 0, "enqueue on Vulkan names %s",
+          ggxcl_last_error_parameter());
+    expect_status(ggxcl_build_options(sampler, GGXCL_PRECISION_PRECISE, options, sizeof options, NULL),
+                  GGXCL_INVALID_ARGUMENT, "ggxcl_build_options", "build options on Vulkan");
+    snprintf(path, sizeof path, "%s/%s", user_dir, CASE_USER_FILE);
+    MUST(ggxcl_user_sampler_load(path, NULL, &opencl_c));
+    params.method = GGXCL_METHOD_USER, params.user_sampler = opencl_c;
+    expect_status(ggxcl_furnace(sampler, &params, &range, &(ggxcl_furnace_sums){0}), GGXCL_INVALID_ARGUMENT,
+                  CASE_USER_FILE, "an OpenCL C sampler on Vulkan");
+    ggxcl_user_sampler_release(opencl_c);
+    expect_status(ggxcl_sampler_create_api((ggxcl_api)7, "", GGXCL_SHADER_GLSL, &other), GGXCL_INVALID_ARGUMENT,
+                  "GGXCL_API_VULKAN", "an unknown API");
+    expect_status(ggxcl_sampler_create_api(GGXCL_API_OPENCL, "", GGXCL_SHADER_HLSL, &other), GGXCL_INVALID_ARGUMENT,
+                  "GGXCL_SHADER_HLSL with GGXCL_API_VULKAN", "HLSL on OpenCL");
+    CHECK(strcmp(ggxcl_last_error_parameter(), "language") == 0, "HLSL on OpenCL names %s", ggxcl_last_error_parameter());
+}
+
+static void check_vulkan(const char* opencl_dump, const char* vulkan_dump, const char* user_dir)
+{
+    static float floats[CASE_FLOATS];
+    const float* opencl;
+    ggxcl_sampler* sampler = NULL;
+    ggxcl_params params;
+    ggxcl_range range = {3, 0, 1u << 16};
+    ggxcl_furnace_sums sums;
+    char path[4096];
+    size_t index;
+    read_dump(opencl_dump);
+    opencl = dump;
+    read_dump(vulkan_dump);
+    snprintf(path, sizeof path, "%s/%s", user_dir, CASE_USER_SHADER);
+    MUST(ggxcl_user_sampler_load(path, NULL, &user_sampler));
+    MUST(ggxcl_sampler_create_api(GGXCL_API_VULKAN, "", GGXCL_SHADER_GLSL, &sampler));
+    for (index = 0; index < CASE_TOTAL; ++index) {
+        const char* name = case_name(&api_cases[index]);
+        host_case(sampler, &api_cases[index], floats);
+        CHECK(memcmp(floats, dump + index * CASE_FLOATS, sizeof floats) == 0, "%s: not the C++ VulkanSampler's bits",
+              name);
+        expect_close_to_opencl(floats, opencl + index * CASE_FLOATS, name);
+    }
+    ggxcl_default_params(&params);
+    MUST(ggxcl_furnace(sampler, &params, &range, &sums));
+    CHECK(sums.count == range.count && sums.mean > 0.5 && sums.mean <= 1.0 + 1e-6, "furnace on Vulkan: mean %g",
+          sums.mean);
+    check_vulkan_refusals(sampler, user_dir);
+    printf("c_consumer: %u cases on %s\n", (unsigned)CASE_TOTAL, ggxcl_sampler_device_name(sampler));
+    ggxcl_sampler_release(sampler);
+    ggxcl_user_sampler_release(user_sampler);
+    free((void*)opencl);
+}
+
 int main(int argc, char** argv)
 {
     const char* mode = argc > 1 ? argv[1] : "";
@@ -459,6 +593,8 @@ int main(int argc, char** argv)
     } else if (strcmp(mode, "threads") == 0 && argc == 3) {
         read_dump(argv[2]);
         check_threads();
+    } else if (strcmp(mode, "vulkan") == 0 && argc == 5) {
+        check_vulkan(argv[2], argv[3], argv[4]);
     } else if (strcmp(mode, "no-device") == 0) {
         ggxcl_sampler* sampler = NULL;
         expect_status(ggxcl_sampler_create("", &sampler), GGXCL_DEVICE_ERROR, "OpenCL", "no OpenCL platform");
@@ -483,7 +619,8 @@ int main(int argc, char** argv)
         ggxcl_sampler_release(sampler);
 #endif
     } else {
-        fprintf(stderr, "usage: c_consumer bits DUMP USER_DIR | threads DUMP | no-device | no-cache | out-of-memory\n");
+        fprintf(stderr, "usage: c_consumer bits DUMP USER_DIR | threads DUMP | vulkan DUMP VK_DUMP USER_DIR | no-device | "
+                        "no-cache | out-of-memory\n");
         return 2;
     }
     if (failures)

@@ -2,7 +2,10 @@
 // c_api_cases.h: each case's six fields, then enqueue_pdf and enqueue_eval
 // of the sampled o, written as raw floats (CASE_FLOATS per case, in order)
 // to the file argv[1] for c_consumer.c; argv[2] holds tests/user_samplers.
+// With argv[3] "vulkan", what a VulkanSampler's generate, pdf and eval give
+// (the user sampler: CASE_USER_SHADER), in the same layout.
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,7 @@ std::vector<float> read(cl::CommandQueue& queue, const cl::Buffer& buffer, std::
     return host;
 }
 
-ggxcl::SampleParams case_params(const api_case& c, const std::string& user_dir)
+ggxcl::SampleParams case_params(const api_case& c, const std::string& user_dir, bool vulkan)
 {
     ggxcl::SampleParams params;
     params.method = static_cast<ggxcl::Method>(c.method);
@@ -29,7 +32,7 @@ ggxcl::SampleParams case_params(const api_case& c, const std::string& user_dir)
     params.eta = c.eta;
     params.transport = c.importance ? ggxcl::Transport::importance : ggxcl::Transport::radiance;
     if (c.method == GGX_METHOD_USER)
-        params.user_sampler = ggxcl::UserSampler::load(user_dir + "/" + CASE_USER_FILE);
+        params.user_sampler = ggxcl::UserSampler::load(user_dir + "/" + (vulkan ? CASE_USER_SHADER : CASE_USER_FILE));
     return params;
 }
 
@@ -61,23 +64,45 @@ std::vector<float> dump_case(ggxcl::Sampler& sampler, const ggxcl::SampleParams&
     return floats;
 }
 
+// The same floats from a back end's host calls: generate, then pdf and eval of the sampled o.
+std::vector<float> dump_host_case(ggxcl::Backend& backend, const ggxcl::SampleParams& params)
+{
+    const ggxcl::SampleSet s = backend.generate(params, {CASE_SEED, CASE_FIRST, CASE_COUNT}, ggxcl::FieldSet::all());
+    std::vector<ggxcl::Vec3> o(CASE_COUNT);
+    for (std::size_t j = 0; j < CASE_COUNT; ++j)
+        o[j] = s.o_at(j);
+    std::vector<float> floats;
+    for (ggxcl::Field field : ggxcl::all_fields) {
+        const std::vector<float>& planes = s.column_source(field);
+        floats.insert(floats.end(), planes.begin(), planes.end());
+        if (field == ggxcl::Field::u)
+            floats.resize(floats.size() + (3 * CASE_COUNT - planes.size()), 0.0f);
+    }
+    for (const std::vector<float>& values : {backend.pdf(params, o), backend.eval(params, o)})
+        floats.insert(floats.end(), values.begin(), values.end());
+    return floats;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: cpp_dump OUT.f32 USER_SAMPLER_DIR\n");
+    const bool vulkan = argc == 4 && std::string(argv[3]) == "vulkan";
+    if (argc != 3 && !vulkan) {
+        std::fprintf(stderr, "usage: cpp_dump OUT.f32 USER_SAMPLER_DIR [vulkan]\n");
         return 2;
     }
-    ggxcl::Sampler sampler;
+    std::unique_ptr<ggxcl::Backend> backend = ggxcl::open_backend(vulkan ? ggxcl::Api::vulkan : ggxcl::Api::opencl);
     std::FILE* file = std::fopen(argv[1], "wb");
     if (!file)
         return 1;
     for (const api_case& c : api_cases) {
-        const std::vector<float> floats = dump_case(sampler, case_params(c, argv[2]));
+        const ggxcl::SampleParams params = case_params(c, argv[2], vulkan);
+        const std::vector<float> floats = vulkan ? dump_host_case(*backend, params)
+                                                 : dump_case(static_cast<ggxcl::Sampler&>(*backend), params);
         if (floats.size() != CASE_FLOATS || std::fwrite(floats.data(), sizeof(float), floats.size(), file) != floats.size())
             return 1;
     }
-    std::printf("cpp_dump: %zu cases on %s\n", CASE_TOTAL, sampler.device_name().c_str());
+    std::printf("cpp_dump: %zu cases on %s\n", CASE_TOTAL, backend->device_name().c_str());
     return std::fclose(file) == 0 ? 0 : 1;
 }

@@ -246,6 +246,7 @@ TEST_CASE("every bench kernel (method x write, furnace x precision) has only ope
     if (!ggxtest::skip_unless(!clang.path.empty(), "needs clang 15 to compile kernels to IR: " + clang.unavailable))
         return;
     ggxcl::Sampler sampler;
+    const std::unique_ptr<ggxcl::benchmark::DeviceJobs> jobs = ggxcl::benchmark::device_jobs(sampler, 1024, {});
     std::vector<IrRequest> requests;
     std::vector<ggxcl::benchmark::ProgramText> programs;
     for (ggxcl::Precision precision : ggxcl::all_precisions)
@@ -255,9 +256,10 @@ TEST_CASE("every bench kernel (method x write, furnace x precision) has only ope
             p.precision = precision;
             p.alpha_x = p.alpha_y = 0.3f;
             p.view = ggxcl::view_from_angles(60.0, 0.0);
-            programs.push_back(ggxcl::benchmark::enqueue_program(sampler, p, {ggxcl::Field::m, ggxcl::Field::pdf_m}));
-            programs.push_back(ggxcl::benchmark::furnace_program(sampler, p));
+            programs.push_back(*jobs->program(ggxcl::benchmark::Job::write, p));
+            programs.push_back(*jobs->program(ggxcl::benchmark::Job::furnace, p));
         }
+    CHECK_FALSE(jobs->program(ggxcl::benchmark::Job::world, ggxcl::SampleParams{}));  // only what clang counts
     for (const auto& program : programs)
         requests.push_back({ggxcl::kernel_source(program.file), program.options});
     const std::vector<std::string> ll = compile_to_ir(clang, requests, 2);

@@ -15,10 +15,6 @@
 #include "ggxcl/fields.hpp"
 #include "ggxcl/params.hpp"
 
-namespace ggxcl {
-class Sampler;
-}
-
 namespace ggxcl::benchmark {
 
 // The program a launch builds: the embedded source file (kernel_source(file)), the kernel function
@@ -27,13 +23,6 @@ namespace ggxcl::benchmark {
 struct ProgramText {
     std::string file, kernel, options;
 };
-
-// Sampler::enqueue of `params` (its guards included) writing `fields` to buffers (no per-sample
-// inputs).  Throws InvalidArgument as enqueue does for bad parameters or no field.
-ProgramText enqueue_program(const Sampler& sampler, const SampleParams& params, FieldSet fields);
-
-// Sampler::enqueue_furnace of `params` (no per-sample inputs).
-ProgramText furnace_program(const Sampler& sampler, const SampleParams& params);
 
 // The bench's jobs.  Each run draws its samples into memory the device writes and copies nothing
 // to the host:
@@ -68,7 +57,9 @@ public:
     // One run of `job` on `params` with `seed`, to the end of its work.  InvalidArgument for a job
     // this back end does not run, or as the Backend's calls.
     virtual RunTime run(Job job, const SampleParams& params, std::uint64_t seed) = 0;
-    // The OpenCL C program a run of write or furnace builds, for clang (none on other APIs).
+    // The OpenCL C program a run of write, write_o or furnace builds (its guards as given; the
+    // furnace's unguarded, as it runs), for clang; none for other jobs and on other APIs.  Throws
+    // InvalidArgument for bad parameters.
     virtual std::optional<ProgramText> program(Job job, const SampleParams& params) const = 0;
 };
 

@@ -4,7 +4,8 @@
  * caller's OpenCL objects (cl_context, cl_command_queue, cl_mem, cl_event)
  * in and out.  Every enum is made from, or checked against, the device
  * contract <ggxcl/cl/ggx_contract.h> that the kernels and the C++ API use.
- * It runs on OpenCL; the Vulkan back end (docs/VULKAN.md) is C++ only for now.
+ * A sampler runs on OpenCL or, made by ggxcl_sampler_create_api, on Vulkan
+ * (docs/VULKAN.md), where every call that works on OpenCL objects is refused.
  *
  *   ggxcl_sampler* sampler;
  *   if (ggxcl_sampler_create("", &sampler) != GGXCL_SUCCESS)
@@ -43,7 +44,7 @@ extern "C" {
 typedef enum ggxcl_status {
     GGXCL_SUCCESS = 0,
     GGXCL_INVALID_ARGUMENT = -1,   /* a value outside what is allowed: ggxcl_last_error_parameter() names it */
-    GGXCL_DEVICE_ERROR = -2,       /* no OpenCL platform or device at all */
+    GGXCL_DEVICE_ERROR = -2,       /* no platform or device of the API at all, or a Vulkan call failed */
     GGXCL_NO_MATCHING_DEVICE = -3, /* devices exist, none matches the selector (the message lists them) */
     GGXCL_CL_ERROR = -4,           /* an OpenCL call failed: ggxcl_last_cl_error() is its code */
     GGXCL_DEVICE_LOST = -5,        /* the device stopped working: make a new sampler once it is back */
@@ -174,6 +175,28 @@ ggxcl_status ggxcl_parse_method(const char* name, ggxcl_method* method);
  * the first device), or on the caller's context and device (retained). */
 ggxcl_status ggxcl_sampler_create(const char* selector, ggxcl_sampler** sampler);
 ggxcl_status ggxcl_sampler_create_with_context(cl_context context, cl_device_id device, ggxcl_sampler** sampler);
+
+/* A sampler on `api`'s device that `selector` names ("" or NULL: GGXCL_DEVICE
+ * or GGXCL_VULKAN_DEVICE, else the first); `language`: the Vulkan shaders'
+ * (GGXCL_SHADER_GLSL with OpenCL).  ggxcl_sampler_create(s, p) is
+ * ggxcl_sampler_create_api(GGXCL_API_OPENCL, s, GGXCL_SHADER_GLSL, p).  On a
+ * Vulkan sampler ggxcl_generate, _pdf, _eval, _furnace, _sampler_device_name
+ * and user samplers of GLSL or HLSL files work; the calls on OpenCL objects
+ * (_sampler_context, _device, _queue, _furnace_items, the _enqueue calls,
+ * _build_options) fail with GGXCL_INVALID_ARGUMENT, parameter "sampler", the
+ * message naming the call (those returning a handle or a size return NULL
+ * or 0 and set the last error).  A Vulkan failure is GGXCL_DEVICE_ERROR (no
+ * driver: the message says what to install; a failed or lost device: the
+ * message names it; ggxcl_last_cl_error() is CL_SUCCESS),
+ * GGXCL_BUILD_ERROR (a shader that does not compile: the code is
+ * CL_BUILD_PROGRAM_FAILURE, ggxcl_last_build_log() shaderc's log), or
+ * GGXCL_INVALID_ARGUMENT. */
+typedef enum ggxcl_api { GGXCL_API_OPENCL = 0, GGXCL_API_VULKAN = 1 } ggxcl_api;
+typedef enum ggxcl_shader_language { GGXCL_SHADER_GLSL = 0, GGXCL_SHADER_HLSL = 1 } ggxcl_shader_language;
+ggxcl_status ggxcl_sampler_create_api(ggxcl_api api, const char* selector, ggxcl_shader_language language,
+                                      ggxcl_sampler** sampler);
+ggxcl_api ggxcl_sampler_api(const ggxcl_sampler* sampler);
+
 void ggxcl_sampler_release(ggxcl_sampler* sampler); /* NULL is ignored */
 /* The sampler's context, device and own queue (not retained for the caller), its device's name. */
 cl_context ggxcl_sampler_context(const ggxcl_sampler* sampler);

@@ -6,17 +6,21 @@
 #include <string>
 
 #include "c_api/c_events.hpp"
+#include "ggxcl/backend.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/ggxcl.h"
 #include "ggxcl/sampler.hpp"
 #include "ggxcl/user_sampler.hpp"
 
-// A sampler and what the C calls read of its device, once.
+// A back end, its OpenCL Sampler where it is one (null on Vulkan), and its device's name, read once.
 struct ggxcl_sampler {
-    explicit ggxcl_sampler(const std::string& selector) : sampler(selector) {}
-    ggxcl_sampler(const cl::Context& context, const cl::Device& device) : sampler(context, device) {}
-    ggxcl::Sampler sampler;
-    const std::string device_name = sampler.device_name();
+    explicit ggxcl_sampler(std::unique_ptr<ggxcl::Backend> owned)
+        : backend(std::move(owned)), opencl(dynamic_cast<ggxcl::Sampler*>(backend.get()))
+    {
+    }
+    const std::unique_ptr<ggxcl::Backend> backend;
+    ggxcl::Sampler* const opencl;
+    const std::string device_name = backend->device_name();
 };
 
 struct ggxcl_user_sampler {
@@ -41,6 +45,17 @@ T* non_null(T* pointer, const char* parameter)
     if (!pointer)
         throw InvalidArgument(parameter, "NULL", "a valid pointer");
     return pointer;
+}
+
+// The OpenCL Sampler of `sampler`, for `call`, which needs OpenCL's objects; InvalidArgument
+// ("sampler") naming the call on another API.
+inline ggxcl::Sampler& opencl_of(const ggxcl_sampler* sampler, const char* call)
+{
+    const ggxcl_sampler& s = require(sampler, "sampler");
+    if (!s.opencl)
+        throw InvalidArgument("sampler", std::string("a ") + api_name(s.backend->api()) + " sampler",
+                              std::string("an OpenCL sampler for ") + call + ", which works on OpenCL objects");
+    return *s.opencl;
 }
 
 } // namespace ggxcl::capi

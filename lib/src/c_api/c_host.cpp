@@ -34,7 +34,7 @@ ggxcl_status of_directions(ggxcl_sampler* sampler, const ggxcl_params* params, s
                            float* out, const char* out_name, bool eval)
 {
     return guarded([&] {
-        ggxcl::Sampler& s = require(sampler, "sampler").sampler;
+        ggxcl::Backend& s = *require(sampler, "sampler").backend;
         const ggxcl::SampleParams p = to_params(params);
         const std::vector<ggxcl::Vec3> dirs = planar_directions(count, directions);
         if (count > 0)
@@ -83,7 +83,7 @@ ggxcl_status ggxcl_generate(ggxcl_sampler* sampler, const ggxcl_params* params, 
                             unsigned fields, const ggxcl_host_outputs* outputs)
 {
     return guarded([&] {
-        ggxcl::Sampler& s = require(sampler, "sampler").sampler;
+        ggxcl::Backend& s = *require(sampler, "sampler").backend;
         const ggxcl::SampleParams p = to_params(params);
         const ggxcl::SampleRange r = to_range(range);
         const ggxcl::FieldSet wanted = to_fields(fields);
@@ -121,7 +121,7 @@ ggxcl_status ggxcl_furnace(ggxcl_sampler* sampler, const ggxcl_params* params, c
                            ggxcl_furnace_sums* sums)
 {
     return guarded([&] {
-        ggxcl::Sampler& s = require(sampler, "sampler").sampler;
+        ggxcl::Backend& s = *require(sampler, "sampler").backend;
         const ggxcl::SampleParams p = to_params(params);
         const ggxcl::SampleRange r = to_range(range);
         ggxcl_furnace_sums& out = require(sums, "sums");
@@ -144,7 +144,7 @@ ggxcl_status ggxcl_build_options(const ggxcl_sampler* sampler, ggxcl_precision p
                                  size_t* needed)
 {
     return guarded([&] {
-        const ggxcl::Sampler& s = require(sampler, "sampler").sampler;
+        const ggxcl::Sampler& s = opencl_of(sampler, "ggxcl_build_options");
         const std::string text = ggxcl::device_include_option() + ggxcl::device_options(s.device()) +
                                  ggxcl::precision_options(s.device(), to_precision(precision, "precision"));
         if (needed)

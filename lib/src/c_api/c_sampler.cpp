@@ -54,7 +54,7 @@ ggxcl_status enqueue_directions(ggxcl_sampler* sampler, cl_command_queue queue, 
                                 cl_event* event, bool eval)
 {
     return guarded([&] {
-        ggxcl::Sampler& s = require(sampler, "sampler").sampler;
+        ggxcl::Sampler& s = opencl_of(sampler, eval ? "ggxcl_enqueue_eval" : "ggxcl_enqueue_pdf");
         const SampleParams p = to_params(params);
         const DeviceInputs in = inputs_of(inputs);
         enqueue_on(queue, wait_count, wait, event, [&](cl::CommandQueue& q, const std::vector<cl::Event>* w) {
@@ -64,16 +64,40 @@ ggxcl_status enqueue_directions(ggxcl_sampler* sampler, cl_command_queue queue, 
     });
 }
 
+// What `get` reads of the OpenCL Sampler of `sampler` for `call`; on another API (or NULL) a zero
+// value, with the last error naming the call.
+template <class Get>
+auto opencl_part(const ggxcl_sampler* sampler, const char* call, Get&& get) -> decltype(get(*sampler->opencl))
+{
+    decltype(get(*sampler->opencl)) value{};
+    guarded([&] { value = get(opencl_of(sampler, call)); });
+    return value;
+}
+
 } // namespace
 
 extern "C" {
 
 ggxcl_status ggxcl_sampler_create(const char* selector, ggxcl_sampler** sampler)
 {
+    return ggxcl_sampler_create_api(GGXCL_API_OPENCL, selector, GGXCL_SHADER_GLSL, sampler);
+}
+
+ggxcl_status ggxcl_sampler_create_api(ggxcl_api api, const char* selector, ggxcl_shader_language language,
+                                      ggxcl_sampler** sampler)
+{
     return guarded([&] {
         ggxcl_sampler*& out = require(sampler, "sampler");
         out = nullptr;
-        out = new ggxcl_sampler(selector ? selector : "");
+        if (api != GGXCL_API_OPENCL && api != GGXCL_API_VULKAN)
+            throw ggxcl::InvalidArgument("api", std::to_string(int(api)), "GGXCL_API_OPENCL or GGXCL_API_VULKAN");
+        if (language != GGXCL_SHADER_GLSL && (api != GGXCL_API_VULKAN || language != GGXCL_SHADER_HLSL))
+            throw ggxcl::InvalidArgument("language", std::to_string(int(language)),
+                                         "GGXCL_SHADER_GLSL, or GGXCL_SHADER_HLSL with GGXCL_API_VULKAN");
+        const ggxcl::ShaderLanguage shaders =
+            language == GGXCL_SHADER_HLSL ? ggxcl::ShaderLanguage::hlsl : ggxcl::ShaderLanguage::glsl;
+        out = new ggxcl_sampler(ggxcl::open_backend(api == GGXCL_API_VULKAN ? ggxcl::Api::vulkan : ggxcl::Api::opencl,
+                                                    selector ? selector : "", shaders));
     });
 }
 
@@ -82,18 +106,34 @@ ggxcl_status ggxcl_sampler_create_with_context(cl_context context, cl_device_id 
     return guarded([&] {
         ggxcl_sampler*& out = require(sampler, "sampler");
         out = nullptr;
-        out = new ggxcl_sampler(cl::Context(non_null(context, "context"), true), cl::Device(non_null(device, "device"), true));
+        out = new ggxcl_sampler(std::make_unique<ggxcl::Sampler>(cl::Context(non_null(context, "context"), true),
+                                                                 cl::Device(non_null(device, "device"), true)));
     });
 }
 
 void ggxcl_sampler_release(ggxcl_sampler* sampler) { delete sampler; }
 
-cl_context ggxcl_sampler_context(const ggxcl_sampler* sampler) { return sampler ? sampler->sampler.context()() : nullptr; }
-cl_device_id ggxcl_sampler_device(const ggxcl_sampler* sampler) { return sampler ? sampler->sampler.device()() : nullptr; }
+ggxcl_api ggxcl_sampler_api(const ggxcl_sampler* sampler)
+{
+    return sampler && !sampler->opencl ? GGXCL_API_VULKAN : GGXCL_API_OPENCL;
+}
+
+cl_context ggxcl_sampler_context(const ggxcl_sampler* sampler)
+{
+    return opencl_part(sampler, "ggxcl_sampler_context", [](const ggxcl::Sampler& s) { return s.context()(); });
+}
+
+cl_device_id ggxcl_sampler_device(const ggxcl_sampler* sampler)
+{
+    return opencl_part(sampler, "ggxcl_sampler_device", [](const ggxcl::Sampler& s) { return s.device()(); });
+}
+
 cl_command_queue ggxcl_sampler_queue(const ggxcl_sampler* sampler)
 {
-    return sampler ? const_cast<ggxcl_sampler*>(sampler)->sampler.queue()() : nullptr;
+    return opencl_part(sampler, "ggxcl_sampler_queue",
+                       [](const ggxcl::Sampler& s) { return const_cast<ggxcl::Sampler&>(s).queue()(); });
 }
+
 const char* ggxcl_sampler_device_name(const ggxcl_sampler* sampler)
 {
     return sampler ? sampler->device_name.c_str() : "";
@@ -120,7 +160,7 @@ ggxcl_status ggxcl_enqueue(ggxcl_sampler* sampler, cl_command_queue queue, const
                            cl_event* event)
 {
     return guarded([&] {
-        ggxcl::Sampler& s = require(sampler, "sampler").sampler;
+        ggxcl::Sampler& s = opencl_of(sampler, "ggxcl_enqueue");
         const SampleParams p = to_params(params);
         const ggxcl::SampleRange r = to_range(range);
         const ggxcl_device_outputs& out = require(outputs, "outputs");
@@ -160,7 +200,7 @@ ggxcl_status ggxcl_enqueue_furnace(ggxcl_sampler* sampler, cl_command_queue queu
                                    cl_uint wait_count, const cl_event* wait, cl_event* event)
 {
     return guarded([&] {
-        ggxcl::Sampler& s = require(sampler, "sampler").sampler;
+        ggxcl::Sampler& s = opencl_of(sampler, "ggxcl_enqueue_furnace");
         const SampleParams p = to_params(params);
         const ggxcl::SampleRange r = to_range(range);
         const DeviceInputs in = inputs_of(inputs);
@@ -172,7 +212,7 @@ ggxcl_status ggxcl_enqueue_furnace(ggxcl_sampler* sampler, cl_command_queue queu
 
 size_t ggxcl_furnace_items(const ggxcl_sampler* sampler, uint64_t count)
 {
-    return sampler ? sampler->sampler.furnace_items(count) : 0;
+    return opencl_part(sampler, "ggxcl_furnace_items", [&](const ggxcl::Sampler& s) { return s.furnace_items(count); });
 }
 
 } // extern "C"

@@ -1,6 +1,7 @@
-// planar_inputs.hpp - the caller's per-sample inputs of a chunk as the
-// planes the bulk kernels and shaders read (component c of entry j at
-// c * capacity + j), for any back end.
+// planar_inputs.hpp - planes and host arrays, for any back end: the
+// caller's per-sample inputs of a chunk as the planes the bulk kernels and
+// shaders read (component c of entry j at c * capacity + j), and a chunk's
+// output planes (a view, where the device wrote them) copied into host memory.
 #pragma once
 
 #include <array>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "ggxcl/params.hpp"
+#include "ggxcl/results.hpp"
 
 namespace ggxcl::detail {
 
@@ -24,5 +26,12 @@ std::vector<float> planar_pairs(const std::vector<std::array<float, 2>>& values,
 // plane of u3 (0.5 in the unused rest).
 std::vector<float> planar_uniforms(const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
                                    std::uint64_t capacity);
+
+// The chunk as a SampleSet of its own: its planes packed at stride count.
+SampleSet copy_of(const SampleView& chunk, FieldSet fields, bool dielectric);
+
+// The chunk into `all` (planes all.count apart) at `offset`; a field's whole array is allocated
+// when its first chunk arrives.
+void copy_into(SampleSet& all, const SampleView& chunk, std::uint64_t offset, FieldSet fields, bool dielectric);
 
 } // namespace ggxcl::detail

@@ -4,6 +4,10 @@
 #include <chrono>
 
 #include "backend_factories.hpp"
+#include "device_contract.hpp"
+#include "device_quirks.hpp"
+#include "kernel_launch.hpp"
+#include "validated_params.hpp"
 #include "planar_inputs.hpp"
 #include "program_variant.hpp"
 #include "ggxcl/error.hpp"
@@ -148,17 +152,21 @@ benchmark::RunTime OpenclJobs::run(Job job, const SampleParams& params, std::uin
     return {profiled_ns(done), wall_ns};
 }
 
+// The variant and options as the Sampler's launches make them; the quirk options are build_program's.
 std::optional<benchmark::ProgramText> OpenclJobs::program(Job job, const SampleParams& params) const
 {
-    if (job == Job::write)
-        return benchmark::enqueue_program(sampler_, params, {Field::m, Field::pdf_m});
-    if (job == Job::write_o)
-        return benchmark::enqueue_program(sampler_, params, {Field::o, Field::pdf_o});
-    SampleParams unguarded = params;  // the furnace runs unguarded, as launch() does
-    unguarded.guards = false;
-    if (job == Job::furnace)
-        return benchmark::furnace_program(sampler_, unguarded);
-    return std::nullopt;
+    if (job != Job::write && job != Job::write_o && job != Job::furnace)
+        return std::nullopt;
+    SampleParams p = *validated(params);
+    p.guards = p.guards && job != Job::furnace;  // the furnace runs unguarded, as launch() does
+    const FieldSet fields = job == Job::write     ? FieldSet{Field::m, Field::pdf_m}
+                            : job == Job::write_o ? FieldSet{Field::o, Field::pdf_o}
+                                                  : FieldSet{Field::weight};
+    const ProgramVariant variant =
+        variant_of(job == Job::furnace ? ProgramKind::furnace : ProgramKind::bulk, p, write_mask(fields));
+    const cl::Device& device = sampler_.device();
+    return benchmark::ProgramText{program_file(variant.kind), job == Job::furnace ? "ggx_furnace_bulk" : "ggx_sample_bulk",
+                                  build_options(device, variant) + device_quirk_options(device)};
 }
 
 } // namespace

@@ -248,34 +248,13 @@ void Sampler::generate_chunk_views(const SampleParams& params, const SampleRange
                [&](const SampleView& view, const SampleSet*, std::uint64_t offset) { sink(view, offset); });
 }
 
-namespace {
-
-// A chunk's view as a SampleSet: its planes packed at stride count.
-SampleSet copy_of(const SampleView& view, FieldSet fields, bool dielectric)
-{
-    SampleSet set;
-    set.count = view.count;
-    for (Field f : all_fields) {
-        if (!fields.has(f))
-            continue;
-        const int columns = field_columns(f, dielectric);
-        std::vector<float>& planes = set.column_source(f);
-        planes.resize(columns * view.count);
-        for (int c = 0; c < columns; ++c)
-            std::copy_n(view.column_source(f) + c * view.stride, view.count, planes.data() + c * view.count);
-    }
-    return set;
-}
-
-} // namespace
-
 void Sampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
                               const ChunkSink& sink, const PerSampleInputs& per_sample)
 {
     const bool dielectric = params.eta != 0.0f;
     run_chunks(detail::validated_request(params, range, fields, per_sample), range, fields, per_sample,
                [&](const SampleView& view, const SampleSet* copy, std::uint64_t offset) {
-                   sink(copy ? *copy : copy_of(view, fields, dielectric), offset);
+                   sink(copy ? *copy : detail::copy_of(view, fields, dielectric), offset);
                });
 }
 
@@ -287,17 +266,7 @@ SampleSet Sampler::generate(const SampleParams& params, const SampleRange& range
     all.count = range.count;
     const bool dielectric = (*valid).eta != 0.0f;
     auto copy_chunk = [&](const SampleView& chunk, const SampleSet*, std::uint64_t offset) {
-        for (Field f : all_fields) {
-            if (!fields.has(f))
-                continue;
-            std::vector<float>& whole = all.column_source(f);
-            const int columns = field_columns(f, dielectric);
-            if (whole.empty())  // the first chunk: the whole arrays are allocated once a chunk arrives
-                whole.resize(columns * range.count);
-            for (int c = 0; c < columns; ++c)
-                std::copy_n(chunk.column_source(f) + c * chunk.stride, chunk.count,
-                            whole.data() + c * range.count + offset);
-        }
+        detail::copy_into(all, chunk, offset, fields, dielectric);
     };
     run_chunks(valid, range, fields, per_sample, copy_chunk);
     return all;

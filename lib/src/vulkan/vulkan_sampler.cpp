@@ -6,6 +6,7 @@
 // through the pdf shader (ggx_pdf.comp or .hlsl).  The histogram, furnace
 // and stress jobs: vulkan_jobs.cpp.
 #include "backend_factories.hpp"
+#include "planar_inputs.hpp"
 #include "validated_params.hpp"
 #include "vulkan_sampler_state.hpp"
 
@@ -84,18 +85,8 @@ SampleSet VulkanSampler::generate(const SampleParams& params, const SampleRange&
 {
     SampleSet all;
     all.count = range.count;
-    const bool dielectric = params.eta != 0.0f;
-    for (Field f : all_fields)
-        if (fields.has(f))
-            all.column_source(f).resize(std::size_t(field_columns(f, dielectric) * range.count));
     generate_chunk_views(params, range, fields, [&](const SampleView& chunk, std::uint64_t offset) {
-        for (Field f : all_fields) {
-            if (!fields.has(f))
-                continue;
-            for (int c = 0; c < field_columns(f, dielectric); ++c)
-                std::copy_n(chunk.column_source(f) + c * chunk.stride, chunk.count,
-                            all.column_source(f).begin() + std::ptrdiff_t(c * range.count + offset));
-        }
+        detail::copy_into(all, chunk, offset, fields, params.eta != 0.0f);
     }, per_sample);
     return all;
 }
@@ -103,21 +94,8 @@ SampleSet VulkanSampler::generate(const SampleParams& params, const SampleRange&
 void VulkanSampler::generate_chunks(const SampleParams& params, const SampleRange& range, FieldSet fields,
                                     const ChunkSink& sink, const PerSampleInputs& per_sample)
 {
-    const bool dielectric = params.eta != 0.0f;
-    SampleSet chunk;
     generate_chunk_views(params, range, fields, [&](const SampleView& view, std::uint64_t offset) {
-        chunk.count = view.count;
-        for (Field f : all_fields) {
-            if (!fields.has(f))
-                continue;
-            std::vector<float>& planes = chunk.column_source(f);
-            const int columns = field_columns(f, dielectric);
-            planes.resize(std::size_t(columns) * view.count);
-            for (int c = 0; c < columns; ++c)
-                std::copy_n(view.column_source(f) + c * view.stride, view.count,
-                            planes.begin() + std::ptrdiff_t(c * view.count));
-        }
-        sink(chunk, offset);
+        sink(detail::copy_of(view, fields, params.eta != 0.0f), offset);
     }, per_sample);
 }
 

@@ -137,7 +137,7 @@ if(NOT step_output MATCHES "directional albedo 0\\.82")
   fail("sample_into_buffers: not the furnace albedo of caps at 60 degrees, alpha 0.3 (0.822) in ${step_output}")
 endif()
 step("compile c_consumer.c with pkg-config" ${CC} -std=c99 -Wall -Wextra -pedantic -Werror -O2 ${c_flags}
-  -I${SOURCE_DIR}/tests/c_api ${SOURCE_DIR}/tests/c_api/c_consumer.c ${pc_flags} ${linker_flags}
+  -I${SOURCE_DIR}/tests/c_api ${SOURCE_DIR}/tests/c_api/c_consumer.c ${pc_flags} ${linker_flags} -lm
   -o ${WORK_DIR}/c-consumer)
 step("C++ API's bits" ${CPP_DUMP} ${WORK_DIR}/cpp-dump.f32 ${SOURCE_DIR}/tests/user_samplers)
 step("run c_consumer (pkg-config)" ${WORK_DIR}/c-consumer bits ${WORK_DIR}/cpp-dump.f32

@@ -15,7 +15,9 @@ the same Python class; lavapipe in CI, under the validation layer):
   InvalidArgument naming the argument;
 - on a machine with the OpenCL loader and no OpenCL platform (an empty
   OCL_ICD_VENDORS), `import ggxcl`, devices() and every Vulkan call work,
-  and an OpenCL Sampler raises DeviceError saying what to install.
+  and an OpenCL Sampler raises DeviceError saying what to install; with no
+  Vulkan driver (VK_ICD_FILENAMES naming nothing) devices() lists OpenCL's
+  and Sampler(api="vulkan") raises DeviceError saying what to install.
 
 Run by CTest (test_python_vulkan) as test_ggxcl.py is, with
 GGXCL_VULKAN_VALIDATION=1; skipped where ggxcl has no Vulkan device.
@@ -181,5 +183,24 @@ print("ok")
 def test_without_an_opencl_platform(vulkan, tmp_path):
     env = dict(os.environ, OCL_ICD_VENDORS=str(tmp_path))  # an empty folder: the loader finds no platform
     run = subprocess.run([sys.executable, "-c", NO_OPENCL], env=env, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == "ok"
+
+
+NO_VULKAN = """
+import ggxcl
+assert [d["api"] for d in ggxcl.devices()] == ["opencl"] * len(ggxcl.devices()) and ggxcl.devices()
+try:
+    ggxcl.Sampler(api="vulkan")
+    raise SystemExit("a Vulkan Sampler without a driver")
+except ggxcl.DeviceError as e:
+    assert "mesa-vulkan-drivers" in str(e), e
+print("ok")
+"""
+
+
+def test_without_a_vulkan_driver(vulkan, tmp_path):
+    env = dict(os.environ, VK_ICD_FILENAMES=str(tmp_path / "none.json"))
+    run = subprocess.run([sys.executable, "-c", NO_VULKAN], env=env, capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     assert run.stdout.strip() == "ok"

@@ -525,6 +525,8 @@ static void check_vulkan_refusals(ggxcl_sampler* sampler, const char* user_dir)
     CHECK(ggxcl_sampler_api(sampler) == GGXCL_API_VULKAN, "the sampler's API");
     CHECK(ggxcl_sampler_context(sampler) == NULL && strstr(ggxcl_last_error(), "ggxcl_sampler_context"),
           "a Vulkan sampler's context: %s", ggxcl_last_error());
+    CHECK(ggxcl_sampler_device(sampler) == NULL && strstr(ggxcl_last_error(), "ggxcl_sampler_device"),
+          "a Vulkan sampler's device: %s", ggxcl_last_error());
     CHECK(ggxcl_sampler_queue(sampler) == NULL && strstr(ggxcl_last_error(), "ggxcl_sampler_queue"),
           "a Vulkan sampler's queue: %s", ggxcl_last_error());
     CHECK(ggxcl_furnace_items(sampler, 100) == 0 && strstr(ggxcl_last_error(), "ggxcl_furnace_items"),

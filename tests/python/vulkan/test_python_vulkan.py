@@ -100,6 +100,24 @@ def test_samples_equal_cpp_vulkan_sampler_bit_for_bit(vulkan, tmp_path, method):
     assert not np.array_equal(other["o"], d["o"])
 
 
+def test_sobol_uniforms_per_sample_inputs_and_out_arrays(vulkan, opencl):
+    n = 5000
+    sobol = vulkan.sample("caps", n, alpha=(0.3, 0.6), sequence="sobol", seed=3, fields=FIELDS)
+    check_agreement(sobol, opencl.sample("caps", n, alpha=(0.3, 0.6), sequence="sobol", seed=3, fields=FIELDS))
+    again = vulkan.sample("caps", n, alpha=(0.3, 0.6), uniforms=sobol["u"].astype(np.float64), fields=FIELDS)
+    assert np.array_equal(again["o"], sobol["o"]) and np.array_equal(again["u"], sobol["u"])  # the caller's uniforms
+    rng = np.random.default_rng(7)
+    views = rng.normal(size=(n, 3))
+    views[:, 2] = np.abs(views[:, 2]) + 0.1
+    alphas = rng.uniform(0.05, 1.0, size=(n, 2)).astype(np.float32)
+    ask = dict(view=views, alpha=alphas, seed=4, fields=FIELDS)
+    check_agreement(vulkan.sample("heitz", n, **ask), opencl.sample("heitz", n, **ask))
+    out = {"o": np.empty((n, 3), np.float32), "pdf_o": np.empty(n, np.float32)}
+    filled = vulkan.sample("heitz", n, out=out, fields=("o", "pdf_o"), view=views, alpha=alphas, seed=4)
+    assert filled["o"] is out["o"] or np.shares_memory(filled["o"], out["o"])
+    assert np.array_equal(out["o"], vulkan.sample("heitz", n, **ask)["o"])
+
+
 def test_pdf_eval_furnace_and_histogram(vulkan, opencl):
     d = vulkan.sample("heitz", 4000, alpha=(0.3, 0.6), theta=40, seed=2, fields=("o", "pdf_o", "weight"))
     assert np.allclose(vulkan.pdf("heitz", d["o"], alpha=(0.3, 0.6), theta=40), d["pdf_o"], rtol=1e-4, atol=0)

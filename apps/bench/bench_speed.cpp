@@ -110,7 +110,7 @@ double wall_ns_per_sample(const std::function<void()>& call, std::uint64_t count
 
 BenchDevice open_bench_device(const ApiChoice& choice, std::uint32_t count)
 {
-    BenchDevice device{choice, choice.open(), nullptr};
+    BenchDevice device{choice, choice.open(), nullptr, {}};
     device.jobs = ggxcl::benchmark::device_jobs(*device.backend, count, random_job_inputs(count));
     return device;
 }

@@ -47,8 +47,7 @@ T* non_null(T* pointer, const char* parameter)
     return pointer;
 }
 
-// The OpenCL Sampler of `sampler`, for `call`, which needs OpenCL's objects; InvalidArgument
-// ("sampler") naming the call on another API.
+// The OpenCL Sampler of `sampler` for `call`; InvalidArgument ("sampler") naming the call on another API.
 inline ggxcl::Sampler& opencl_of(const ggxcl_sampler* sampler, const char* call)
 {
     const ggxcl_sampler& s = require(sampler, "sampler");

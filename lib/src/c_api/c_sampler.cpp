@@ -1,6 +1,7 @@
 // c_sampler.cpp - the C API's samplers and user samplers, and the enqueue
 // calls into the caller's buffers at their offsets on the caller's queue:
 // the buffers and offsets go to the kernels as they are.
+#include <cstring>
 #include <string>
 
 #include "c_api/c_events.hpp"
@@ -83,16 +84,21 @@ ggxcl_status ggxcl_sampler_create(const char* selector, ggxcl_sampler** sampler)
     return ggxcl_sampler_create_api(GGXCL_API_OPENCL, selector, GGXCL_SHADER_GLSL, sampler);
 }
 
-ggxcl_status ggxcl_sampler_create_api(ggxcl_api api, const char* selector, ggxcl_shader_language language,
+ggxcl_status ggxcl_sampler_create_api(ggxcl_api api_id, const char* selector, ggxcl_shader_language language_id,
                                       ggxcl_sampler** sampler)
 {
     return guarded([&] {
         ggxcl_sampler*& out = require(sampler, "sampler");
         out = nullptr;
+        // A C caller's enum may hold any int: read as int, not as the C++ enum (whose range is 0..1).
+        static_assert(sizeof(ggxcl_api) == sizeof(int) && sizeof(ggxcl_shader_language) == sizeof(int));
+        int api = 0, language = 0;
+        std::memcpy(&api, &api_id, sizeof api);
+        std::memcpy(&language, &language_id, sizeof language);
         if (api != GGXCL_API_OPENCL && api != GGXCL_API_VULKAN)
-            throw ggxcl::InvalidArgument("api", std::to_string(int(api)), "GGXCL_API_OPENCL or GGXCL_API_VULKAN");
+            throw ggxcl::InvalidArgument("api", std::to_string(api), "GGXCL_API_OPENCL or GGXCL_API_VULKAN");
         if (language != GGXCL_SHADER_GLSL && (api != GGXCL_API_VULKAN || language != GGXCL_SHADER_HLSL))
-            throw ggxcl::InvalidArgument("language", std::to_string(int(language)),
+            throw ggxcl::InvalidArgument("language", std::to_string(language),
                                          "GGXCL_SHADER_GLSL, or GGXCL_SHADER_HLSL with GGXCL_API_VULKAN");
         const ggxcl::ShaderLanguage shaders =
             language == GGXCL_SHADER_HLSL ? ggxcl::ShaderLanguage::hlsl : ggxcl::ShaderLanguage::glsl;

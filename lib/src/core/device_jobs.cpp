@@ -12,9 +12,7 @@ namespace {
 class BackendJobs final : public DeviceJobs {
 public:
     BackendJobs(Backend& backend, std::uint64_t count, JobInputs inputs)
-        : backend_(backend), count_(count), inputs_(std::move(inputs))
-    {
-    }
+        : backend_(backend), count_(count), inputs_(std::move(inputs)) {}
 
     bool runs(Job job) const override { return job != Job::store; }
 

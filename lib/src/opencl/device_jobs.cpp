@@ -99,10 +99,8 @@ OpenclJobs::OpenclJobs(Sampler& sampler, std::uint64_t count, const benchmark::J
     world_out_.o = write_out_.m;
     // Weights and their squares, and a dielectric's reflected weights (Sampler::enqueue_furnace).
     sums_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * sampler.furnace_items(count_) * sizeof(float));
-    SampleParams world;
-    world.world_space = true;
     if (world_count_ > 0)
-        world_in_ = device_inputs(context, world, inputs.world);
+        world_in_ = device_inputs(context, world_job_params(SampleParams{}), inputs.world);
     if (per_sample_count_ > 0)
         per_sample_in_ = device_inputs(context, SampleParams{}, inputs.per_sample);
     cl::Program store(context, store_source);

@@ -110,7 +110,7 @@ std::vector<float> VulkanSampler::stress(const StressRequest& stress, const std:
     const detail::ShaderDefines defines = {{"GGX_METHOD", detail::method_id(stress.method)},
                                            {"GGX_GUARDS", stress.guards ? 1 : 0},
                                            {"GGX_DIELECTRIC", stress.dielectric ? 1 : 0}};
-    const std::uint64_t capacity = s.capacity(in_planes);
+    const std::uint64_t capacity = s.capacity(in_planes, count);
     std::vector<float> out(out_planes * count);
     detail::translate_vulkan_errors(device().name, [&] {
         const vk::raii::Pipeline& pipeline = s.shader_pipeline("ggx_stress", defines, stress.user);

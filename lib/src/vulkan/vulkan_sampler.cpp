@@ -110,7 +110,7 @@ void VulkanSampler::generate_chunk_views(const SampleParams& params, const Sampl
     State& s = *state_;
     const std::lock_guard lock(s.calls);
     const std::uint64_t out_per_sample = output_floats(fields, dielectric), in_per_sample = input_floats(per_sample);
-    const std::uint64_t capacity = s.capacity(std::max(out_per_sample, in_per_sample));
+    const std::uint64_t capacity = s.capacity(std::max(out_per_sample, in_per_sample), range.count);
     detail::translate_vulkan_errors(device().name, [&] {
         const vk::raii::Pipeline& pipeline = s.pipeline(variant);
         detail::MappedBuffer inputs = s.compute->buffer(in_per_sample * capacity);
@@ -169,7 +169,7 @@ std::vector<float> VulkanSampler::of_directions(const SampleParams& params, cons
     variant.eval = eval;
     State& s = *state_;
     const std::lock_guard lock(s.calls);
-    const std::uint64_t in_per_sample = input_floats(per_sample) + 3, capacity = s.capacity(in_per_sample);
+    const std::uint64_t in_per_sample = input_floats(per_sample) + 3, capacity = s.capacity(in_per_sample, count);
     std::vector<float> result(count);
     detail::translate_vulkan_errors(device().name, [&] {
         const vk::raii::Pipeline& pipeline = s.pipeline(variant, "ggx_pdf");

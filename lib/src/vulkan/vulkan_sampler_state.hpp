@@ -159,11 +159,12 @@ struct VulkanSampler::State {
         compute->dispatch(pipeline, &request, sizeof request, inputs, outputs, shape);
     }
 
-    // Samples per chunk: the chunk size, within one storage buffer of the device.
-    std::uint64_t capacity(std::uint64_t floats_per_sample) const
+    // Samples per chunk of a call of `count`: the chunk size, within one storage buffer of the
+    // device, and no more than the call needs (its buffers are made per call).
+    std::uint64_t capacity(std::uint64_t floats_per_sample, std::uint64_t count) const
     {
         const std::uint64_t range = compute->info().max_storage_buffer_range / sizeof(float);
-        return std::max<std::uint64_t>(1, std::min(chunk_size.load(), range / std::max<std::uint64_t>(floats_per_sample, 1)));
+        return std::max<std::uint64_t>(1, std::min({count, chunk_size.load(), range / std::max<std::uint64_t>(floats_per_sample, 1)}));
     }
 };
 

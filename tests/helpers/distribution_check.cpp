@@ -20,4 +20,21 @@ double per_config_level()
     return ggxref::sidak_level(family_level, configs_per_method);
 }
 
+ggxcl::SampleParams chi_square_conductor(ggxcl::Method method)
+{
+    ggxcl::SampleParams p;
+    p.method = method;
+    p.alpha_x = 0.35f;
+    p.alpha_y = ggxcl::method_traits(method).isotropic_only ? 0.35f : 0.7f;
+    p.view = ggxcl::unit_vector({0.6f, 0.3f, 0.5f});
+    return p;
+}
+
+ggxcl::SampleParams chi_square_dielectric(ggxcl::Method method, float eta)
+{
+    ggxcl::SampleParams p = chi_square_conductor(method);
+    p.eta = eta;
+    return p;
+}
+
 } // namespace ggxtest

@@ -27,4 +27,10 @@ ggxref::ChiSquare fit(const std::vector<std::uint64_t>& histogram, ggxref::Metho
 // Per-configuration level after Sidak correction over a method's configurations.
 double per_config_level();
 
+// The request the device-histogram suites draw (test_histogram_fit, tests/vulkan): alpha
+// (0.35, 0.7) (0.35 where the method is isotropic), view (0.6, 0.3, 0.5) normalized; and the same
+// surface as a dielectric of relative index eta.
+ggxcl::SampleParams chi_square_conductor(ggxcl::Method method);
+ggxcl::SampleParams chi_square_dielectric(ggxcl::Method method, float eta);
+
 } // namespace ggxtest

@@ -21,22 +21,8 @@ namespace {
 
 constexpr std::uint64_t dielectric_samples = 400000;
 
-ggxcl::SampleParams conductor(ggxcl::Method method)
-{
-    ggxcl::SampleParams p;
-    p.method = method;
-    p.alpha_x = 0.35f;
-    p.alpha_y = ggxcl::method_traits(method).isotropic_only ? 0.35f : 0.7f;
-    p.view = ggxcl::unit_vector({0.6f, 0.3f, 0.5f});
-    return p;
-}
-
-ggxcl::SampleParams dielectric(ggxcl::Method method, float eta)
-{
-    ggxcl::SampleParams p = conductor(method);
-    p.eta = eta;
-    return p;
-}
+using ggxtest::chi_square_conductor;
+using ggxtest::chi_square_dielectric;
 
 // The p-value of the histogram of `sampled` against the bin probabilities of `tested`.
 double p_value(ggxcl::Backend& backend, const ggxcl::SampleParams& sampled, const ggxcl::SampleParams& tested,
@@ -64,13 +50,13 @@ TEST_CASE("every method's device histogram fits its pdf, conductor and dielectri
     std::uint64_t seed = 500;
     for (ggxcl::Method method : ggxcl::all_methods) {
         const std::string name(ggxcl::method_name(method));
-        const ggxcl::SampleParams c = conductor(method);
+        const ggxcl::SampleParams c = chi_square_conductor(method);
         const double p = p_value(*backend, c, c, ++seed, ggxtest::chi_square_samples);
         INFO(name, " conductor: p = ", p, ", level ", level);
         CHECK(p > level);
         if (!ggxcl::method_traits(method).dielectric)
             continue;
-        const ggxcl::SampleParams d = dielectric(method, 1.5f);
+        const ggxcl::SampleParams d = chi_square_dielectric(method, 1.5f);
         const double q = p_value(*backend, d, d, ++seed, dielectric_samples);
         INFO(name, " dielectric: p = ", q, ", level ", level);
         CHECK(q > level);
@@ -82,8 +68,8 @@ TEST_CASE("negative controls: a device histogram fails a wrong distribution")
     ggxcl::Backend* backend = ggxtest::test_backend();
     if (!backend)
         return;
-    CHECK(p_value(*backend, conductor(ggxcl::Method::ndf), conductor(ggxcl::Method::caps), 600,
+    CHECK(p_value(*backend, chi_square_conductor(ggxcl::Method::ndf), chi_square_conductor(ggxcl::Method::caps), 600,
                   ggxtest::chi_square_samples) < 1e-6);
-    CHECK(p_value(*backend, dielectric(ggxcl::Method::caps, 1.5f), dielectric(ggxcl::Method::caps, 1.3f), 601,
+    CHECK(p_value(*backend, chi_square_dielectric(ggxcl::Method::caps, 1.5f), chi_square_dielectric(ggxcl::Method::caps, 1.3f), 601,
                   dielectric_samples) < 1e-6);
 }

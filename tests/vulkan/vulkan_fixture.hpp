@@ -6,6 +6,7 @@
 
 #include <ggxcl/ggxcl.hpp>
 
+#include "distribution_check.hpp"
 #include "shader_compiler.hpp"  // all_shader_languages
 
 namespace ggxvk {
@@ -13,9 +14,8 @@ namespace ggxvk {
 // The runtime's sampler for `language` (made once, destroyed at exit).
 ggxcl::VulkanSampler& vulkan_sampler(ggxcl::ShaderLanguage language);
 
-// alpha (0.35, 0.7) (0.35 where the method is isotropic), view (0.6, 0.3, 0.5) normalized.
-ggxcl::SampleParams chi_square_conductor(ggxcl::Method method);
-// The same surface as a dielectric of relative index eta.
-ggxcl::SampleParams chi_square_dielectric(ggxcl::Method method, float eta);
+// The chi-square suites' requests (distribution_check.hpp).
+using ggxtest::chi_square_conductor;
+using ggxtest::chi_square_dielectric;
 
 } // namespace ggxvk

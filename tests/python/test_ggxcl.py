@@ -289,7 +289,7 @@ def test_a_signal_interrupts_a_long_call(sampler):
 
 def pyopencl_device_of(sampler):
     """The pyopencl device that `sampler` runs on (same platform and name)."""
-    platforms = {d["platform"] for d in ggxcl.devices() if d["name"] == sampler.device_name}
+    platforms = {d["platform"] for d in ggxcl.devices() if d["api"] == "opencl" and d["name"] == sampler.device_name}
     cl = pytest.importorskip("pyopencl")
     for platform in cl.get_platforms():
         if platform.name in platforms:

@@ -3,7 +3,7 @@
  *       offsets (0, aligned, odd: the kernels take them) get the C++ enqueue's bits of
  *       every case of c_api_cases.h (DUMP, from cpp_dump) and leave the rest
  *       of each buffer untouched; per-sample inputs from buffers at offsets;
- *       the host calls agree; then every status code that one process can
+ *       the host calls agree, a histogram bins the generated samples; then every status code that one process can
  *       provoke (USER_DIR holds tests/user_samplers).
  *   c_consumer threads DUMP         four threads share one sampler, each with
  *       its own queue, and get the same bits.
@@ -320,6 +320,42 @@ static void expect_status(ggxcl_status status, ggxcl_status expected, const char
           ggxcl_last_error());
 }
 
+/* ggxcl_histogram of bounded's o against the same samples binned here (bins of equal solid angle:
+ * z = cos theta in 8 steps from -1, phi in 16 from 0): at most 2 of 1000 in another bin (float
+ * rounding at an edge), every sample counted; a bad direction and no counts are refused. */
+static void check_histogram(ggxcl_sampler* sampler, const char* name)
+{
+    enum { NZ = 8, NPHI = 16 };
+    const double pi = 3.14159265358979323846;
+    ggxcl_params params = case_params(&api_cases[5]);
+    ggxcl_range range = {CASE_SEED, CASE_FIRST, CASE_COUNT};
+    static float o[3 * CASE_COUNT];
+    uint64_t counts[NZ * NPHI], here[NZ * NPHI], non_finite = 1, invalid = 1, total = 0, moved = 0;
+    ggxcl_host_outputs out;
+    size_t j;
+    memset(&out, 0, sizeof out);
+    memset(here, 0, sizeof here);
+    out.o = o;
+    MUST(ggxcl_generate(sampler, &params, &range, GGXCL_FIELD_BIT(GGXCL_FIELD_O), &out));
+    MUST(ggxcl_histogram(sampler, &params, &range, NZ, NPHI, GGXCL_FIELD_O, counts, &non_finite, &invalid));
+    for (j = 0; j < CASE_COUNT; ++j) {
+        double phi = atan2(o[CASE_COUNT + j], o[j]);
+        int z = (int)floor((o[2 * CASE_COUNT + j] + 1.0) / 2.0 * NZ), k = (int)floor((phi < 0 ? phi + 2 * pi : phi) / (2 * pi) * NPHI);
+        ++here[(z < NZ ? z : NZ - 1) * NPHI + (k < NPHI ? k : NPHI - 1)];
+    }
+    for (j = 0; j < NZ * NPHI; ++j) {
+        total += counts[j];
+        moved += counts[j] > here[j] ? counts[j] - here[j] : here[j] - counts[j];
+    }
+    CHECK(total == CASE_COUNT && non_finite == 0 && invalid == 0, "%s histogram: %llu counted, %llu non-finite, "
+          "%llu invalid", name, (unsigned long long)total, (unsigned long long)non_finite, (unsigned long long)invalid);
+    CHECK(moved <= 4, "%s histogram: %llu samples in another bin than here", name, (unsigned long long)moved);
+    expect_status(ggxcl_histogram(sampler, &params, &range, NZ, NPHI, GGXCL_FIELD_PDF_O, counts, &non_finite, &invalid),
+                  GGXCL_INVALID_ARGUMENT, "o or m", "a histogram of pdf_o");
+    expect_status(ggxcl_histogram(sampler, &params, &range, NZ, NPHI, GGXCL_FIELD_O, NULL, &non_finite, &invalid),
+                  GGXCL_INVALID_ARGUMENT, "counts", "a histogram without counts");
+}
+
 /* Every status a process with a device can provoke. */
 static void check_errors(ggxcl_sampler* sampler, cl_command_queue queue, const char* user_dir)
 {
@@ -440,6 +476,7 @@ static void check_bits(const char* user_dir)
         check_case(sampler, d.context, queue, index);
     check_per_sample_inputs(sampler, d.context, queue);
     check_host_calls(sampler, queue);
+    check_histogram(sampler, "OpenCL");
     check_errors(sampler, queue, user_dir);
 
     ggxcl_version_numbers(&major, &minor, &patch);
@@ -577,6 +614,7 @@ static void check_vulkan(const char* opencl_dump, const char* vulkan_dump, const
     MUST(ggxcl_furnace(sampler, &params, &range, &sums));
     CHECK(sums.count == range.count && sums.mean > 0.5 && sums.mean <= 1.0 + 1e-6, "furnace on Vulkan: mean %g",
           sums.mean);
+    check_histogram(sampler, "Vulkan");
     check_vulkan_refusals(sampler, user_dir);
     printf("c_consumer: %u cases on %s\n", (unsigned)CASE_TOTAL, ggxcl_sampler_device_name(sampler));
     ggxcl_sampler_release(sampler);

@@ -180,8 +180,8 @@ ggxcl_status ggxcl_sampler_create_with_context(cl_context context, cl_device_id 
  * or GGXCL_VULKAN_DEVICE, else the first); `language`: the Vulkan shaders'
  * (GGXCL_SHADER_GLSL with OpenCL).  ggxcl_sampler_create(s, p) is
  * ggxcl_sampler_create_api(GGXCL_API_OPENCL, s, GGXCL_SHADER_GLSL, p).  On a
- * Vulkan sampler ggxcl_generate, _pdf, _eval, _furnace, _sampler_device_name
- * and user samplers of GLSL or HLSL files work; the calls on OpenCL objects
+ * Vulkan sampler ggxcl_generate, _pdf, _eval, _furnace, _histogram,
+ * _sampler_device_name and user samplers of GLSL or HLSL files work; the calls on OpenCL objects
  * (_sampler_context, _device, _queue, _furnace_items, the _enqueue calls,
  * _build_options) fail with GGXCL_INVALID_ARGUMENT, parameter "sampler", the
  * message naming the call (those returning a handle or a size return NULL
@@ -249,6 +249,16 @@ ggxcl_status ggxcl_eval(ggxcl_sampler* sampler, const ggxcl_params* params, size
                         float* values);
 ggxcl_status ggxcl_furnace(ggxcl_sampler* sampler, const ggxcl_params* params, const ggxcl_range* range,
                            ggxcl_furnace_sums* sums);
+
+/* Bins the directions (GGXCL_FIELD_O or GGXCL_FIELD_M) of `range` on the
+ * device, on OpenCL and Vulkan: `counts` receives bins_z * bins_phi counts,
+ * bin (z, phi) at z * bins_phi + phi, z = cos theta in bins_z equal steps
+ * from -1 and phi in bins_phi from 0 (bins of equal solid angle;
+ * kernels/ggx_histogram_bin.h); *non_finite and *invalid the samples
+ * counted apart (ggxcl::Histogram). */
+ggxcl_status ggxcl_histogram(ggxcl_sampler* sampler, const ggxcl_params* params, const ggxcl_range* range,
+                             int bins_z, int bins_phi, ggxcl_field direction, uint64_t* counts,
+                             uint64_t* non_finite, uint64_t* invalid);
 
 /* For the caller's own kernels: a directory of the device headers (for -I;
  * valid for the process), and the options the library builds `precision`

@@ -131,6 +131,20 @@ ggxcl_status ggxcl_furnace(ggxcl_sampler* sampler, const ggxcl_params* params, c
     });
 }
 
+ggxcl_status ggxcl_histogram(ggxcl_sampler* sampler, const ggxcl_params* params, const ggxcl_range* range,
+                             int bins_z, int bins_phi, ggxcl_field direction, uint64_t* counts, uint64_t* non_finite,
+                             uint64_t* invalid)
+{
+    return guarded([&] {
+        ggxcl::Backend& s = *require(sampler, "sampler").backend;
+        const ggxcl::Histogram h =
+            s.histogram(to_params(params), to_range(range), bins_z, bins_phi, to_field(direction, "direction"));
+        std::copy(h.counts.begin(), h.counts.end(), non_null(counts, "counts"));
+        *non_null(non_finite, "non_finite") = h.non_finite;
+        *non_null(invalid, "invalid") = h.invalid;
+    });
+}
+
 ggxcl_status ggxcl_device_include_dir(const char** directory)
 {
     return guarded([&] {

@@ -68,6 +68,11 @@ Precision to_precision(int id, const char* parameter)
     return to_enum(id, all_precisions, parameter, precision_name);
 }
 
+Field to_field(int id, const char* parameter)
+{
+    return to_enum(id, all_fields, parameter, field_name);
+}
+
 SampleRange to_range(const ggxcl_range* c)
 {
     const ggxcl_range& in = require(c, "range");

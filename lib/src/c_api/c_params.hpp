@@ -11,6 +11,7 @@ namespace ggxcl::capi {
 
 SampleParams to_params(const ggxcl_params* params);
 Precision to_precision(int id, const char* parameter);  // InvalidArgument naming `parameter` for an unknown id
+Field to_field(int id, const char* parameter);          // the same
 SampleRange to_range(const ggxcl_range* range);
 FieldSet to_fields(unsigned mask);  // InvalidArgument naming "fields" for bits beyond the fields
 

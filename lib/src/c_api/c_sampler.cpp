@@ -119,31 +119,22 @@ ggxcl_status ggxcl_sampler_create_with_context(cl_context context, cl_device_id 
 
 void ggxcl_sampler_release(ggxcl_sampler* sampler) { delete sampler; }
 
-ggxcl_api ggxcl_sampler_api(const ggxcl_sampler* sampler)
-{
-    return sampler && !sampler->opencl ? GGXCL_API_VULKAN : GGXCL_API_OPENCL;
-}
-
+ggxcl_api ggxcl_sampler_api(const ggxcl_sampler* sampler) { return sampler && !sampler->opencl ? GGXCL_API_VULKAN : GGXCL_API_OPENCL; }
 cl_context ggxcl_sampler_context(const ggxcl_sampler* sampler)
 {
     return opencl_part(sampler, "ggxcl_sampler_context", [](const ggxcl::Sampler& s) { return s.context()(); });
 }
-
 cl_device_id ggxcl_sampler_device(const ggxcl_sampler* sampler)
 {
     return opencl_part(sampler, "ggxcl_sampler_device", [](const ggxcl::Sampler& s) { return s.device()(); });
 }
-
 cl_command_queue ggxcl_sampler_queue(const ggxcl_sampler* sampler)
 {
     return opencl_part(sampler, "ggxcl_sampler_queue",
                        [](const ggxcl::Sampler& s) { return const_cast<ggxcl::Sampler&>(s).queue()(); });
 }
 
-const char* ggxcl_sampler_device_name(const ggxcl_sampler* sampler)
-{
-    return sampler ? sampler->device_name.c_str() : "";
-}
+const char* ggxcl_sampler_device_name(const ggxcl_sampler* sampler) { return sampler ? sampler->device_name.c_str() : ""; }
 
 ggxcl_status ggxcl_user_sampler_load(const char* path, const char* name, ggxcl_user_sampler** sampler)
 {

@@ -11,6 +11,7 @@
 #include "planar_inputs.hpp"
 #include "program_variant.hpp"
 #include "ggxcl/error.hpp"
+#include "ggxcl/kernel_sources.hpp"
 #include "ggxcl/sampler.hpp"
 
 namespace ggxcl::detail {
@@ -18,20 +19,6 @@ namespace ggxcl::detail {
 namespace {
 
 using benchmark::Job;
-
-// The store job's kernel: the write job's bytes (three planes of m, one of pdf_m) from values
-// that cost nothing to compute.
-const char* store_source = R"CL(
-__kernel void store_only(__global float* restrict m, __global float* restrict pdf_m, uint count, float seed)
-{
-    uint j = get_global_id(0);
-    float x = (float)j * 1e-7f + seed;
-    m[j] = x;
-    m[j + count] = x + 1.0f;
-    m[j + 2 * count] = x + 2.0f;
-    pdf_m[j] = x + 3.0f;
-}
-)CL";
 
 cl::Buffer device_copy(const cl::Context& context, std::vector<float> host)
 {
@@ -103,7 +90,7 @@ OpenclJobs::OpenclJobs(Sampler& sampler, std::uint64_t count, const benchmark::J
         world_in_ = device_inputs(context, world_job_params(SampleParams{}), inputs.world);
     if (per_sample_count_ > 0)
         per_sample_in_ = device_inputs(context, SampleParams{}, inputs.per_sample);
-    cl::Program store(context, store_source);
+    cl::Program store(context, kernel_source("ggx_store.cl"));
     store.build({sampler.device()});
     store_ = cl::Kernel(store, "store_only");
 }

@@ -60,7 +60,7 @@ bool is_float_class(OpClass c)
 // Nanoseconds of one run of `items` work-items in groups of `group` (fixed: a driver that picks the
 // group size by the count JIT-compiles again for each new size), by the event's profile, or by wall
 // clock where the profile cannot be right (missing, or below 1% or far above the wall-clock time:
-// Mesa 22.3 rusticl reports 1 ns), as DeviceTimer decides (bench_speed.cpp).
+// Mesa 22.3 rusticl reports 1 ns), as time_interleaved decides (bench_speed.cpp).
 double run_ns(cl::CommandQueue& queue, cl::Kernel& kernel, std::size_t items, std::size_t group)
 {
     cl::Event done;

@@ -53,34 +53,14 @@ bool runs_on(const ggxcl::UserSampler& user, const ggxcl::Backend& backend)
 
 namespace {
 
-// The API a --sampler file is read for: a shader file's is Vulkan, another OpenCL's where planned.
-const ApiChoice& choice_for(const std::string& file, const std::vector<ApiChoice>& apis)
-{
-    const bool shader = ggxcl::shader_language_of_file(file).has_value();
-    for (const ApiChoice& choice : apis)
-        if ((choice.api == ggxcl::Api::vulkan) == shader)
-            return choice;
-    return apis.front();
-}
-
 // --sampler, --sampler-name and --reproduces (the k-th for the k-th sampler; none: no map).
 void plan_user_samplers(const BenchCommand& cmd, const std::vector<ApiChoice>& apis, BenchPlan& plan)
 {
     if (cmd.reproduces.size() > cmd.user.files.size())
         throw UsageError("--reproduces", cmd.reproduces.back(), "at most one per --sampler");
-    if (cmd.user.names.size() > cmd.user.files.size())
-        throw UsageError("--sampler-name", cmd.user.names.back(), "at most one name per --sampler");
-    for (std::size_t k = 0; k < cmd.user.files.size(); ++k) {
-        UserSamplerOptions one;
-        one.files = {cmd.user.files[k]};
-        if (k < cmd.user.names.size())
-            one.names = {cmd.user.names[k]};
-        const auto loaded = one.load(choice_for(cmd.user.files[k], apis)).front();
-        for (const BenchUserSampler& earlier : plan.users)
-            if (earlier.sampler->name() == loaded->name())
-                throw UsageError("--sampler-name", loaded->name(),
-                                 "a name per sampler: two samplers are named " + loaded->name());
+    for (const auto& loaded : cmd.user.load(apis)) {
         BenchUserSampler user{loaded};
+        const std::size_t k = plan.users.size();
         if (k < cmd.reproduces.size() && cmd.reproduces[k] != "none") {
             try {
                 user.method = ggxcl::parse_method(cmd.reproduces[k]);

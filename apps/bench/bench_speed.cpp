@@ -23,62 +23,41 @@ bool plausible_profile(double device_ns, double wall_ns)
     return device_ns > 0.0 && device_ns >= 0.01 * wall_ns && device_ns <= 1.5 * wall_ns + 1e6;
 }
 
-ggxcl::Vec3 vec_at(const std::vector<float>& planes, std::size_t count, std::size_t j)
-{
-    return {planes[j], planes[count + j], planes[2 * count + j]};
-}
-
 } // namespace
-
-void random_world_inputs(std::uint32_t count, std::vector<float>& normals, std::vector<float>& views)
-{
-    std::mt19937 rng(20231122);
-    std::normal_distribution<float> gauss;
-    normals.resize(3 * std::size_t(count));
-    views.resize(3 * std::size_t(count));
-    for (std::uint32_t j = 0; j < count; ++j) {
-        float n[3], v[3];
-        do {
-            for (float& c : n) c = gauss(rng);
-            float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-            for (float& c : n) c /= len;
-        } while (n[2] < -0.999f);
-        float along;
-        do {
-            for (float& c : v) c = gauss(rng);
-            float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-            for (float& c : v) c /= len;
-            along = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
-            if (along < 0.0f)
-                for (int c = 0; c < 3; ++c) v[c] -= 2.0f * along * n[c];  // mirror into the upper side
-            along = std::fabs(along);
-        } while (along < 0.05f);
-        for (int c = 0; c < 3; ++c) {
-            normals[c * std::size_t(count) + j] = n[c];
-            views[c * std::size_t(count) + j] = v[c];
-        }
-    }
-}
 
 ggxcl::benchmark::JobInputs random_job_inputs(std::uint64_t count)
 {
     const std::size_t n = std::size_t(std::min(count, inputs_limit));
-    std::vector<float> normals, views;
-    random_world_inputs(std::uint32_t(n), normals, views);
     ggxcl::benchmark::JobInputs in;
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<float> alpha(0.05f, 1.0f);
+    std::mt19937 rng(20231122);
+    std::normal_distribution<float> gauss;
     for (std::size_t j = 0; j < n; ++j) {
-        in.world.normals.push_back(vec_at(normals, n, j));
-        in.world.views.push_back(vec_at(views, n, j));
-        ggxcl::Vec3 up = in.world.views.back();  // the world job's view read as a tangent-space view
-        up.z = std::fabs(up.z);
-        in.per_sample.views.push_back(up);
+        float normal[3], view[3];
+        do {
+            for (float& c : normal) c = gauss(rng);
+            float len = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+            for (float& c : normal) c /= len;
+        } while (normal[2] < -0.999f);
+        float along;
+        do {
+            for (float& c : view) c = gauss(rng);
+            float len = std::sqrt(view[0] * view[0] + view[1] * view[1] + view[2] * view[2]);
+            for (float& c : view) c /= len;
+            along = view[0] * normal[0] + view[1] * normal[1] + view[2] * normal[2];
+            if (along < 0.0f)
+                for (int c = 0; c < 3; ++c) view[c] -= 2.0f * along * normal[c];  // mirror into the upper side
+            along = std::fabs(along);
+        } while (along < 0.05f);
+        in.world.normals.push_back({normal[0], normal[1], normal[2]});
+        in.world.views.push_back({view[0], view[1], view[2]});
+        in.per_sample.views.push_back({view[0], view[1], std::fabs(view[2])});  // the world job's view as a tangent-space one
     }
-    for (std::size_t j = 0; j < n; ++j)
-        in.per_sample.alphas.push_back({alpha(rng), 0.0f});
-    for (std::size_t j = 0; j < n; ++j)
-        in.per_sample.alphas[j][1] = alpha(rng);
+    std::mt19937 alpha_rng(5);
+    std::uniform_real_distribution<float> alpha(0.05f, 1.0f);
+    in.per_sample.alphas.resize(n);
+    for (int c = 0; c < 2; ++c)  // the alpha_x plane, then the alpha_y plane
+        for (std::size_t j = 0; j < n; ++j)
+            in.per_sample.alphas[j][c] = alpha(alpha_rng);
     return in;
 }
 
@@ -108,10 +87,10 @@ double wall_ns_per_sample(const std::function<void()>& call, std::uint64_t count
     return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / double(count);
 }
 
-BenchDevice open_bench_device(const ApiChoice& choice, std::uint32_t count)
+BenchDevice open_bench_device(const ApiChoice& choice, std::uint32_t count, const ggxcl::benchmark::JobInputs& inputs)
 {
     BenchDevice device{choice, choice.open(), nullptr, {}};
-    device.jobs = ggxcl::benchmark::device_jobs(*device.backend, count, random_job_inputs(count));
+    device.jobs = ggxcl::benchmark::device_jobs(*device.backend, count, inputs);
     return device;
 }
 

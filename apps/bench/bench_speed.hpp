@@ -37,9 +37,8 @@ double wall_ns_per_sample(const std::function<void()>& call, std::uint64_t count
 
 // The world job's inputs: unit normals over the sphere (away from the pole -z, where caps-iso is
 // singular) and unit views at 0..87 degrees from them; the per-sample job's: the same views turned
-// above z = 0 and alpha pairs in 0.05 .. 1.  `count` of each, at most 2^22.
+// above z = 0 and alpha pairs in 0.05 .. 1.  `count` of each, at most 2^22; made once per run.
 ggxcl::benchmark::JobInputs random_job_inputs(std::uint64_t count);
-void random_world_inputs(std::uint32_t count, std::vector<float>& normals, std::vector<float>& views);
 
 inline const std::string profiled_clock = "event-profiled";
 
@@ -52,8 +51,8 @@ struct BenchDevice {
     std::string label() const { return backend->device_label(); }
 };
 
-// `choice`'s device with its jobs of `count` samples.
-BenchDevice open_bench_device(const ApiChoice& choice, std::uint32_t count);
+// `choice`'s device with its jobs of `count` samples on `inputs`.
+BenchDevice open_bench_device(const ApiChoice& choice, std::uint32_t count, const ggxcl::benchmark::JobInputs& inputs);
 
 struct BenchTask {
     BenchJob job;

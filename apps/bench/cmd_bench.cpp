@@ -338,8 +338,9 @@ void run_bench(const BenchCommand& cmd, const BenchPlan& plan)
     report.date = utc_now();
     report.machine = machine_description();
     std::vector<BenchDevice> devices;
+    const ggxcl::benchmark::JobInputs inputs = random_job_inputs(report.count);
     for (const ApiChoice& choice : plan.apis)
-        devices.push_back(open_bench_device(choice, report.count));
+        devices.push_back(open_bench_device(choice, report.count, inputs));
     measure_devices(devices, plan, cmd, report);
     if (!cmd.no_native)
         measure_native_if_available(plan, report);

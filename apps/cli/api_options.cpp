@@ -31,6 +31,15 @@ std::vector<std::string> ApiChoice::arguments() const
     return words;
 }
 
+const ApiChoice& choice_for_file(const std::string& file, const std::vector<ApiChoice>& choices)
+{
+    const bool shader = ggxcl::shader_language_of_file(file).has_value();
+    for (const ApiChoice& choice : choices)
+        if ((choice.api == ggxcl::Api::vulkan) == shader)
+            return choice;
+    return choices.front();
+}
+
 void ApiOptions::add_to(CLI::App& cmd)
 {
     api_option = cmd.add_option("--api", api,

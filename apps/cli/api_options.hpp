@@ -27,6 +27,10 @@ struct ApiChoice {
     std::vector<std::string> arguments() const;
 };
 
+// Of several APIs' choices, the one that reads a --sampler `file`: Vulkan's for a .glsl or .hlsl
+// file, else OpenCL's where there is one, else the first.
+const ApiChoice& choice_for_file(const std::string& file, const std::vector<ApiChoice>& choices);
+
 struct ApiOptions {
     std::string api = "opencl", shader_language = "glsl";
     CLI::Option* api_option = nullptr;

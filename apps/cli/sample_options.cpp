@@ -97,11 +97,16 @@ void UserSamplerOptions::add_to(CLI::App& cmd)
 
 std::vector<std::shared_ptr<const ggxcl::UserSampler>> UserSamplerOptions::load(const ApiChoice& api) const
 {
+    return load(std::vector<ApiChoice>{api});
+}
+
+std::vector<std::shared_ptr<const ggxcl::UserSampler>> UserSamplerOptions::load(const std::vector<ApiChoice>& apis) const
+{
     if (names.size() > files.size())
         throw UsageError("--sampler-name", names.back(), "at most one name per --sampler");
     std::vector<std::shared_ptr<const ggxcl::UserSampler>> loaded;
     for (std::size_t k = 0; k < files.size(); ++k) {
-        loaded.push_back(load_user_sampler(files[k], k < names.size() ? names[k] : "", api));
+        loaded.push_back(load_user_sampler(files[k], k < names.size() ? names[k] : "", choice_for_file(files[k], apis)));
         for (std::size_t j = 0; j < k; ++j)
             if (loaded[j]->name() == loaded[k]->name())
                 throw UsageError("--sampler-name", loaded[k]->name(),

@@ -43,6 +43,8 @@ struct UserSamplerOptions {
     // Each file loaded; UsageError for more names than files, a bad file or name, or two
     // samplers of one name.
     std::vector<std::shared_ptr<const ggxcl::UserSampler>> load(const ApiChoice& api) const;
+    // The same with several APIs: each file read for the API that runs it (choice_for_file).
+    std::vector<std::shared_ptr<const ggxcl::UserSampler>> load(const std::vector<ApiChoice>& apis) const;
 };
 
 struct SampleOptions {

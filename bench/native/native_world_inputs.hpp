@@ -1,6 +1,6 @@
 // native_world_inputs.hpp - the per-sample inputs of the world_space_o job for ggx-native: the
 // same planar unit normals and views, from the same seeded generator, as ggx bench builds for
-// its device world job (apps/bench/bench_speed.cpp, random_world_inputs), rewritten here so that
+// its device world job (apps/bench/bench_speed.cpp, random_job_inputs), rewritten here so that
 // ggx-native does not link ggxcl.
 #pragma once
 

@@ -192,6 +192,16 @@ py::dict histogram(ggxcl::Backend& s, const RequestArgs& args, std::uint64_t see
 // and one with neither raises OpenCL's DeviceError (what to install).
 py::list devices()
 {
+    // What every entry holds, whatever its API.
+    auto entry = [](const char* api, std::size_t index, const std::string& name, const std::string& label) {
+        py::dict info;
+        info["api"] = api;
+        info["index"] = index;
+        info["selector"] = std::to_string(index);
+        info["name"] = name;
+        info["label"] = label;
+        return info;
+    };
     py::list list;
     std::vector<ggxcl::DeviceInfo> opencl;
     std::optional<ggxcl::DeviceError> no_opencl;
@@ -201,14 +211,9 @@ py::list devices()
         no_opencl = e;
     }
     for (const ggxcl::DeviceInfo& d : opencl) {
-        py::dict info;
-        info["api"] = "opencl";
-        info["index"] = d.index;
-        info["selector"] = std::to_string(d.index);
+        py::dict info = entry("opencl", d.index, d.name, d.label());
         info["platform"] = d.platform;
-        info["name"] = d.name;
         info["type"] = d.type;
-        info["label"] = d.label();
         info["compute_units"] = d.compute_units;
         info["opencl_version"] = d.opencl_version;
         list.append(info);
@@ -221,15 +226,8 @@ py::list devices()
     }
     if (no_opencl && vulkan.empty())
         throw *no_opencl;
-    for (const ggxcl::VulkanDeviceInfo& d : vulkan) {
-        py::dict info;
-        info["api"] = "vulkan";
-        info["index"] = d.index;
-        info["selector"] = std::to_string(d.index);
-        info["name"] = d.name;
-        info["label"] = d.label();
-        list.append(info);
-    }
+    for (const ggxcl::VulkanDeviceInfo& d : vulkan)
+        list.append(entry("vulkan", d.index, d.name, d.label()));
     return list;
 }
 

@@ -64,7 +64,8 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
     return with_kind_fixed(v);
 }
 
-PerSampleKinds host_input_kinds(const SampleParams& params, const PerSampleInputs& inputs)
+ProgramVariant variant_of_host_inputs(ProgramKind kind, const SampleParams& params, unsigned write_mask,
+                                      const PerSampleInputs& inputs)
 {
     PerSampleKinds kinds;
     kinds.view = !inputs.views.empty();
@@ -73,13 +74,7 @@ PerSampleKinds host_input_kinds(const SampleParams& params, const PerSampleInput
     kinds.uniforms = !inputs.uniforms.empty();
     kinds.isotropic = method_traits(params.method).isotropic_only || params.world_space || all_isotropic(inputs, params);
     kinds.above_horizon = all_views_above_horizon(inputs, params);
-    return kinds;
-}
-
-ProgramVariant variant_of_host_inputs(ProgramKind kind, const SampleParams& params, unsigned write_mask,
-                                      const PerSampleInputs& inputs)
-{
-    return variant_of(kind, params, write_mask, host_input_kinds(params, inputs));
+    return variant_of(kind, params, write_mask, kinds);
 }
 
 std::vector<std::pair<std::string, long>> variant_define_list(const ProgramVariant& v)

@@ -75,8 +75,7 @@ ProgramVariant variant_of(ProgramKind kind, const SampleParams& params, unsigned
                           const PerSampleKinds& kinds);
 
 // The same for per-sample inputs in host memory (the Vulkan back end): what the caller's arrays hold
-// decides the per-sample flags and the promises (host_input_kinds).
-PerSampleKinds host_input_kinds(const SampleParams& params, const PerSampleInputs& inputs);
+// decides the per-sample flags and the promises.
 ProgramVariant variant_of_host_inputs(ProgramKind kind, const SampleParams& params, unsigned write_mask,
                                       const PerSampleInputs& inputs);
 

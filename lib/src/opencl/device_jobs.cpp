@@ -8,7 +8,7 @@
 #include "device_quirks.hpp"
 #include "kernel_launch.hpp"
 #include "validated_params.hpp"
-#include "planar_inputs.hpp"
+#include "chunk_inputs.hpp"
 #include "program_variant.hpp"
 #include "ggxcl/error.hpp"
 #include "ggxcl/kernel_sources.hpp"
@@ -20,23 +20,13 @@ namespace {
 
 using benchmark::Job;
 
-cl::Buffer device_copy(const cl::Context& context, std::vector<float> host)
-{
-    return cl::Buffer(context, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, host.size() * sizeof(float), host.data());
-}
-
 // The caller's per-sample arrays in device buffers (planes of stride n), with the promises they keep.
-DeviceInputs device_inputs(const cl::Context& context, const SampleParams& params, const PerSampleInputs& in)
+DeviceInputs device_inputs(Sampler& sampler, const SampleParams& params, const PerSampleInputs& in)
 {
     const std::uint64_t n = in.views.size();
-    const PerSampleKinds kinds = host_input_kinds(params, in);
-    DeviceInputs d;
-    d.views_above_horizon = kinds.above_horizon;
-    d.isotropic = kinds.isotropic;
-    if (!in.views.empty()) d.view = device_copy(context, planar_units(in.views, 0, n, n));
-    if (!in.normals.empty()) d.normal = device_copy(context, planar_units(in.normals, 0, n, n));
-    if (!in.alphas.empty()) d.alpha = device_copy(context, planar_pairs(in.alphas, 0, n, n));
-    return d;
+    ChunkInputs buffers(sampler.context(), in, params, n);
+    buffers.upload(sampler.queue(), in, 0, n, n);
+    return buffers.buffers;
 }
 
 // The profiled duration of a finished command in ns; -1 when the driver gives none.
@@ -87,9 +77,9 @@ OpenclJobs::OpenclJobs(Sampler& sampler, std::uint64_t count, const benchmark::J
     // Weights and their squares, and a dielectric's reflected weights (Sampler::enqueue_furnace).
     sums_ = cl::Buffer(context, CL_MEM_WRITE_ONLY, 3 * sampler.furnace_items(count_) * sizeof(float));
     if (world_count_ > 0)
-        world_in_ = device_inputs(context, world_job_params(SampleParams{}), inputs.world);
+        world_in_ = device_inputs(sampler, world_job_params(SampleParams{}), inputs.world);
     if (per_sample_count_ > 0)
-        per_sample_in_ = device_inputs(context, SampleParams{}, inputs.per_sample);
+        per_sample_in_ = device_inputs(sampler, SampleParams{}, inputs.per_sample);
     cl::Program store(context, kernel_source("ggx_store.cl"));
     store.build({sampler.device()});
     store_ = cl::Kernel(store, "store_only");

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "chunk_inputs.hpp"
 #include "cl_call.hpp"
 #include "device_contract.hpp"
 #include "kernel_launch.hpp"
@@ -31,39 +32,6 @@ std::size_t bytes(std::uint64_t floats)
 {
     return static_cast<std::size_t>(floats * sizeof(float));
 }
-
-// Device buffers for the per-sample inputs of one chunk, refilled per chunk.
-struct ChunkInputs {
-    DeviceInputs buffers;
-
-    ChunkInputs(const cl::Context& context, const PerSampleInputs& in, const SampleParams& params,
-                std::uint64_t capacity)
-    {
-        buffers.views_above_horizon = all_views_above_horizon(in, params);
-        buffers.isotropic = all_isotropic(in, params);
-        auto make = [&](int planes) {
-            return detail::device_buffer(context, CL_MEM_READ_ONLY, bytes(planes * capacity));
-        };
-        if (!in.views.empty()) buffers.view = make(3);
-        if (!in.alphas.empty()) buffers.alpha = make(2);
-        if (!in.normals.empty()) buffers.normal = make(3);
-        if (!in.uniforms.empty()) buffers.uniforms = make(in.lobe_uniforms.empty() ? 2 : 3);
-    }
-
-    void upload(cl::CommandQueue& queue, const PerSampleInputs& in, std::uint64_t start, std::uint64_t n,
-                std::uint64_t capacity)
-    {
-        if (!in.views.empty()) write(queue, buffers.view, detail::planar_units(in.views, start, n, capacity));
-        if (!in.alphas.empty()) write(queue, buffers.alpha, detail::planar_pairs(in.alphas, start, n, capacity));
-        if (!in.normals.empty()) write(queue, buffers.normal, detail::planar_units(in.normals, start, n, capacity));
-        if (!in.uniforms.empty()) write(queue, buffers.uniforms, detail::planar_uniforms(in, start, n, capacity));
-    }
-
-    static void write(cl::CommandQueue& queue, cl::Buffer& buffer, const std::vector<float>& data)
-    {
-        detail::write_and_wait(queue, buffer, 0, bytes(data.size()), data.data());
-    }
-};
 
 // Reads the first n entries of each of `planes` planes (stride capacity) into `host`.
 void read_planes(cl::CommandQueue& queue, const cl::Buffer& buffer, int planes, std::uint64_t n,
@@ -182,7 +150,7 @@ void Sampler::run_chunks(const detail::ValidatedParams& params, const SampleRang
             const bool dielectric = (*params).eta != 0.0f;
             ChunkSlot slots[2] = {ChunkSlot(context_, fields, capacity, map, dielectric),
                                   ChunkSlot(context_, fields, capacity, map, dielectric)};
-            ChunkInputs inputs(context_, per_sample, *params, capacity);
+            detail::ChunkInputs inputs(context_, per_sample, *params, capacity);
             const detail::ProgramVariant variant = detail::variant_of(
                 detail::ProgramKind::bulk, *params, detail::write_mask(fields), inputs.buffers);
             QueueDrain drain{queue_};      // before the slots go, whatever ends the pass
@@ -302,7 +270,7 @@ std::vector<float> Sampler::directions_on_host(const detail::ProgramVariant& var
         detail::retry_with_smaller_chunks(chunk, smallest_chunk, memory_retries_, [&](std::uint64_t capacity) {
             cl::Buffer dirs = detail::device_buffer(context_, CL_MEM_READ_ONLY, bytes(3 * capacity));
             cl::Buffer pdfs = detail::device_buffer(context_, CL_MEM_WRITE_ONLY, bytes(capacity));
-            ChunkInputs inputs(context_, per_sample, *valid, capacity);
+            detail::ChunkInputs inputs(context_, per_sample, *valid, capacity);
             // The per-sample inputs' kinds and promises select the program, as in enqueue_pdf.
             detail::ProgramVariant chunk_variant =
                 detail::variant_of(detail::ProgramKind::bulk, *valid, 0, inputs.buffers);
@@ -310,7 +278,7 @@ std::vector<float> Sampler::directions_on_host(const detail::ProgramVariant& var
             while (start < count) {  // start: the first direction whose pdf is not read back
                 std::uint64_t n = std::min(capacity, count - start);
                 inputs.upload(queue_, per_sample, start, n, capacity);
-                ChunkInputs::write(queue_, dirs, detail::planar_units(directions, start, n, capacity));
+                detail::ChunkInputs::write(queue_, dirs, detail::planar_units(directions, start, n, capacity));
                 launch_directions(queue_, chunk_variant, valid, std::uint32_t(n), dirs, pdfs,
                                   std::uint32_t(capacity), inputs.buffers, nullptr);
                 detail::read_and_wait(queue_, pdfs, 0, bytes(n), result.data() + start);

@@ -1,8 +1,10 @@
-// test_histogram_cli.cpp - `ggx histogram` end to end: the chi-square test
-// passes for every method at the default configuration, fails for a wrong
-// pdf (negative control, exit 1 under --check), and the figure decodes as a
-// PNG of the expected size (skipped without a Python with matplotlib:
-// prerequisites.hpp).  Each case works in a folder of its own.
+// test_histogram_cli.cpp - `ggx histogram` end to end, on either API
+// (cli_api.hpp: CTest runs it on OpenCL and on Vulkan): the chi-square test
+// passes for every method at the default configuration, its summary naming
+// the API, fails for a wrong pdf (negative control, exit 1 under --check),
+// and the figure decodes as a PNG of the expected size (skipped without a
+// Python with matplotlib: prerequisites.hpp).  Each case works in a folder
+// of its own.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -14,6 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <stb/stb_image.h>
 
+#include "cli_api.hpp"
 #include "cli_runner.hpp"
 #include "prerequisites.hpp"
 #include "skip.hpp"
@@ -30,7 +33,7 @@ const fs::path& scratch()
 
 int ggx(const std::string& args)
 {
-    return ggxtest::run_ggx(args, scratch() / "stderr.txt").status;
+    return ggxtest::ggx_on_api(args).status;
 }
 
 nlohmann::json summary(const fs::path& prefix)
@@ -44,6 +47,8 @@ nlohmann::json summary(const fs::path& prefix)
 TEST_CASE("histogram: every method passes its own chi-square test at the default configuration")
 {
     const ggxtest::ScratchFolder case_folder("hist");
+    if (!ggxtest::cli_api_present())
+        return;
     for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
         CAPTURE(method);
         fs::path prefix = scratch() / method;
@@ -51,6 +56,7 @@ TEST_CASE("histogram: every method passes its own chi-square test at the default
                   prefix.string()) == 0);
         nlohmann::json s = summary(prefix);
         CHECK(s["count"] == 1000000);
+        CHECK(s["api"] == ggxtest::cli_api().label);
         CHECK(s["dof"].get<int>() > 100);
         std::ifstream npy(prefix.string() + ".observed.npy", std::ios::binary);
         std::string head(128, '\0');
@@ -63,6 +69,8 @@ TEST_CASE("histogram: every method passes its own chi-square test at the default
 TEST_CASE("histogram of m: every method passes against its pdf of m, and NDF normals fail the VNDF's")
 {
     const ggxtest::ScratchFolder case_folder("hist");
+    if (!ggxtest::cli_api_present())
+        return;
     for (const char* method : {"ndf", "heitz", "heitz2017", "caps", "caps-iso", "bounded"}) {
         CAPTURE(method);
         fs::path prefix = scratch() / (std::string("m-") + method);
@@ -77,6 +85,8 @@ TEST_CASE("histogram of m: every method passes against its pdf of m, and NDF nor
 TEST_CASE("histogram: a wrong pdf is rejected and --check turns it into exit status 1")
 {
     const ggxtest::ScratchFolder case_folder("hist");
+    if (!ggxtest::cli_api_present())
+        return;
     fs::path prefix = scratch() / "wrong";
     CHECK(ggx("histogram --method ndf --against caps -n 1e6 --check 0.01 --no-png --out " + prefix.string()) == 1);
     CHECK(summary(prefix)["p_value"].get<double>() < 1e-6);
@@ -85,7 +95,8 @@ TEST_CASE("histogram: a wrong pdf is rejected and --check turns it into exit sta
 TEST_CASE("histogram: the figure decodes as a 1280 x 400 PNG")
 {
     const ggxtest::ScratchFolder case_folder("hist");
-    if (!ggxtest::skip_unless(ggxtest::plotting_python_present(), ggxtest::plotting_python_reason))
+    if (!ggxtest::cli_api_present() ||
+        !ggxtest::skip_unless(ggxtest::plotting_python_present(), ggxtest::plotting_python_reason))
         return;
     fs::path prefix = scratch() / "figure";
     REQUIRE(ggx("histogram --method bounded --alpha 0.2,0.5 --theta 70 -n 2e5 --out " + prefix.string()) == 0);
@@ -101,10 +112,11 @@ TEST_CASE("histogram: the figure decodes as a 1280 x 400 PNG")
 TEST_CASE("histogram and sample of a rough dielectric (--eta): both lobes pass, bounded and eta 1 are refused")
 {
     const ggxtest::ScratchFolder case_folder("hist");
+    if (!ggxtest::cli_api_present())
+        return;
     const fs::path prefix = scratch() / "glass";
-    const ggxtest::Run glass = ggxtest::run_ggx("histogram --method heitz --eta 1.5 --theta 130 -n 4e5 --check 0.001 "
-                                                "--no-png --out " + prefix.string(),
-                                                scratch() / "stderr.txt");
+    const ggxtest::Run glass = ggxtest::ggx_on_api("histogram --method heitz --eta 1.5 --theta 130 -n 4e5 --check 0.001 "
+                                                   "--no-png --out " + prefix.string());
     CAPTURE(glass.err);
     CHECK(glass.status == 0);
     nlohmann::json s = summary(prefix);
@@ -117,9 +129,8 @@ TEST_CASE("histogram and sample of a rough dielectric (--eta): both lobes pass, 
     for (const char* bad : {"--eta 1", "--eta -1.5", "--eta nan", "--eta x", "--method bounded --eta 1.5"}) {
         CAPTURE(bad);
         const std::string method = std::string(bad).find("--method") == std::string::npos ? "--method caps " : "";
-        const ggxtest::Run run = ggxtest::run_ggx("sample " + method + bad + " -n 10 --out " +
-                                                      (scratch() / "bad.npy").string(),
-                                                  scratch() / "stderr.txt");
+        const ggxtest::Run run = ggxtest::ggx_on_api("sample " + method + bad + " -n 10 --out " +
+                                                     (scratch() / "bad.npy").string());
         CHECK(run.status == 2);
         CHECK(run.err.find("--eta") != std::string::npos);
         CHECK_FALSE(fs::exists(scratch() / "bad.npy"));

@@ -7,9 +7,6 @@
 //     pdf_o relative 99% <= 1e-4), the uniforms bit for bit, and a sidecar
 //     that names the API and the device;
 //   - shards on Vulkan join to the whole job bit for bit;
-//   - `ggx histogram --api vulkan --check` passes, GLSL and HLSL, conductor and
-//     dielectric, and its summary names the API; negative control: the same
-//     counts tested --against another method's pdf fail (exit 1);
 //   - `ggx bench --api opencl,vulkan` (GLSL and HLSL) times the write and
 //     furnace jobs on both APIs in one run, on philox and Sobol, each row with
 //     its api, and the ratio table; `--api vulkan` alone times Vulkan alone,
@@ -25,6 +22,8 @@
 //     --sampler with Vulkan, an unknown API;
 //   - no Vulkan driver (VK_ICD_FILENAMES naming nothing): exit 1 and a message
 //     that says what to install.
+// `ggx histogram` and `ggx --sampler` on Vulkan are test_histogram_cli's and
+// test_user_sampler_cli's, written once for both APIs (cli_api.hpp).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -140,26 +139,6 @@ TEST_CASE("shards on Vulkan join to the whole job bit for bit")
         joined.insert(joined.end(), a.data.begin(), a.data.end());
     }
     CHECK(joined == whole.data);
-}
-
-TEST_CASE("ggx histogram --api vulkan --check passes, and fails against another method's pdf")
-{
-    const ggxtest::ScratchFolder scratch("vulkan-cli");
-    const std::string common = "histogram --no-png -n 4e5 --check 0.001 --alpha 0.3,0.5 --theta 55 ";
-    for (const std::string api : {"--api vulkan", "--api vulkan --shader-language hlsl"})
-        for (const std::string method : {"--method bounded", "--method caps --eta 1.5"}) {
-            const ggxtest::Run run =
-                ggxtest::run_ggx(common + api + " " + method + " --out " + (scratch / "h").string(), scratch / "err.txt");
-            CAPTURE(api + " " + method);
-            CAPTURE(run.err);
-            CHECK(run.status == 0);
-            const nlohmann::json summary = nlohmann::json::parse(ggxtest::read_all(scratch / "h.json"));
-            CHECK(summary["api"].get<std::string>().rfind("vulkan", 0) == 0);
-        }
-    const ggxtest::Run wrong = ggxtest::run_ggx(common + "--api vulkan --method ndf --against caps --out " +
-                                                    (scratch / "w").string(), scratch / "err.txt");
-    CHECK(wrong.status == 1);
-    CHECK(wrong.err.find("below --check") != std::string::npos);
 }
 
 TEST_CASE("ggx bench --api opencl,vulkan times each job on both APIs in one run, with their ratio; --api vulkan "

@@ -62,11 +62,8 @@ void plan_user_samplers(const BenchCommand& cmd, const std::vector<ApiChoice>& a
         BenchUserSampler user{loaded};
         const std::size_t k = plan.users.size();
         if (k < cmd.reproduces.size() && cmd.reproduces[k] != "none") {
-            try {
-                user.method = ggxcl::parse_method(cmd.reproduces[k]);
-            } catch (const ggxcl::InvalidArgument&) {
-                throw UsageError("--reproduces", cmd.reproduces[k], "none or one of " + ggxcl::method_list());
-            }
+            user.method = parsed_option("--reproduces", cmd.reproduces[k], "none or one of " + ggxcl::method_list(),
+                                        ggxcl::parse_method);
             user.reproduces = true;
         }
         plan.users.push_back(user);
@@ -100,11 +97,7 @@ BenchPlan plan_bench(const BenchCommand& cmd, const std::vector<ApiChoice>& apis
     in_option_terms({{"alpha", {"--alpha", cmd.alpha}}}, [&] { ggxcl::validate(plan.base); });
     plan.base.view = ggxcl::view_from_angles(plan.settings.theta, 0.0);
     plan.settings.eta = parse_eta("--eta", cmd.eta);
-    try {
-        plan.transport = ggxcl::parse_transport(cmd.transport);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--transport", cmd.transport, "one of radiance, importance");
-    }
+    plan.transport = parse_transport_option("--transport", cmd.transport);
     plan.settings.transport = std::string(ggxcl::transport_name(plan.transport));
     plan_user_samplers(cmd, apis, plan);
     return plan;

@@ -388,28 +388,25 @@ Prepare add_bench_command(CLI::App& app)
     auto s = std::make_shared<BenchCommand>();
     CLI::App* cmd = app.add_subcommand("bench", "Speed against accuracy of every method and precision mode on a device, "
                                                 "beside the native C++ baseline");
-    cmd->add_option("--alpha", s->alpha, "GGX roughness of the speed runs (one value)")->capture_default_str();
-    cmd->add_option("--theta", s->theta, "view polar angle of the speed runs, degrees, 0..89")->capture_default_str();
+    cmd->add_option("--alpha", s->alpha, "GGX roughness of the speed runs (one value)");
+    cmd->add_option("--theta", s->theta, "view polar angle of the speed runs, degrees, 0..89");
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`; vulkan:NAME for Vulkan)");
-    cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
-    cmd->add_option("--precisions", s->precisions, "comma-separated precision modes")->capture_default_str();
+    cmd->add_option("--methods", s->methods, "comma-separated methods, or all");
+    cmd->add_option("--precisions", s->precisions, "comma-separated precision modes");
     cmd->add_option("--sequences", s->sequences, "sequences of uniforms timed in precise mode (write and furnace "
-                                                 "jobs): philox (always), sobol")->capture_default_str();
+                                                 "jobs): philox (always), sobol");
     cmd->add_option("--jobs", s->jobs, "comma-separated jobs: write (m + pdf_m), furnace (fused estimator), "
-                                       "world (world-space o), per-sample (a view and alpha per sample read)")
-        ->capture_default_str();
-    cmd->add_option("-n,--count", s->count, "samples per timed device run")->capture_default_str();
-    cmd->add_option("--native-count", s->native_count, "samples per timed native run")->capture_default_str();
-    cmd->add_option("--repeats", s->repeats, "timed runs per row, 5..101 (median reported)")->capture_default_str();
-    cmd->add_option("--threads", s->threads, "threads of the native baseline")->capture_default_str();
-    cmd->add_option("--scene", s->scene, "size of the albedo table (views x roughnesses)")->capture_default_str();
-    cmd->add_option("--cell-samples", s->cell_samples, "samples per cell of the albedo table")->capture_default_str();
-    cmd->add_option("--budget-ms", s->budget_ms, "time budget of the whole table for the RMSE column")->capture_default_str();
+                                       "world (world-space o), per-sample (a view and alpha per sample read)");
+    cmd->add_option("-n,--count", s->count, "samples per timed device run");
+    cmd->add_option("--native-count", s->native_count, "samples per timed native run");
+    cmd->add_option("--repeats", s->repeats, "timed runs per row, 5..101 (median reported)");
+    cmd->add_option("--threads", s->threads, "threads of the native baseline");
+    cmd->add_option("--scene", s->scene, "size of the albedo table (views x roughnesses)");
+    cmd->add_option("--cell-samples", s->cell_samples, "samples per cell of the albedo table");
+    cmd->add_option("--budget-ms", s->budget_ms, "time budget of the whole table for the RMSE column");
     cmd->add_option("--eta", s->eta, "a rough dielectric's relative index (e.g. 1.5): its write (o + pdf_o) and "
-                                     "furnace rows beside the conductor's, every method but bounded; 0: none")
-        ->capture_default_str();
-    cmd->add_option("--transport", s->transport, "the dielectric rows' transport: radiance or importance")
-        ->capture_default_str();
+                                     "furnace rows beside the conductor's, every method but bounded; 0: none");
+    cmd->add_option("--transport", s->transport, "the dielectric rows' transport: radiance or importance");
     s->user.add_to(*cmd);
     cmd->add_option("--reproduces", s->reproduces, "the k-th --sampler reproduces this method's map on the same "
                                                     "uniforms (or none): its numerical error against that "

@@ -1,7 +1,7 @@
 // api_options.cpp - --api, --shader-language and the vulkan: prefix.
 #include "api_options.hpp"
 
-#include "cli_values.hpp"
+#include "library_errors.hpp"
 
 namespace ggxapp {
 
@@ -44,11 +44,9 @@ void ApiOptions::add_to(CLI::App& cmd)
 {
     api_option = cmd.add_option("--api", api,
                                 "opencl or vulkan: the API the samplers run on (vulkan: compute shaders compiled "
-                                "from the same headers; a --device of vulkan:NAME implies it)")
-                     ->capture_default_str();
+                                "from the same headers; a --device of vulkan:NAME implies it)");
     language_option = cmd.add_option("--shader-language", shader_language,
-                                     "glsl or hlsl: the language of the Vulkan shaders (with --api vulkan)")
-                          ->capture_default_str();
+                                     "glsl or hlsl: the language of the Vulkan shaders (with --api vulkan)");
 }
 
 namespace {
@@ -67,12 +65,7 @@ const std::string* first_shader_file(const std::vector<std::string>& files)
 ApiChoice ApiOptions::choose(const std::string& device, const std::vector<std::string>& sampler_files) const
 {
     ApiChoice choice;
-    ggxcl::Api named = ggxcl::Api::opencl;
-    try {
-        named = ggxcl::parse_api(api);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--api", api, "opencl or vulkan");
-    }
+    const ggxcl::Api named = parsed_option("--api", api, "opencl or vulkan", ggxcl::parse_api);
     const bool api_given = api_option && api_option->count() > 0;
     const bool language_given = language_option && language_option->count() > 0;
     const bool prefixed = device.rfind(vulkan_prefix, 0) == 0;
@@ -85,11 +78,7 @@ ApiChoice ApiOptions::choose(const std::string& device, const std::vector<std::s
     const bool vulkan = named == ggxcl::Api::vulkan || prefixed || shader_file;
     choice.api = vulkan ? ggxcl::Api::vulkan : ggxcl::Api::opencl;
     choice.selector = prefixed ? device.substr(vulkan_prefix.size()) : device;
-    try {
-        choice.language = ggxcl::parse_shader_language(shader_language);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--shader-language", shader_language, "glsl or hlsl");
-    }
+    choice.language = parsed_option("--shader-language", shader_language, "glsl or hlsl", ggxcl::parse_shader_language);
     if (!vulkan && language_given)
         throw UsageError("--shader-language", shader_language, "nothing without --api vulkan (OpenCL runs OpenCL C)");
     for (const std::string& file : sampler_files) {

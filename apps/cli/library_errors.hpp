@@ -11,6 +11,8 @@
 #include <utility>
 
 #include <ggxcl/error.hpp>
+#include <ggxcl/method.hpp>
+#include <ggxcl/params.hpp>
 
 #include "cli_values.hpp"
 
@@ -37,6 +39,33 @@ auto in_option_terms(const OptionsOfParameters& options, Build&& build) -> declt
     } catch (const ggxcl::InvalidArgument& error) {
         rethrow_in_option_terms(error, options);
     }
+}
+
+// parse(text), a library parser of names, with its refusal as a UsageError naming `flag`, the
+// text and what `allowed` says.
+template <class Parse>
+auto parsed_option(const std::string& flag, const std::string& text, const std::string& allowed, Parse parse)
+    -> decltype(parse(text))
+{
+    try {
+        return parse(text);
+    } catch (const ggxcl::InvalidArgument&) {
+        throw UsageError(flag, text, allowed);
+    }
+}
+
+// The library's methods, precision modes and transports named by `flag`.
+inline ggxcl::Method parse_method_option(const std::string& flag, const std::string& text)
+{
+    return parsed_option(flag, text, "one of " + ggxcl::method_list(), ggxcl::parse_method);
+}
+inline ggxcl::Precision parse_precision_option(const std::string& flag, const std::string& text)
+{
+    return parsed_option(flag, text, "one of " + ggxcl::precision_list(), ggxcl::parse_precision);
+}
+inline ggxcl::Transport parse_transport_option(const std::string& flag, const std::string& text)
+{
+    return parsed_option(flag, text, "one of radiance, importance", ggxcl::parse_transport);
 }
 
 } // namespace ggxapp

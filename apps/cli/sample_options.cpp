@@ -10,30 +10,23 @@ namespace ggxapp {
 
 void SampleOptions::add_view_options(CLI::App& cmd)
 {
-    cmd.add_option("--alpha", alpha, std::string("GGX roughness AX or AX,AY, each ") + ggxcl::alpha_range)
-        ->capture_default_str();
-    cmd.add_option("--theta", theta, "view polar angle in degrees, 0..180 (above 90: below the horizon)")
-        ->capture_default_str();
-    cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360")->capture_default_str();
-    cmd.add_option("--seed", seed, std::string("seed of the stream of uniforms, ") + ggxcl::seed_range)
-        ->capture_default_str();
+    cmd.add_option("--alpha", alpha, std::string("GGX roughness AX or AX,AY, each ") + ggxcl::alpha_range);
+    cmd.add_option("--theta", theta, "view polar angle in degrees, 0..180 (above 90: below the horizon)");
+    cmd.add_option("--phi", phi, "view azimuth in degrees, -360..360");
+    cmd.add_option("--seed", seed, std::string("seed of the stream of uniforms, ") + ggxcl::seed_range);
     cmd.add_option("--sequence", sequence, "where the uniforms come from: philox (independent) or sobol "
-                                           "(Owen-scrambled Sobol points, keyed by --seed)")
-        ->capture_default_str();
+                                           "(Owen-scrambled Sobol points, keyed by --seed)");
     cmd.add_option("--precision", precision, "precise (sincos within 0.86 ulp; division and sqrt correctly rounded "
                                              "where the device reports CL_FP_CORRECTLY_ROUNDED_DIVIDE_SQRT) or "
-                                             "relaxed (-cl-fast-relaxed-math)")
-        ->capture_default_str();
+                                             "relaxed (-cl-fast-relaxed-math)");
     cmd.add_option("--device", device,
                    "device index or name part (see `ggx devices`; vulkan:NAME where the command takes --api); default "
                    "GGXCL_DEVICE, else the first");
     cmd.add_option("--eta", eta, "a rough dielectric: index below the surface over index above (e.g. 1.5), each "
                                  "sample reflected or refracted with the exact Fresnel; 0: a conductor, Fresnel 1 "
-                                 "(the methods with a dielectric sampler: `ggx methods`)")
-        ->capture_default_str();
+                                 "(the methods with a dielectric sampler: `ggx methods`)");
     cmd.add_option("--transport", transport, "with --eta: radiance (transmission divided by eta^2, for path "
-                                             "tracing) or importance")
-        ->capture_default_str();
+                                             "tracing) or importance");
 }
 
 void SampleOptions::add_method_options(CLI::App& cmd)
@@ -132,33 +125,21 @@ std::vector<std::string> method_names()
 
 ggxcl::Method SampleOptions::parsed_method() const
 {
-    try {
-        return ggxcl::parse_method(method);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--method", method, "one of " + ggxcl::method_list());
-    }
+    return parse_method_option("--method", method);
 }
 
 std::uint64_t SampleOptions::parsed_seed() const { return parse_whole("--seed", seed, 0, ggxcl::max_seed); }
 
 ggxcl::Sequence SampleOptions::parsed_sequence() const
 {
-    try {
-        return ggxcl::parse_sequence(sequence);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--sequence", sequence, "one of philox, sobol");
-    }
+    return parsed_option("--sequence", sequence, "one of philox, sobol", ggxcl::parse_sequence);
 }
 
 float SampleOptions::parsed_eta() const { return parse_eta("--eta", eta); }
 
 ggxcl::Transport SampleOptions::parsed_transport() const
 {
-    try {
-        return ggxcl::parse_transport(transport);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--transport", transport, "one of radiance, importance");
-    }
+    return parse_transport_option("--transport", transport);
 }
 
 ggxcl::SampleRange SampleOptions::parsed_range(const std::string& first, const std::string& count) const
@@ -195,11 +176,7 @@ ggxcl::SampleParams SampleOptions::params_for(ggxcl::Method m, std::shared_ptr<c
     const std::array<float, 2> a = parse_alpha("--alpha", alpha);
     p.alpha_x = a[0];
     p.alpha_y = a[1];
-    try {
-        p.precision = ggxcl::parse_precision(precision);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--precision", precision, "one of " + ggxcl::precision_list());
-    }
+    p.precision = parse_precision_option("--precision", precision);
     p.sequence = parsed_sequence();
     p.eta = parsed_eta();
     p.transport = parsed_transport();

@@ -93,21 +93,20 @@ Prepare add_converge_command(CLI::App& app)
     auto s = std::make_shared<ConvergeCommand>();
     CLI::App* cmd = app.add_subcommand("converge", "Error against sample count of every method's estimates with "
                                                    "independent (philox) and Sobol uniforms");
-    cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
+    cmd->add_option("--methods", s->methods, "comma-separated methods, or all");
     s->user.add_to(*cmd);
-    cmd->add_option("--sequences", s->sequences, "comma-separated sequences: philox, sobol")->capture_default_str();
+    cmd->add_option("--sequences", s->sequences, "comma-separated sequences: philox, sobol");
     cmd->add_option("--integrands", s->integrands, "comma-separated: albedo (L = 1), lobe (max(0, o.l)^16 about the "
-                                                   "mirror direction), disk (a 10-degree disk light)")->capture_default_str();
-    cmd->add_option("--alphas", s->alphas, "comma-separated roughnesses, 0.01..2")->capture_default_str();
-    cmd->add_option("--thetas", s->thetas, "comma-separated view angles in degrees, 0..89")->capture_default_str();
-    cmd->add_option("--min-n", s->min_n, "smallest sample count, a power of two")->capture_default_str();
-    cmd->add_option("--max-n", s->max_n, "largest sample count, a power of two up to 2^24")->capture_default_str();
-    cmd->add_option("--randomizations", s->randomizations, "independent streams (seeds) per point, 4..4096")
-        ->capture_default_str();
-    cmd->add_option("--seed", s->seed, "seed of the first stream")->capture_default_str();
-    cmd->add_option("--precision", s->precision, "precise or relaxed")->capture_default_str();
+                                                   "mirror direction), disk (a 10-degree disk light)");
+    cmd->add_option("--alphas", s->alphas, "comma-separated roughnesses, 0.01..2");
+    cmd->add_option("--thetas", s->thetas, "comma-separated view angles in degrees, 0..89");
+    cmd->add_option("--min-n", s->min_n, "smallest sample count, a power of two");
+    cmd->add_option("--max-n", s->max_n, "largest sample count, a power of two up to 2^24");
+    cmd->add_option("--randomizations", s->randomizations, "independent streams (seeds) per point, 4..4096");
+    cmd->add_option("--seed", s->seed, "seed of the first stream");
+    cmd->add_option("--precision", s->precision, "precise or relaxed");
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
-    cmd->add_option("--speed-n", s->speed_n, "samples per timed launch of the speed runs")->capture_default_str();
+    cmd->add_option("--speed-n", s->speed_n, "samples per timed launch of the speed runs");
     cmd->add_flag("--no-speed", s->no_speed, "skip the speed runs (and the chart at equal time)");
     cmd->add_option("--csv", s->csv, "write every point of every curve to this CSV file");
     cmd->add_option("--charts", s->charts, "write PREFIX-<integrand>.png and PREFIX-time.png");

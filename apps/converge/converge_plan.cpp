@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "cli_values.hpp"
+#include "library_errors.hpp"
 
 namespace ggxapp {
 
@@ -120,11 +120,7 @@ ConvergePlan plan_convergence(const ConvergeCommand& cmd, const ApiChoice& api)
     plan.max_exponent = power_of_two("--max-n", cmd.max_n, plan.min_exponent + 2, 24);
     plan.randomizations = int(parse_whole("--randomizations", cmd.randomizations, 4, 4096));
     plan.seed = parse_whole("--seed", cmd.seed, 0, ggxcl::max_seed - std::uint64_t(plan.randomizations) + 1);
-    try {
-        plan.precision = ggxcl::parse_precision(cmd.precision);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--precision", cmd.precision, "one of " + ggxcl::precision_list());
-    }
+    plan.precision = parse_precision_option("--precision", cmd.precision);
     plan.speed_count = cmd.no_speed ? 0 : std::uint32_t(1) << power_of_two("--speed-n", cmd.speed_n, 10, 26);
     return plan;
 }

@@ -220,14 +220,12 @@ Prepare add_demo_command(CLI::App& app)
     auto state = std::make_shared<DemoCommand>();
     CLI::App* cmd = app.add_subcommand("demo", "Samples, histograms and a summary page for every method");
     state->options.add_view_options(*cmd);
-    cmd->add_option("-n,--count", state->count, "samples per method in the clouds")->capture_default_str();
-    cmd->add_option("--histogram-n", state->histogram_count, "samples per method in the histograms")
-        ->capture_default_str();
-    cmd->add_option("--page-points", state->cloud_points, "samples per method in index.html's 3-D views (at most -n)")
-        ->capture_default_str();
+    cmd->add_option("-n,--count", state->count, "samples per method in the clouds");
+    cmd->add_option("--histogram-n", state->histogram_count, "samples per method in the histograms");
+    cmd->add_option("--page-points", state->cloud_points, "samples per method in index.html's 3-D views (at most -n)");
     cmd->add_flag("--no-png", state->no_png, "skip the figures (no Python needed)");
     cmd->add_flag("--no-html", state->no_html, "skip index.html (no three.js needed)");
-    cmd->add_option("--out", state->out, "output folder")->capture_default_str();
+    cmd->add_option("--out", state->out, "output folder");
     state->user.add_to(*cmd);
     state->api.add_to(*cmd);
     return [cmd, state]() -> std::optional<Work> {

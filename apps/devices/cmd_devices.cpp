@@ -76,7 +76,7 @@ Prepare add_devices_command(CLI::App& app)
 {
     CLI::App* cmd = app.add_subcommand("devices", "List OpenCL and Vulkan devices and their selectors");
     auto api = std::make_shared<std::string>("all");
-    cmd->add_option("--api", *api, "all, opencl or vulkan: the devices of which API")->capture_default_str();
+    cmd->add_option("--api", *api, "all, opencl or vulkan: the devices of which API");
     return [cmd, api]() -> std::optional<Work> {
         if (!*cmd)
             return std::nullopt;

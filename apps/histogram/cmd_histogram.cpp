@@ -30,13 +30,8 @@ struct HistogramCommand {
         if (job.params.method == ggxcl::Method::user && !against.empty())
             throw UsageError("--against", against, "no --against with --sampler: its own pdf and the distribution "
                                                    "it claims are both tested");
-        if (!against.empty()) {
-            try {
-                job.against = ggxcl::parse_method(against);
-            } catch (const ggxcl::InvalidArgument&) {
-                throw UsageError("--against", against, "one of " + ggxcl::method_list());
-            }
-        }
+        if (!against.empty())
+            job.against = parse_method_option("--against", against);
         job.theta_degrees = options.parsed_theta();
         job.phi_degrees = options.parsed_phi();
         job.range = options.parsed_range(first, count);
@@ -89,13 +84,12 @@ Prepare add_histogram_command(CLI::App& app)
     state->options.add_method_options(*cmd);
     state->options.add_view_options(*cmd);
     state->api_options.add_to(*cmd);
-    cmd->add_option("-n,--count", state->count, "number of samples: 1000, 1e9 or 2^30")->capture_default_str();
-    cmd->add_option("--first", state->first, "index of the first sample")->capture_default_str();
-    cmd->add_option("--bins-z", state->bins_z, "bins over cos theta in [-1, 1]")->capture_default_str();
-    cmd->add_option("--bins-phi", state->bins_phi, "bins over phi in [0, 360)")->capture_default_str();
+    cmd->add_option("-n,--count", state->count, "number of samples: 1000, 1e9 or 2^30");
+    cmd->add_option("--first", state->first, "index of the first sample");
+    cmd->add_option("--bins-z", state->bins_z, "bins over cos theta in [-1, 1]");
+    cmd->add_option("--bins-phi", state->bins_phi, "bins over phi in [0, 360)");
     cmd->add_option("--of", state->of, "what to bin: o (reflected direction) or m (microfacet normal; with --sampler, its density "
-                    "4 |i.m| pdf_o)")
-        ->capture_default_str();
+                    "4 |i.m| pdf_o)");
     cmd->add_option("--against", state->against, "test against this method's pdf instead (a negative control)");
     cmd->add_option("--check", state->check, "exit with status 1 when p < ALPHA (0 < ALPHA < 1)");
     cmd->add_flag("--no-png", state->no_png, "skip the figure (no Python needed)");

@@ -13,14 +13,6 @@ namespace ggxapp {
 
 namespace {
 
-double total_of(const std::vector<double>& v)
-{
-    double t = 0.0;
-    for (double x : v)
-        t += x;
-    return t;
-}
-
 double discarded_fraction(const ggxcl::Histogram& counts)
 {
     const double n = double(counts.total());

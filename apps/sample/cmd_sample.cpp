@@ -100,11 +100,8 @@ struct SampleCommand {
         job.params = options.parsed_params(api);
         job.theta_degrees = options.parsed_theta();
         job.phi_degrees = options.parsed_phi();
-        try {
-            job.fields = ggxcl::parse_field_list(fields);
-        } catch (const ggxcl::InvalidArgument&) {
-            throw UsageError("--fields", fields, "a comma-separated list of distinct " + ggxcl::field_list());
-        }
+        job.fields = parsed_option("--fields", fields, "a comma-separated list of distinct " + ggxcl::field_list(),
+                                   ggxcl::parse_field_list);
         if (!out.empty())
             job.format = format_of("--out", out);
         if (!uniforms.empty())
@@ -181,8 +178,7 @@ Prepare add_sample_command(CLI::App& app)
     cmd->add_option("-n,--count", state->count,
                     "number of samples: 1000, 1e6 or 2^24 (default with --uniforms: its rows); with --shard, of "
                     "the whole job");
-    cmd->add_option("--first", state->first, "index of the first sample (with --shard, of the whole job)")
-        ->capture_default_str();
+    cmd->add_option("--first", state->first, "index of the first sample (with --shard, of the whole job)");
     CLI::Option* shard = cmd->add_option(
         "--shard", state->shard,
         "write only shard R of S of the job: R/S (0 <= R < S; samples [N*R/S, N*(R+1)/S) from --first, and those "
@@ -190,8 +186,7 @@ Prepare add_sample_command(CLI::App& app)
         "SLURM_ARRAY_TASK_ID/COUNT less _MIN, SLURM_PROCID/NTASKS); --out must contain {shard}, replaced by R as "
         "0007; a shard may be empty (S > N); join the shards with `ggx merge`");
     CLI::Option* fields = cmd->add_option("--fields", state->fields,
-                                          "columns, in order, of m,o,pdf_m,pdf_o,weight,u (.ply: o or m)")
-                              ->capture_default_str();
+                                          "columns, in order, of m,o,pdf_m,pdf_o,weight,u (.ply: o or m)");
     cmd->add_option("--out", state->out, "output .npy, .csv or .ply (a .json sidecar goes beside it; with "
                                          "--shard it contains {shard}); required");
     cmd->add_option("--devices", state->devices, "split the job across these devices: selectors separated by commas");

@@ -17,18 +17,6 @@ namespace ggxapp {
 
 namespace {
 
-std::vector<std::string> split(const std::string& text, char separator)
-{
-    std::vector<std::string> parts;
-    std::stringstream stream(text);
-    std::string part;
-    while (std::getline(stream, part, separator))
-        parts.push_back(part);
-    if (!text.empty() && text.back() == separator)
-        parts.push_back("");
-    return parts;
-}
-
 // The whole of `text` as a finite double, else nothing.
 bool to_double(const std::string& text, double& value)
 {
@@ -45,10 +33,22 @@ bool to_double(const std::string& text, double& value)
 
 } // namespace
 
+std::vector<std::string> split_list(const std::string& text, char separator)
+{
+    std::vector<std::string> parts;
+    std::stringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, separator))
+        parts.push_back(part);
+    if (!text.empty() && text.back() == separator)
+        parts.push_back("");
+    return parts;
+}
+
 std::array<float, 2> parse_alpha(const std::string& flag, const std::string& text)
 {
     const std::string allowed = std::string("one or two numbers, as AX or AX,AY, each ") + ggxcl::alpha_range;
-    std::vector<std::string> parts = split(text, ',');
+    std::vector<std::string> parts = split_list(text, ',');
     if (parts.empty() || parts.size() > 2)
         throw UsageError(flag, text, allowed);
     double values[2];
@@ -69,7 +69,7 @@ double parse_number(const std::string& flag, const std::string& text)
 std::array<float, 3> parse_vec3(const std::string& flag, const std::string& text)
 {
     const std::string allowed = "three finite numbers X,Y,Z, not all 0 (a direction)";
-    std::vector<std::string> parts = split(text, ',');
+    std::vector<std::string> parts = split_list(text, ',');
     double v[3];
     if (parts.size() != 3 || !to_double(parts[0], v[0]) || !to_double(parts[1], v[1]) || !to_double(parts[2], v[2]) ||
         (v[0] == 0 && v[1] == 0 && v[2] == 0))
@@ -130,17 +130,13 @@ std::vector<std::string> parse_name_list(const std::string& flag, const std::str
 {
     if (text == "all")
         return allowed;
-    std::vector<std::string> names;
-    std::stringstream in(text);
-    std::string joined, name;
+    std::string joined;
     for (const std::string& a : allowed)
         joined += (joined.empty() ? "" : ", ") + a;
-    bool empty_item = text.empty() || text.front() == ',' || text.back() == ',' || text.find(",,") != std::string::npos;
-    while (!empty_item && std::getline(in, name, ','))
+    const std::vector<std::string> names = split_list(text);
+    for (const std::string& name : names)
         if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
             throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
-        else
-            names.push_back(name);
     if (names.empty())
         throw UsageError(flag, text, "a comma-separated list of " + joined + " (or all)");
     return names;

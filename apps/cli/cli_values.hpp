@@ -40,6 +40,9 @@ void check_writable_folder(const std::string& flag, const std::string& path);
 
 double parse_angle(const std::string& flag, const std::string& text, double low, double high);
 
+// The items of `text` between separators, an empty one wherever two meet or one ends the text.
+std::vector<std::string> split_list(const std::string& text, char separator = ',');
+
 // Comma-separated names, each one of `allowed` ("all": every one, in order);
 // empty items are refused.
 std::vector<std::string> parse_name_list(const std::string& flag, const std::string& text,

@@ -12,16 +12,6 @@ namespace {
 
 constexpr double degrees = 3.14159265358979323846 / 180.0;
 
-std::vector<std::string> split(const std::string& text)
-{
-    std::vector<std::string> items;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ','))
-        items.push_back(item);
-    return items;
-}
-
 // A power of two 2^k from "2^k" or a count, for k in [low, high].
 int power_of_two(const std::string& flag, const std::string& text, int low, int high)
 {
@@ -32,14 +22,6 @@ int power_of_two(const std::string& flag, const std::string& text, int low, int 
     if ((std::uint64_t(1) << k) != n || k < low || k > high)
         throw UsageError(flag, text, "a power of two from 2^" + std::to_string(low) + " to 2^" + std::to_string(high));
     return k;
-}
-
-std::vector<std::string> names_of_methods()
-{
-    std::vector<std::string> names;
-    for (ggxcl::Method m : ggxcl::all_methods)
-        names.emplace_back(ggxcl::method_name(m));
-    return names;
 }
 
 } // namespace
@@ -95,7 +77,7 @@ ConvergePlan plan_convergence(const ConvergeCommand& cmd, const ApiChoice& api)
 {
     ConvergePlan plan;
     std::vector<ggxcl::Method> methods;
-    for (const std::string& name : parse_name_list("--methods", cmd.methods, names_of_methods()))
+    for (const std::string& name : parse_name_list("--methods", cmd.methods, method_names()))
         methods.push_back(ggxcl::parse_method(name));
     plan.methods = sampler_choices(methods, cmd.user.load(api));
     for (const std::string& name : parse_name_list("--sequences", cmd.sequences, {"philox", "sobol"}))
@@ -103,13 +85,13 @@ ConvergePlan plan_convergence(const ConvergeCommand& cmd, const ApiChoice& api)
     for (const std::string& name : parse_name_list("--integrands", cmd.integrands, {"albedo", "lobe", "disk"}))
         plan.integrands.push_back(integrand_named(name));
     std::vector<double> alphas, thetas;
-    for (const std::string& a : split(cmd.alphas)) {
+    for (const std::string& a : split_list(cmd.alphas)) {
         double alpha = parse_alpha("--alphas", a)[0];
         if (a.find(',') != std::string::npos || !(alpha >= 0.01 && alpha <= 2.0))
             throw UsageError("--alphas", cmd.alphas, "a comma-separated list of roughnesses in [0.01, 2]");
         alphas.push_back(alpha);
     }
-    for (const std::string& t : split(cmd.thetas))
+    for (const std::string& t : split_list(cmd.thetas))
         thetas.push_back(parse_angle("--thetas", t, 0.0, 89.0));
     if (alphas.empty() || thetas.empty())
         throw UsageError(alphas.empty() ? "--alphas" : "--thetas", "", "at least one value");

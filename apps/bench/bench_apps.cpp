@@ -1,12 +1,11 @@
-// bench_apps.cpp - whole-process timings of `ggx sample` and `ggx histogram`.
+// bench_apps.cpp - whole-process timings of `ggx`: its start-up, `ggx sample` and `ggx histogram`.
 #include "bench_apps.hpp"
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <unistd.h>
-
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -19,17 +18,24 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Wall-clock seconds of one run of `ggx ARGUMENTS` on `device`, its environment changed by `settings`.
+double timed_ggx(std::vector<std::string> arguments, const DeviceArguments& device,
+                 const std::vector<std::string>& settings = {})
+{
+    arguments.insert(arguments.end(), device.begin(), device.end());
+    const auto start = std::chrono::steady_clock::now();
+    const ChildOutput child = run_child("/proc/self/exe", arguments, 0, settings);
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    if (!exited_ok(child.status))
+        throw std::runtime_error(command_text("ggx", arguments) + " " + describe_exit(child.status) + ": " + child.err);
+    return elapsed.count();
+}
+
 // Nanoseconds per sample of one run of `ggx ARGUMENTS` (with -n count).
 double ns_per_sample(std::vector<std::string> arguments, const DeviceArguments& device, std::uint32_t count)
 {
     arguments.insert(arguments.end(), {"-n", std::to_string(count)});
-    arguments.insert(arguments.end(), device.begin(), device.end());
-    auto start = std::chrono::steady_clock::now();
-    ChildOutput child = run_child("/proc/self/exe", arguments);
-    std::chrono::duration<double, std::nano> elapsed = std::chrono::steady_clock::now() - start;
-    if (!exited_ok(child.status))
-        throw std::runtime_error(command_text("ggx", arguments) + " " + describe_exit(child.status) + ": " + child.err);
-    return elapsed.count() / count;
+    return timed_ggx(arguments, device) * 1e9 / count;
 }
 
 // Every run writes new files: those of the run before are removed first (a
@@ -94,6 +100,24 @@ fs::path scratch_folder()
 }
 
 } // namespace
+
+StartupTiming measure_startup(const DeviceArguments& device, int warm_runs)
+{
+    const fs::path dir = fs::temp_directory_path() / ("ggx-startup-" + std::to_string(::getpid()));
+    fs::create_directories(dir / "cache");
+    const std::vector<std::string> one_sample = {"sample", "--method", "caps", "-n", "1", "--out",
+                                                 (dir / "one.npy").string()};
+    const std::vector<std::string> cache = {"POCL_CACHE_DIR=" + (dir / "cache").string()};
+    StartupTiming t;
+    t.measured = true;
+    t.cold_ms = 1e3 * timed_ggx(one_sample, device, cache);
+    std::vector<double> warm;
+    for (int r = 0; r < warm_runs; ++r)
+        warm.push_back(1e3 * timed_ggx(one_sample, device, cache));
+    t.warm_ms = summarize(warm);
+    fs::remove_all(dir);
+    return t;
+}
 
 AppTimings measure_apps(const DeviceArguments& device, std::uint32_t count)
 {

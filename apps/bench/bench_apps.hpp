@@ -1,4 +1,7 @@
-// bench_apps.hpp - the commands as a user runs them, whole process (start,
+// bench_apps.hpp - `ggx` timed as whole processes.  Start-up: process start
+// to first result (`ggx sample -n 1`, one caps sample written), once with an
+// empty PoCL kernel cache (cold: the program is built) and then repeatedly
+// with that cache warm.  The commands as a user runs them (start,
 // build from a warm cache, sampling, conversion, file): `ggx sample` of caps
 // m and pdf_m into an .npy file in RAM (/dev/shm where there is one) and
 // `ggx histogram --no-png`, each the median of 5 runs in ns per sample, set
@@ -15,6 +18,7 @@
 namespace ggxapp {
 
 // `device`: the options that choose the device (ApiChoice::arguments).
+StartupTiming measure_startup(const DeviceArguments& device, int warm_runs);
 AppTimings measure_apps(const DeviceArguments& device, std::uint32_t count);
 
 } // namespace ggxapp

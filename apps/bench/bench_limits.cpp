@@ -3,32 +3,17 @@
 #include "bench_limits.hpp"
 
 #include <algorithm>
-
-#include <iomanip>
 #include <sstream>
+
+#include "report_text.hpp"
 
 namespace ggxapp {
 
 namespace {
 
-std::string fixed(double value, int digits)
-{
-    std::ostringstream out;
-    out << std::fixed << std::setprecision(digits) << value;
-    return out.str();
-}
-
 std::string giga(double per_s)
 {
     return fixed(per_s * 1e-9, per_s < 1e10 ? 2 : 1) + " G";
-}
-
-const BenchRow* store_row(const BenchReport& r)
-{
-    for (const BenchRow& row : r.rows)
-        if (row.method == "all" && row.precision == "store-only" && row.job == "write")
-            return &row;
-    return nullptr;
 }
 
 // The precise philox conductor rows of the limits table, method by method (library order), write then furnace.
@@ -37,10 +22,8 @@ std::vector<const BenchRow*> table_rows(const BenchReport& r)
     std::vector<const BenchRow*> rows;
     for (ggxcl::Method m : ggxcl::all_methods)
         for (const char* job : {"write", "furnace"})
-            for (const BenchRow& row : r.rows)
-                if (row.method == ggxcl::method_name(m) && row.precision == "precise" && row.job == job &&
-                    row.sequence == "philox" && row.eta == 0.0f)
-                    rows.push_back(&row);
+            if (const BenchRow* row = find_row(r, std::string(ggxcl::method_name(m)), "precise", job))
+                rows.push_back(row);
     return rows;
 }
 
@@ -93,7 +76,7 @@ std::optional<RowLimit> row_limit(const BenchRow& row, const BenchReport& report
     RowLimit limit;
     if (row.has_ops && report.has_peaks)
         limit.compute = compute_limit(row.ops, report.peaks);
-    if (const BenchRow* store = store_row(report))
+    if (const BenchRow* store = find_row(report, "all", "store-only", "write"))
         limit.bandwidth_ns = bandwidth_limit_ns(
             stored_bytes_per_sample(row.job == "write" ? BenchJob::write : BenchJob::furnace), store->timing.median);
     if (!limit.compute && !limit.bandwidth_ns)

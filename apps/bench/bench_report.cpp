@@ -32,29 +32,11 @@ std::vector<std::string> method_order(const BenchReport& r)
 }
 const char* const device_modes[] = {"precise", "relaxed"};
 
-// A row of a conductor (eta 0) or, with dielectric, of the dielectric (eta set).
-const BenchRow* find_row(const BenchReport& r, const std::string& method, const std::string& precision,
-                         const std::string& job, const std::string& sequence = "philox", bool dielectric = false)
-{
-    for (const BenchRow& row : r.rows)
-        if (row.method == method && row.precision == precision && row.job == job && row.sequence == sequence &&
-            (row.eta != 0.0f) == dielectric)
-            return &row;
-    return nullptr;
-}
-
-std::string fixed(double value, int digits)
-{
-    std::ostringstream out;
-    out << std::fixed << std::setprecision(digits) << value;
-    return out.str();
-}
-
 std::string ns_cell(const BenchRow* row)
 {
     if (!row)
         return "–";
-    return fixed(row->timing.median, 2) + " (" + fixed(row->timing.low, 2) + "–" + fixed(row->timing.high, 2) + ")";
+    return timing_text(row->timing, 2);
 }
 
 // Millions of samples per second, as people read them ("263").
@@ -185,8 +167,7 @@ void write_speed_table(std::ostream& md, const BenchReport& r)
                << ns_cell(find_row(r, m, mode, "per-sample")) << " |\n";
         }
     if (r.has_vectorized)
-        md << "| caps | native, vectorized (omp simd) | – | – | " << fixed(r.vectorized.median, 2) << " ("
-           << fixed(r.vectorized.low, 2) << "–" << fixed(r.vectorized.high, 2) << ") | – | – |\n";
+        md << "| caps | native, vectorized (omp simd) | – | – | " << timing_text(r.vectorized, 2) << " | – | – |\n";
     if (const BenchRow* store = find_row(r, "all", "store-only", "write"))
         md << "| (none) | store only: the write job's bytes | " << ns_cell(store) << " | " << msps(store)
            << " | – | – | – |\n";
@@ -321,6 +302,16 @@ void write_dielectric_section(std::ostream& md, const BenchReport& r)
 }
 
 } // namespace
+
+const BenchRow* find_row(const BenchReport& r, const std::string& method, const std::string& precision,
+                         const std::string& job, const std::string& sequence, bool dielectric)
+{
+    for (const BenchRow& row : r.rows)
+        if (row.method == method && row.precision == precision && row.job == job && row.sequence == sequence &&
+            (row.eta != 0.0f) == dielectric)
+            return &row;
+    return nullptr;
+}
 
 BenchRow row_of(const std::string& method, const std::string& precision, const std::string& job, Timing timing)
 {
@@ -591,8 +582,7 @@ std::string bench_markdown(const BenchReport& r, const std::vector<ChartFiles>& 
     if (r.enqueue.measured)
         md << "\n## Small batches\n\nHost time of one `Sampler::enqueue` of " << r.enqueue.count
            << " caps samples (m and pdf_m into the caller's buffers), caches warm, median of " << r.enqueue.calls
-           << " calls: " << fixed(r.enqueue.host_us.median, 1) << " us (" << fixed(r.enqueue.host_us.low, 1) << "–"
-           << fixed(r.enqueue.host_us.high, 1) << "); the first call of a second Sampler on the same context, whose "
+           << " calls: " << timing_text(r.enqueue.host_us, 1) << " us; the first call of a second Sampler on the same context, whose "
            << "programs are shared: " << fixed(r.enqueue.second_sampler_first_us, 0) << " us. An enqueue and its "
            << "finish with the buffers at offset 0: " << fixed(r.enqueue.at_zero_us.median, 1) << " us; at offset "
            << r.enqueue.odd_offset << " (the kernels take the offset: no sub-buffer, no copy), alternated with it: "
@@ -600,16 +590,13 @@ std::string bench_markdown(const BenchReport& r, const std::vector<ChartFiles>& 
     if (r.apps.measured)
         md << "\n## The commands, whole process\n\nWall clock from process start to exit, ns per sample, caps, files "
               "in "
-           << r.apps.folder << ": `ggx sample --fields m,pdf_m` into .npy " << fixed(r.apps.sample_npy.median, 2)
-           << " (" << fixed(r.apps.sample_npy.low, 2) << "–" << fixed(r.apps.sample_npy.high, 2) << ") and `ggx "
-           << "histogram --no-png` (its expected counts by quadrature included) " << fixed(r.apps.histogram.median, 2)
-           << " (" << fixed(r.apps.histogram.low, 2) << "–" << fixed(r.apps.histogram.high, 2) << "), " << r.apps.count
+           << r.apps.folder << ": `ggx sample --fields m,pdf_m` into .npy " << timing_text(r.apps.sample_npy, 2) << " and `ggx "
+           << "histogram --no-png` (its expected counts by quadrature included) " << timing_text(r.apps.histogram, 2) << ", " << r.apps.count
            << " samples, median of 5 runs; at " << r.apps.text_count << " samples, one run each: .csv "
            << fixed(r.apps.sample_csv, 1) << ", .ply (m) " << fixed(r.apps.sample_ply, 1) << ".\n\n"
            << "Beside them: writing the .npy's bytes (16 per sample) from memory into a new file in the same folder, "
               "1 MiB per write, "
-           << fixed(r.apps.npy_file_floor.median, 2) << " ns per sample (" << fixed(r.apps.npy_file_floor.low, 2) << "–"
-           << fixed(r.apps.npy_file_floor.high, 2) << "), the cost of the file alone; the histogram's binning alone "
+           << timing_text(r.apps.npy_file_floor, 2) << " ns per sample, the cost of the file alone; the histogram's binning alone "
               "(sampling, binning and counting on the device, from its sidecar's device_seconds) "
            << fixed(r.apps.histogram_device, 2) << " ns.\n";
     return md.str();

@@ -99,6 +99,10 @@ struct BenchReport {
 
 // A row of (method, precision, job) with its timing, nothing else measured.
 BenchRow row_of(const std::string& method, const std::string& precision, const std::string& job, Timing timing);
+// The first row of (method, precision, job, sequence): a conductor's (eta 0) or, with dielectric, the
+// dielectric's (eta set); null when there is none.
+const BenchRow* find_row(const BenchReport& r, const std::string& method, const std::string& precision,
+                         const std::string& job, const std::string& sequence = "philox", bool dielectric = false);
 
 // 1 / (variance x seconds per sample), and the RMSE of each cell of the table
 // after the budget is spent on it: sqrt(variance / (budget / (cells x time))),

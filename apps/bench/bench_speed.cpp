@@ -80,6 +80,11 @@ Timing summarize(std::vector<double> ns)
     return {ns[ns.size() / 2], ns.front(), ns.back()};
 }
 
+std::string timing_text(const Timing& t, int digits)
+{
+    return fixed(t.median, digits) + " (" + fixed(t.low, digits) + "–" + fixed(t.high, digits) + ")";
+}
+
 double wall_ns_per_sample(const std::function<void()>& call, std::uint64_t count)
 {
     const auto start = std::chrono::steady_clock::now();

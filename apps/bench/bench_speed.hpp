@@ -31,6 +31,8 @@ struct Timing {
     double median = 0, low = 0, high = 0;
 };
 Timing summarize(std::vector<double> ns_per_sample);
+// "median (low–high)", each with `digits` digits after the point.
+std::string timing_text(const Timing& t, int digits);
 
 // Nanoseconds per sample of one call of `call`, which draws `count` samples, by wall clock.
 double wall_ns_per_sample(const std::function<void()>& call, std::uint64_t count);

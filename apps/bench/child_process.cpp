@@ -90,9 +90,23 @@ void drain(Pipe& out, Pipe& err, ChildOutput& result, const Clock::time_point* d
     }
 }
 
+// This process's environment with each "NAME=value" of `settings` in place of NAME's.
+std::vector<std::string> environment_with(const std::vector<std::string>& settings)
+{
+    std::vector<std::string> env = settings;
+    for (char** e = environ; *e; ++e) {
+        const std::string entry = *e;
+        const std::string name = entry.substr(0, entry.find('=') + 1);
+        if (std::none_of(settings.begin(), settings.end(), [&](const std::string& s) { return s.rfind(name, 0) == 0; }))
+            env.push_back(entry);
+    }
+    return env;
+}
+
 } // namespace
 
-ChildOutput run_child(const std::string& program, const std::vector<std::string>& arguments, double limit_s)
+ChildOutput run_child(const std::string& program, const std::vector<std::string>& arguments, double limit_s,
+                      const std::vector<std::string>& settings)
 {
     const std::string command = command_text(program, arguments);
     Pipe out, err;
@@ -103,6 +117,11 @@ ChildOutput run_child(const std::string& program, const std::vector<std::string>
     for (const std::string& a : arguments)
         argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
+    std::vector<std::string> environment = environment_with(settings);
+    std::vector<char*> envp;
+    for (std::string& e : environment)
+        envp.push_back(e.data());
+    envp.push_back(nullptr);
 
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -110,7 +129,7 @@ ChildOutput run_child(const std::string& program, const std::vector<std::string>
     posix_spawn_file_actions_adddup2(&actions, out.write.fd, 1);
     posix_spawn_file_actions_adddup2(&actions, err.write.fd, 2);
     pid_t pid = 0;
-    int spawned = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+    int spawned = ::posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
     if (spawned != 0)
         throw std::system_error(spawned, std::generic_category(), "cannot start `" + command + "`");

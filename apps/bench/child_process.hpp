@@ -21,9 +21,11 @@ struct ChildTimedOut : std::runtime_error {
 };
 
 // Runs `program` (a path) with `arguments` and waits for it, at most `limit_s` seconds when that is
-// > 0 (then kills it with SIGKILL and throws ChildTimedOut).  Throws std::system_error when it
-// cannot be started (the message names the command).
-ChildOutput run_child(const std::string& program, const std::vector<std::string>& arguments, double limit_s = 0);
+// > 0 (then kills it with SIGKILL and throws ChildTimedOut).  Its environment is this process's with
+// each "NAME=value" of `settings` in place of NAME's.  Throws std::system_error when it cannot be
+// started (the message names the command).
+ChildOutput run_child(const std::string& program, const std::vector<std::string>& arguments, double limit_s = 0,
+                      const std::vector<std::string>& settings = {});
 
 bool exited_ok(int status);               // exited normally with status 0
 std::string describe_exit(int status);    // "exited with status 2", "was killed by signal 4 (Illegal instruction)"

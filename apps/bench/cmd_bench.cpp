@@ -25,7 +25,6 @@
 #include "bench_peak.hpp"
 #include "bench_plan.hpp"
 #include "bench_report.hpp"
-#include "bench_startup.hpp"
 #include "api_options.hpp"
 #include "bench_apps.hpp"
 #include "bench_enqueue.hpp"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 
 namespace ggxapp {
@@ -53,6 +54,13 @@ std::string short_scientific(double value, int significant)
 }
 
 } // namespace
+
+std::string fixed(double value, int digits)
+{
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(digits) << value;
+    return out.str();
+}
 
 std::string readable_number(double value, int significant)
 {

@@ -18,6 +18,9 @@ std::string relative_to(const std::string& path, const std::string& page);
 // `html` (its path without the extension), else nowhere ("").
 std::string charts_prefix(const std::string& charts, const std::string& html);
 
+// `value` with `digits` digits after the point ("6.12").
+std::string fixed(double value, int digits);
+
 // `value` with `significant` digits: fixed between 1e-3 and 1e6 ("0.0123",
 // "4.29", "1497"), else scientific with a short exponent ("1.2e-7"); "0" for 0.
 std::string readable_number(double value, int significant = 3);

@@ -3,6 +3,7 @@
 #include "op_counts.hpp"
 
 #include <cctype>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -16,17 +17,23 @@ struct Cost {
     double ops;
 };
 
+using Names = std::initializer_list<const char*>;
+
+bool among(Names names, const std::string& name)
+{
+    for (const char* known : names)
+        if (name == known)
+            return true;
+    return false;
+}
+
 // Instructions that move or address data and compute nothing.
 bool is_free_opcode(const std::string& opcode)
 {
-    static const char* const free_ops[] = {
-        "load", "store", "getelementptr", "alloca", "br", "switch", "ret", "phi", "bitcast", "trunc", "zext", "sext",
-        "ptrtoint", "inttoptr", "addrspacecast", "extractelement", "insertelement", "shufflevector", "extractvalue",
-        "insertvalue", "freeze", "unreachable", "fence"};
-    for (const char* name : free_ops)
-        if (opcode == name)
-            return true;
-    return false;
+    return among({"load", "store", "getelementptr", "alloca", "br", "switch", "ret", "phi", "bitcast", "trunc", "zext",
+                  "sext", "ptrtoint", "inttoptr", "addrspacecast", "extractelement", "insertelement", "shufflevector",
+                  "extractvalue", "insertvalue", "freeze", "unreachable", "fence"},
+                 opcode);
 }
 
 bool is_float_type(const std::string& type)
@@ -53,21 +60,16 @@ int lanes_of(const std::string& text)
 // The cost of an instruction by its opcode; `rest` is the text after the opcode.  False: not known.
 bool opcode_cost(const std::string& opcode, const std::string& rest, Cost& cost)
 {
-    static const char* const int_ops[] = {"add", "sub", "and", "or", "xor", "shl", "lshr", "ashr", "icmp"};
-    static const char* const float_ops[] = {"fadd",   "fsub",   "fmul",   "fneg",   "fcmp",   "sitofp",
-                                            "uitofp", "fptosi", "fptoui", "fpext", "fptrunc"};
-    for (const char* name : int_ops)
-        if (opcode == name)
-            return cost = {OpClass::int_op, 1}, true;
-    for (const char* name : float_ops)
-        if (opcode == name)
-            return cost = {OpClass::float_op, 1}, true;
+    if (among({"add", "sub", "and", "or", "xor", "shl", "lshr", "ashr", "icmp"}, opcode))
+        return cost = {OpClass::int_op, 1}, true;
+    if (among({"fadd", "fsub", "fmul", "fneg", "fcmp", "sitofp", "uitofp", "fptosi", "fptoui", "fpext", "fptrunc"},
+              opcode))
+        return cost = {OpClass::float_op, 1}, true;
     if (opcode == "mul") {
         const bool wide = rest.find("i64") != std::string::npos || rest.find("i128") != std::string::npos;
         return cost = {wide ? OpClass::int_mul_wide : OpClass::int_mul, 1}, true;
     }
-    if (opcode == "fdiv" || opcode == "frem" || opcode == "udiv" || opcode == "sdiv" || opcode == "urem" ||
-        opcode == "srem")
+    if (among({"fdiv", "frem", "udiv", "sdiv", "urem", "srem"}, opcode))
         return cost = {OpClass::division, 1}, true;
     if (opcode == "select") {  // select [flags] COND %c, TYPE %a, TYPE %b: the class of the values
         std::size_t comma = rest.find(',');
@@ -80,29 +82,23 @@ bool opcode_cost(const std::string& opcode, const std::string& rest, Cost& cost)
 // LLVM intrinsics by name without their type suffix ("llvm.fmuladd").
 bool intrinsic_cost(const std::string& name, Cost& cost, bool& free)
 {
-    static const char* const free_calls[] = {"llvm.experimental.noalias.scope.decl", "llvm.lifetime.start",
-                                             "llvm.lifetime.end", "llvm.assume", "llvm.dbg.value", "llvm.dbg.declare"};
-    static const char* const float_calls[] = {"llvm.fmuladd", "llvm.fma",   "llvm.fabs",  "llvm.copysign",
-                                              "llvm.minnum",  "llvm.maxnum", "llvm.minimum", "llvm.maximum",
-                                              "llvm.rint",    "llvm.floor", "llvm.ceil",  "llvm.trunc",
-                                              "llvm.round",   "llvm.nearbyint", "llvm.roundeven"};
-    static const char* const int_calls[] = {"llvm.umin", "llvm.umax", "llvm.smin", "llvm.smax", "llvm.abs",
-                                            "llvm.bitreverse", "llvm.ctlz", "llvm.cttz", "llvm.ctpop",
-                                            "llvm.fshl", "llvm.fshr", "llvm.bswap"};
-    auto matches = [&](const char* known) {
-        const std::string k = known;
-        return name == k || name.rfind(k + ".", 0) == 0;
+    auto matches = [&](Names known) {
+        for (const std::string k : known)
+            if (name == k || name.rfind(k + ".", 0) == 0)
+                return true;
+        return false;
     };
-    for (const char* known : free_calls)
-        if (matches(known))
-            return free = true, true;
-    for (const char* known : float_calls)
-        if (matches(known))
-            return cost = {OpClass::float_op, 1}, true;
-    for (const char* known : int_calls)
-        if (matches(known))
-            return cost = {OpClass::int_op, 1}, true;
-    if (matches("llvm.sqrt"))
+    if (matches({"llvm.experimental.noalias.scope.decl", "llvm.lifetime.start", "llvm.lifetime.end", "llvm.assume",
+                 "llvm.dbg.value", "llvm.dbg.declare"}))
+        return free = true, true;
+    if (matches({"llvm.fmuladd", "llvm.fma", "llvm.fabs", "llvm.copysign", "llvm.minnum", "llvm.maxnum",
+                 "llvm.minimum", "llvm.maximum", "llvm.rint", "llvm.floor", "llvm.ceil", "llvm.trunc", "llvm.round",
+                 "llvm.nearbyint", "llvm.roundeven"}))
+        return cost = {OpClass::float_op, 1}, true;
+    if (matches({"llvm.umin", "llvm.umax", "llvm.smin", "llvm.smax", "llvm.abs", "llvm.bitreverse", "llvm.ctlz",
+                 "llvm.cttz", "llvm.ctpop", "llvm.fshl", "llvm.fshr", "llvm.bswap"}))
+        return cost = {OpClass::int_op, 1}, true;
+    if (matches({"llvm.sqrt"}))
         return cost = {OpClass::sqrt, 1}, true;
     return false;
 }
@@ -129,34 +125,24 @@ bool builtin_cost(const std::string& mangled, Cost& cost, bool& free)
         return false;
     const std::string name = mangled.substr(digits, length), params = mangled.substr(digits + length);
     const bool floats = first_param_is_float(params);
-    static const char* const work_item[] = {"get_global_id",   "get_global_size", "get_local_id", "get_local_size",
-                                            "get_group_id",    "get_num_groups",  "get_global_offset",
-                                            "get_work_dim",    "barrier"};
-    for (const char* known : work_item)
-        if (name == known)
-            return free = true, true;
-    static const std::map<std::string, Cost> float_builtins = {
-        {"fma", {OpClass::float_op, 1}},      {"mad", {OpClass::float_op, 1}},   {"fabs", {OpClass::float_op, 1}},
-        {"fmin", {OpClass::float_op, 1}},     {"fmax", {OpClass::float_op, 1}},  {"min", {OpClass::float_op, 1}},
-        {"max", {OpClass::float_op, 1}},      {"clamp", {OpClass::float_op, 2}}, {"copysign", {OpClass::float_op, 1}},
-        {"rint", {OpClass::float_op, 1}},     {"floor", {OpClass::float_op, 1}}, {"ceil", {OpClass::float_op, 1}},
-        {"trunc", {OpClass::float_op, 1}},    {"round", {OpClass::float_op, 1}}, {"step", {OpClass::float_op, 1}},
-        {"select", {OpClass::float_op, 1}},   {"isnan", {OpClass::float_op, 1}}, {"isinf", {OpClass::float_op, 1}},
-        {"isfinite", {OpClass::float_op, 1}}, {"signbit", {OpClass::float_op, 1}}};
-    static const std::map<std::string, Cost> int_builtins = {
-        {"min", {OpClass::int_op, 1}},       {"max", {OpClass::int_op, 1}},      {"clamp", {OpClass::int_op, 2}},
-        {"abs", {OpClass::int_op, 1}},       {"rotate", {OpClass::int_op, 1}},   {"clz", {OpClass::int_op, 1}},
-        {"popcount", {OpClass::int_op, 1}},  {"select", {OpClass::int_op, 1}},   {"mul24", {OpClass::int_mul, 1}},
-        {"mul_hi", {OpClass::int_mul_wide, 1}}};
-    static const std::map<std::string, Cost> any_builtins = {
-        {"sqrt", {OpClass::sqrt, 1}},          {"rsqrt", {OpClass::sqrt, 1}},         {"half_sqrt", {OpClass::sqrt, 1}},
-        {"half_rsqrt", {OpClass::sqrt, 1}},    {"native_sqrt", {OpClass::sqrt, 1}},   {"native_rsqrt", {OpClass::sqrt, 1}},
-        {"native_divide", {OpClass::division, 1}}, {"half_divide", {OpClass::division, 1}},
-        {"native_recip", {OpClass::division, 1}},  {"half_recip", {OpClass::division, 1}}};
-    const std::map<std::string, Cost>& typed = floats ? float_builtins : int_builtins;
-    for (const std::map<std::string, Cost>* table : {&typed, &any_builtins})
-        if (auto found = table->find(name); found != table->end())
-            return cost = found->second, true;
+    if (among({"get_global_id", "get_global_size", "get_local_id", "get_local_size", "get_group_id", "get_num_groups",
+               "get_global_offset", "get_work_dim", "barrier"},
+              name))
+        return free = true, true;
+    const OpClass typed = floats ? OpClass::float_op : OpClass::int_op;
+    if (name == "clamp")
+        return cost = {typed, 2}, true;
+    if (!floats && (name == "mul24" || name == "mul_hi"))
+        return cost = {name == "mul24" ? OpClass::int_mul : OpClass::int_mul_wide, 1}, true;
+    const Names float_builtins = {"fma",  "mad",   "fabs", "fmin",   "fmax",  "min",   "max",      "copysign", "rint",
+                                  "floor", "ceil", "trunc", "round", "step", "select", "isnan", "isinf", "isfinite",
+                                  "signbit"};
+    if (among(floats ? float_builtins : Names{"min", "max", "abs", "rotate", "clz", "popcount", "select"}, name))
+        return cost = {typed, 1}, true;
+    if (among({"sqrt", "rsqrt", "half_sqrt", "half_rsqrt", "native_sqrt", "native_rsqrt"}, name))
+        return cost = {OpClass::sqrt, 1}, true;
+    if (among({"native_divide", "half_divide", "native_recip", "half_recip"}, name))
+        return cost = {OpClass::division, 1}, true;
     return false;
 }
 

@@ -64,15 +64,17 @@ GGX_INLINE ggx_sample ggx_draw_bounded(ggx_vec3 i, float ax, float ay, float u1,
     ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), inv_ti);
     float k = ggx_bounded_k(i, ax, ay);
     float lower = k * v.z;
-    // The cap z in (-k vz, 1] (supplement sec. 2, q_our), of height 1 + k vz = (k iz + t) / t.
+    float inv_sum = ggx_bounded_inv_sum(i, k, ti, ax, ay);        // supplement sec. 2: D / (2 (k iz + t))
+    bool below = i.z < 0.0f;
+    // The cap z in (-k vz, 1] (supplement sec. 2, q_our), of height 1 + k vz = (k iz + t) / t; below the
+    // horizon k = 1 and the cap is caps' (ggx_cap_height).
 #if GGX_BELOW_HORIZON
-    float height = i.z > 0.0f ? ggx_bounded_sum(i, k, ti, ax, ay) * inv_ti : 1.0f + lower;
+    float height = i.z > 0.0f ? ggx_bounded_sum(i, k, ti, ax, ay) * inv_ti : ggx_cap_height(lower, ti, inv_sum, below);
 #else
     float height = ggx_bounded_sum(i, k, ti, ax, ay) * inv_ti;
 #endif
-    ggx_vec3 c = ggx_sample_cap_of_height(lower, height, u1, u2);
-    ggx_vec3 h = ggx_add(c, v);
-    float inv_sum = ggx_bounded_inv_sum(i, k, ti, ax, ay);        // supplement sec. 2: D / (2 (k iz + t))
+    ggx_vec3 c = ggx_sample_cap_of_height(lower, height, u1, u2, below);
+    ggx_vec3 h = ggx_cap_half_vector(c, v, height, u2, below);
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 

@@ -9,30 +9,58 @@
 #include "ggx_vndf.h"
 
 // A direction drawn uniformly from the spherical cap z in (-lower, 1] around +z, whose
-// height 1 + lower the caller gives (bounded has it without cancellation where lower nears -1):
-// phi = 2 pi u1, z = (1 - u2) height - lower (Dupuy & Benyoub, Listing 3).
-GGX_INLINE ggx_vec3 ggx_sample_cap_of_height(float lower, float height, float u1, float u2)
+// height 1 + lower the caller gives (ggx_cap_height: without cancellation where lower nears -1):
+// phi = 2 pi u1, z = (1 - u2) height - lower (Dupuy & Benyoub, Listing 3).  Below the horizon
+// (`below`: the view's iz < 0, the cap thin as lower nears -1) the sine comes from 1 - z = u2 height,
+// exactly: sin^2 = u2 height (2 - u2 height), where 1 - z^2 cancels (docs/MATH.md "Views near -n").
+GGX_INLINE ggx_vec3 ggx_sample_cap_of_height(float lower, float height, float u1, float u2, bool below)
 {
     float z = (1.0f - u2) * height - lower;
-    float sin_theta = ggx_sqrt(ggx_clamp(1.0f - z * z, 0.0f, 1.0f));
+    float sin2 = 1.0f - z * z;
+#if GGX_BELOW_HORIZON
+    float depth = u2 * height;
+    sin2 = below ? depth * (2.0f - depth) : sin2;
+#endif
+    float sin_theta = ggx_sqrt(ggx_clamp(sin2, 0.0f, 1.0f));
     ggx_sin_cos phi = ggx_sincos_2pi(u1);
     float sin_phi = phi.sine, cos_phi = phi.cosine;
     return ggx_vec3_make(sin_theta * cos_phi, sin_theta * sin_phi, z);
 }
 
-// The same with the height 1 + lower.
-GGX_INLINE ggx_vec3 ggx_sample_cap(float lower, float u1, float u2)
+// The height 1 + vz of the cap under the stretched view v = A i / t: below the horizon, where the sum
+// cancels, 1 / (t (iz + t)^-1) with inv_sum = (iz + t)^-1 from ggx_inv_iz_plus_t (1 + vz = (iz + t) / t).
+GGX_INLINE float ggx_cap_height(float vz, float ti, float inv_sum, bool below)
 {
-    return ggx_sample_cap_of_height(lower, 1.0f + lower, u1, u2);
+    float height = 1.0f + vz;
+#if GGX_BELOW_HORIZON
+    height = below ? 1.0f / (ti * inv_sum) : height;
+#endif
+    return height;
+}
+
+// The standard-space half vector h = c + v of a cap point c (eq. 10, sec. 3.3).  Below the horizon its
+// z, c.z + vz, is (1 - u2) height exactly, where the sum cancels; and h is divided by the height (m and D
+// do not see its length), so that a cap as thin as the guard lets through (height ~ 1e-20) leaves no
+// component to underflow at its rim, where c + v cancels across too.
+GGX_INLINE ggx_vec3 ggx_cap_half_vector(ggx_vec3 c, ggx_vec3 v, float height, float u2, bool below)
+{
+    ggx_vec3 h = ggx_add(c, v);
+#if GGX_BELOW_HORIZON
+    float inv_height = 1.0f / height;
+    h = ggx_vec3_make(below ? h.x * inv_height : h.x, below ? h.y * inv_height : h.y, below ? 1.0f - u2 : h.z);
+#endif
+    return h;
 }
 
 GGX_INLINE ggx_sample ggx_draw_caps(ggx_vec3 i, float ax, float ay, float u1, float u2)
 {
     float ti = ggx_t(i, ax, ay);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // warp to the hemisphere configuration
-    ggx_vec3 c = ggx_sample_cap(v.z, u1, u2);                     // reflected direction in that space (eq. 10)
-    ggx_vec3 h = ggx_add(c, v);                                   // unnormalized half vector (sec. 3.3)
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
+    bool below = i.z < 0.0f;
+    float height = ggx_cap_height(v.z, ti, inv_sum, below);
+    ggx_vec3 c = ggx_sample_cap_of_height(v.z, height, u1, u2, below);  // reflected direction in that space (eq. 10)
+    ggx_vec3 h = ggx_cap_half_vector(c, v, height, u2, below);          // unnormalized half vector (sec. 3.3)
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 

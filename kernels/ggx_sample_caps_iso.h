@@ -54,9 +54,13 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso_z(ggx_vec3 i, float alpha, float u1, flo
 {
     float ti = ggx_t(i, alpha, alpha);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, alpha, alpha), 1.0f / ti);
-    ggx_vec3 c = ggx_sample_cap(v.z, u1, u2);
-    ggx_vec3 h = ggx_vec3_make(v.x - c.x, v.y - c.y, v.z + c.z);  // the half-turn about z, then c + v
-    return ggx_finish_vndf_sample(i, h, alpha, alpha, ti, ggx_inv_iz_plus_t(i.z, ti, alpha, alpha, i));
+    float inv_sum = ggx_inv_iz_plus_t(i.z, ti, alpha, alpha, i);
+    bool below = i.z < 0.0f;
+    float height = ggx_cap_height(v.z, ti, inv_sum, below);
+    ggx_vec3 c = ggx_sample_cap_of_height(v.z, height, u1, u2, below);
+    // The half-turn about z, then c + v (ggx_cap_half_vector of the turned c).
+    ggx_vec3 h = ggx_cap_half_vector(ggx_vec3_make(-c.x, -c.y, c.z), v, height, u2, below);
+    return ggx_finish_vndf_sample(i, h, alpha, alpha, ti, inv_sum);
 }
 
 GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
@@ -66,7 +70,10 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, flo
     float ti = ggx_t_about(i, n, alpha), inv_ti = 1.0f / ti;
     ggx_vec3 v = ggx_scale(ggx_stretch_about(i, n, alpha), inv_ti);
     // A cap around +z with the height of v above the surface, then the half-turn onto n.
-    ggx_vec3 c_std = ggx_sample_cap(iz * inv_ti, u1, u2);
+    float inv_sum = ggx_inv_iz_plus_t_about(i, n, alpha, iz, ti);
+    bool below = iz < 0.0f;
+    float height = ggx_cap_height(iz * inv_ti, ti, inv_sum, below);
+    ggx_vec3 c_std = ggx_sample_cap_of_height(iz * inv_ti, height, u1, u2, below);
     ggx_vec3 w = ggx_vec3_make(n.x, n.y, n.z + 1.0f);
     float inv_wz = 1.0f / w.z;  // a reciprocal, not a division per sample: w is uniform when n is
     ggx_vec3 c = ggx_add(ggx_scale(w, ggx_dot(w, c_std) * inv_wz), ggx_scale(c_std, -1.0f));
@@ -75,8 +82,21 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, flo
     // h.n here, unlike ggx_vndf.h: about a general n, m.n at the cap's edge is 0 only to within
     // the rounding of world-space vectors anyway, and a vanishing h must stay NaN for the guard.)
     ggx_vec3 a = ggx_stretch_about(h, n, alpha);
+#if GGX_BELOW_HORIZON
+    // Below the horizon every component of c + v cancels along n: h is assembled from its part along
+    // n, (1 - u2) height, and across it, the turned tangential part of c_std plus alpha i_t / t; A h
+    // from the same parts (docs/MATH.md "Views near -n").
+    ggx_vec3 c_flat = ggx_vec3_make(c_std.x, c_std.y, 0.0f);
+    ggx_vec3 c_t = ggx_add(ggx_scale(w, ggx_dot(w, c_flat) * inv_wz), ggx_scale(c_flat, -1.0f));
+    ggx_vec3 h_t = ggx_add(c_t, ggx_scale(ggx_add(i, ggx_scale(n, -iz)), alpha * inv_ti));
+    ggx_vec3 h_n = ggx_scale(n, (1.0f - u2) * height);
+    float inv_height = 1.0f / height;  // as ggx_cap_half_vector: no component underflows at the rim
+    ggx_vec3 h_below = ggx_scale(ggx_add(h_t, h_n), inv_height);
+    ggx_vec3 a_below = ggx_scale(ggx_add(ggx_scale(h_t, alpha), h_n), inv_height);
+    h = ggx_vec3_make(below ? h_below.x : h.x, below ? h_below.y : h.y, below ? h_below.z : h.z);
+    a = ggx_vec3_make(below ? a_below.x : a.x, below ? a_below.y : a.y, below ? a_below.z : a.z);
+#endif
     float ratio = ggx_dot(a, a) / ggx_dot(h, h);
-    float inv_sum = ggx_inv_iz_plus_t_about(i, n, alpha, iz, ti);
     ggx_sample result;
     result.m = ggx_normalize(a);
     result.o = ggx_reflect(i, result.m);

@@ -10,13 +10,19 @@
 #include "ggx_sincos.h"
 #include "ggx_vndf.h"
 
-// Lifts the disk point (t1, t2) in the plane of (T1, T2) onto the unit hemisphere along v.
-GGX_INLINE ggx_vec3 ggx_lift_to_hemisphere(float t1, float t2, ggx_vec3 T1, ggx_vec3 T2, ggx_vec3 v)
+// The point t1 T1 + t2 T2 + tv v of the unit hemisphere above the disk point (t1, t2) in the plane of
+// (T1, T2), tv its height along v.
+GGX_INLINE ggx_vec3 ggx_lift_by(float t1, float t2, float tv, ggx_vec3 T1, ggx_vec3 T2, ggx_vec3 v)
 {
-    float tv = ggx_sqrt(ggx_fmax(0.0f, 1.0f - t1 * t1 - t2 * t2));
     return ggx_vec3_make(t1 * T1.x + t2 * T2.x + tv * v.x,
                          t1 * T1.y + t2 * T2.y + tv * v.y,
                          t1 * T1.z + t2 * T2.z + tv * v.z);
+}
+
+// Lifts the disk point (t1, t2) in the plane of (T1, T2) onto the unit hemisphere along v.
+GGX_INLINE ggx_vec3 ggx_lift_to_hemisphere(float t1, float t2, ggx_vec3 T1, ggx_vec3 T2, ggx_vec3 v)
+{
+    return ggx_lift_by(t1, t2, ggx_sqrt(ggx_fmax(0.0f, 1.0f - t1 * t1 - t2 * t2)), T1, T2, v);
 }
 
 // Unit vector (sx, sy, 0)/|(sx, sy)|, or (1, 0, 0) when the view is the pole.
@@ -38,11 +44,29 @@ GGX_INLINE ggx_sample ggx_draw_heitz(ggx_vec3 i, float ax, float ay, float u1, f
     float sin_phi = phi.sine, cos_phi = phi.cosine;
     float r = ggx_sqrt(u1);                                          // uniform point on the unit disk
     float t1 = r * cos_phi, t2 = r * sin_phi;
-    float s = 0.5f * (1.0f + v.z);                               // warp onto the visible cross section
-    t2 = (1.0f - s) * ggx_sqrt(ggx_fmax(0.0f, 1.0f - t1 * t1)) + s * t2;
-    ggx_vec3 h = ggx_lift_to_hemisphere(t1, t2, T1, T2, v);
-    h.z = ggx_fmax(0.0f, h.z);
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
+    bool below = i.z < 0.0f;
+    float s = 0.5f * (1.0f + v.z);                               // warp onto the visible cross section
+#if GGX_BELOW_HORIZON
+    s = below ? 0.5f / (ti * inv_sum) : s;                       // 1 + vz = (iz + t) / t without cancellation
+#endif
+    float w = ggx_sqrt(ggx_fmax(0.0f, 1.0f - t1 * t1));
+    float t2w = (1.0f - s) * w + s * t2;
+    float tv2 = 1.0f - t1 * t1 - t2w * t2w;
+#if GGX_BELOW_HORIZON
+    // Below the horizon tv^2 = w^2 - t2w^2 and h.z = t2w |vxy| + tv vz cancel; exactly, with w - t2w =
+    // s (w - t2) and t2w - |vz| w = s (w + t2) (|vz| = 1 - 2 s): tv^2 = s (w - t2)(w + t2w) and
+    // h.z = s (w + t2)(t2w + |vz| w) / (t2w |vxy| + tv |vz|) (docs/MATH.md "Views near -n").
+    tv2 = below ? s * (w - t2) * (w + t2w) : tv2;
+#endif
+    float tv = ggx_sqrt(ggx_fmax(0.0f, tv2));
+    ggx_vec3 h = ggx_lift_by(t1, t2w, tv, T1, T2, v);
+#if GGX_BELOW_HORIZON
+    float vxy = ggx_sqrt(v.x * v.x + v.y * v.y), den = t2w * vxy - tv * v.z;
+    float hz_below = den > 0.0f ? s * (w + t2) * (t2w - v.z * w) / den : 0.0f;
+    h.z = below ? hz_below : h.z;
+#endif
+    h.z = ggx_fmax(0.0f, h.z);
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }
 

@@ -100,10 +100,10 @@ TEST_CASE("u3 below F(i.m) reflects, above it refracts; pdf_o carries F or 1 - F
         for (double eta : etas) {
             CAPTURE(std::string(method_name(method)));
             CAPTURE(eta);
-            const Params p = params(method, 0.3, 0.3, 40.0);
+            const Params p = params(method, 0.3, 0.3, 20.0);  // i.m > 0.8: no total internal reflection at 1/1.5
             const Sample conductor = sample(method, p, 0.3, 0.6);
             const double F = fresnel_dielectric(dot(p.i, conductor.m), eta);
-            REQUIRE(F < 1.0);
+            REQUIRE(F < 0.5);
             const Sample r = dielectric_sample(method, p, eta, false, 0.3, 0.6, F * (1.0 - 1e-9));
             const Sample t = dielectric_sample(method, p, eta, false, 0.3, 0.6, F * (1.0 + 1e-9));
             CHECK(length(r.o - conductor.o) < 1e-15);

@@ -12,12 +12,13 @@ namespace {
 
 constexpr float one_below = 1.0f - 5.9604644775390625e-8f;  // 1 - 2^-24, the largest uniform
 constexpr double phi_degrees = 35.0;
+constexpr std::size_t random_pairs = 8;
+constexpr double pi = 3.14159265358979323846, rad = pi / 180.0;  // rad: one degree in radians
 
 // The view with cos theta = c from n (exactly along, across and against it
 // at c = 1, 0, -1), turned by phi about n in the frame (t, b, n).
 ggxcl::Vec3 view_about(const ggxref::Vec3& n, double c)
 {
-    const double rad = 3.14159265358979323846 / 180.0;
     double sin_theta = std::sqrt(std::max(0.0, 1.0 - c * c));
     ggxref::Vec3 t = std::fabs(n.z) == 1.0 ? ggxref::Vec3{1, 0, 0} : ggxref::any_perpendicular(n);
     ggxref::Vec3 b = ggxref::cross(n, t);
@@ -41,13 +42,14 @@ std::vector<ggxref::Vec3> normals_for(ggxcl::Method method)
     return {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, ggxref::normalize({1, 1, 1}), ggxref::normalize({0.3, -0.2, -0.93})};
 }
 
+// The pairs at the edges of [0, 1), then `random_pairs` random ones.
 std::vector<std::array<float, 2>> uniform_pairs()
 {
     std::vector<std::array<float, 2>> pairs;
     for (float a : {0.0f, 0.5f, one_below})
         for (float b : {0.0f, 0.5f, one_below})
             pairs.push_back({a, b});
-    for (std::uint64_t k = 0; k < 8; ++k) {
+    for (std::uint64_t k = 0; k < random_pairs; ++k) {
         std::array<double, 2> u = ggxref::uniforms(2026, k);
         pairs.push_back({float(u[0]), float(u[1])});
     }
@@ -72,7 +74,7 @@ std::array<float, 2> rim_pair(ggxcl::Method method, const std::array<float, 2>& 
         const ggxref::Vec3 minus_v = -(alpha[0] * (i - iz * n) + iz * n);
         c = (ggxref::dot(w, minus_v) / w.z) * w - minus_v;
     }
-    double u = std::atan2(c.y, c.x) / (2.0 * 3.14159265358979323846);
+    double u = std::atan2(c.y, c.x) / (2.0 * pi);
     u = std::round((u - std::floor(u)) * 16777216.0) / 16777216.0;
     return {float(u < 1.0 ? u : 0.0), one_below};
 }
@@ -83,7 +85,6 @@ StressAxes axes_of(const std::vector<double>& cos_theta)
     StressAxes axes;
     for (int r = 0; r <= 18; ++r)
         axes.alphas.push_back(std::pow(10.0, -7.0 + 0.5 * r));
-    const double rad = 3.14159265358979323846 / 180.0;
     axes.cos_theta = cos_theta;
     for (double c : axes.cos_theta)
         axes.theta_degrees.push_back(std::acos(c) / rad);
@@ -99,24 +100,21 @@ ggxcl::Vec3 view_from_above(const ggxcl::Vec3& view, const ggxref::Vec3& n)
     return {float(v.x), float(v.y), float(v.z)};
 }
 
-// The dielectric's uniforms: stress_cases' pairs (the edges, the random ones, the rim pair), each
-// with u3 = 0 (reflects wherever F > 0), 1/2 (random for the random pairs) and 1 - 2^-24 (refracts
+// The dielectric's uniforms: stress_cases' pairs (uniform_pairs, then the rim pair), each with
+// u3 = 0 (reflects wherever F > 0), 1/2 (random for the random pairs) and 1 - 2^-24 (refracts
 // wherever F < 1).
 std::vector<std::array<float, 3>> uniform_triples(const std::array<float, 2>& rim)
 {
+    std::vector<std::array<float, 2>> pairs = uniform_pairs();
+    const std::size_t first_random = pairs.size() - random_pairs;
+    pairs.push_back(rim);
     std::vector<std::array<float, 3>> triples;
-    auto add = [&](float u1, float u2, float middle) {
+    for (std::size_t j = 0; j < pairs.size(); ++j) {
+        const bool random = j >= first_random && j < first_random + random_pairs;
+        const float middle = random ? float(ggxref::uniforms(2027, j - first_random)[0]) : 0.5f;
         for (float u3 : {0.0f, middle, one_below})
-            triples.push_back({u1, u2, u3});
-    };
-    for (float a : {0.0f, 0.5f, one_below})
-        for (float b : {0.0f, 0.5f, one_below})
-            add(a, b, 0.5f);
-    for (std::uint64_t k = 0; k < 8; ++k) {
-        std::array<double, 2> u = ggxref::uniforms(2026, k);
-        add(float(u[0]), float(u[1]), float(ggxref::uniforms(2027, k)[0]));
+            triples.push_back({pairs[j][0], pairs[j][1], u3});
     }
-    add(rim[0], rim[1], 0.5f);
     return triples;
 }
 
@@ -124,7 +122,6 @@ std::vector<std::array<float, 3>> uniform_triples(const std::array<float, 2>& ri
 
 StressAxes stress_axes()
 {
-    const double rad = 3.14159265358979323846 / 180.0;
     return axes_of({1.0, std::cos(30 * rad), std::cos(60 * rad), std::cos(85 * rad), std::cos(89 * rad), 1e-4, 1e-7,
                     0.0, std::cos(95 * rad), std::cos(120 * rad), std::cos(150 * rad), std::cos(179 * rad), -1.0});
 }
@@ -155,7 +152,6 @@ std::vector<float> dielectric_etas()
 
 StressAxes dielectric_axes(const std::vector<float>& etas)
 {
-    const double rad = 3.14159265358979323846 / 180.0;
     std::vector<double> cos_theta{1.0, -1.0, 1e-4, -1e-4, 1e-7, -1e-7, 0.0};
     for (double degrees : {30.0, 45.0, 60.0, 85.0, 89.0, 91.0, 95.0, 120.0, 135.0, 150.0, 179.0})
         cos_theta.push_back(std::cos(degrees * rad));

@@ -107,6 +107,7 @@ void add_cells(Cell& total, const Cell* cells, std::size_t count)
 {
     for (std::size_t j = 0; j < count; ++j) {
         total.cases += cells[j].cases;
+        total.failures.resize(cells[j].failures.size());
         for (std::size_t k = 0; k < total.failures.size(); ++k)
             total.failures[k] += cells[j].failures[k];
     }

@@ -4,7 +4,6 @@
 // ggx_pdf_dielectric_method), run by the host compiler.
 #include "ggx_dielectric.h"
 #include "ggx_samplers.h"
-#include "stress_dielectric.hpp"
 #include "stress_run.hpp"
 
 namespace ggxapp {
@@ -32,27 +31,14 @@ StressOutcome dielectric_outcome_of(int method, const StressCase& c)
 
 } // namespace
 
-StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
-{
-    StressMap map(axes.alphas.size() * axes.cos_theta.size());
-    for (const StressCase& c : cases)
-        count_outcome(map, axes, c, outcome_of(static_cast<int>(method), c));
-    return map;
-}
-
-std::vector<StressOutcome> dielectric::cpp_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases)
+std::vector<StressOutcome> cpp_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases)
 {
     std::vector<StressOutcome> outcomes;
     outcomes.reserve(cases.size());
     for (const StressCase& c : cases)
-        outcomes.push_back(dielectric_outcome_of(static_cast<int>(method), c));
+        outcomes.push_back(c.eta != 0.0f ? dielectric_outcome_of(static_cast<int>(method), c)
+                                         : outcome_of(static_cast<int>(method), c));
     return outcomes;
-}
-
-dielectric::Map dielectric::cpp_map(ggxcl::Method method, const std::vector<StressCase>& cases,
-                                    const StressAxes& axes)
-{
-    return map_of(cpp_outcomes(method, cases), cases, axes);
 }
 
 } // namespace ggxapp

@@ -33,27 +33,22 @@ const char* kind_name(int kind);
 // invalid and transmitted are counts, not failures.
 bool is_failure(int kind);
 
-using Counts = ggxapp::Counts<kinds>;
-// Counts per cell: cell (eta layer e, row, column) at (e * rows + row) * columns + column.
-using Map = std::vector<Counts>;
+// Counts per cell, a count per Kind: cell (eta layer e, row, column) at (e * rows + row) * columns + column.
+using Counts = ggxapp::Counts;
+using Map = StressMap;
 
 std::array<bool, kinds> classify(const StressOutcome& outcome, const StressCase& c);
 
-// What each side returns for each case: the device (guards = false builds the kernel with
-// GGX_GUARDS=0), the double reference, the device headers compiled as C++.
-std::vector<StressOutcome> device_outcomes(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
-                                           const std::vector<StressCase>& cases, bool guards = true);
-std::vector<StressOutcome> host_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases);
-std::vector<StressOutcome> cpp_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases);
+// What each side returns for each case: stress_run.hpp's, which run a case whose eta is not 0 (every
+// case of dielectric_cases) as a dielectric's.
+using ggxapp::cpp_outcomes;
+using ggxapp::device_outcomes;
+using ggxapp::host_outcomes;
 
-// The same counted per cell.
+// The same classified and counted per cell; guards = false builds the kernel with GGX_GUARDS=0.
 Map device_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true);
 Map host_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
 Map cpp_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
-Map map_of(const std::vector<StressOutcome>& outcomes, const std::vector<StressCase>& cases, const StressAxes& axes);
-
-// Adds one classified outcome of case c to its cell.
-void count(Map& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome);
 
 } // namespace ggxapp::dielectric

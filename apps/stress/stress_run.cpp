@@ -12,51 +12,26 @@ namespace ggxapp {
 
 namespace {
 
-constexpr int input_planes = 10, output_planes = 10;
-
-bool all_finite(const StressOutcome& s)
+// Whether m, o, pdf_m, pdf_o and the weight are finite; for a dielectric also its recomputed pdf and its
+// weight in importance transport (a conductor's recomputed pdf is judged by pdf_mismatch).
+bool all_finite(const StressOutcome& s, bool dielectric)
 {
-    double values[] = {s.m[0], s.m[1], s.m[2], s.o[0], s.o[1], s.o[2], s.pdf_m, s.pdf_o, s.weight};
-    for (double v : values)
-        if (!std::isfinite(v))
-            return false;
-    return true;
+    const double values[] = {s.m[0],  s.m[1],  s.m[2],   s.o[0],      s.o[1],           s.o[2],
+                             s.pdf_m, s.pdf_o, s.weight, s.pdf_again, s.weight_importance};
+    return std::all_of(values, values + (dielectric ? 11 : 9), [](double v) { return std::isfinite(v); });
 }
 
-double dot3(const double* a, const ggxcl::Vec3& n)
-{
-    return a[0] * n.x + a[1] * n.y + a[2] * n.z;
-}
+double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-double length3(const double* a)
-{
-    return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
+double length(const double* a) { return std::sqrt(dot(a, a)); }
 
-std::vector<float> planar_inputs(const std::vector<StressCase>& cases)
+// m or o off unit length by more than 1e-5.
+bool off_unit(const StressOutcome& s)
 {
-    const std::size_t n = cases.size();
-    std::vector<float> in(input_planes * n);
-    for (std::size_t j = 0; j < n; ++j) {
-        const StressCase& c = cases[j];
-        float values[input_planes] = {c.ax,       c.ay,       c.view.x, c.view.y, c.view.z,
-                                      c.normal.x, c.normal.y, c.normal.z, c.u1,   c.u2};
-        for (int k = 0; k < input_planes; ++k)
-            in[k * n + j] = values[k];
-    }
-    return in;
+    return std::fabs(length(s.m) - 1.0) > 1e-5 || std::fabs(length(s.o) - 1.0) > 1e-5;
 }
 
 } // namespace
-
-void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome)
-{
-    CellCounts& cell = map[std::size_t(c.row) * axes.cos_theta.size() + c.column];
-    ++cell.cases;
-    std::array<bool, failure_kinds> kinds = classify(outcome, c.normal);
-    for (int k = 0; k < failure_kinds; ++k)
-        cell.failures[k] += kinds[k];
-}
 
 const char* failure_name(int kind)
 {
@@ -68,16 +43,17 @@ const char* failure_name(int kind)
 std::array<bool, failure_kinds> classify(const StressOutcome& s, const ggxcl::Vec3& normal)
 {
     std::array<bool, failure_kinds> kinds{};
-    kinds[nan_inf] = !all_finite(s);
+    kinds[nan_inf] = !all_finite(s, false);
     if (kinds[nan_inf])
         return kinds;
     kinds[fallback] = s.pdf_m == 0.0 && s.pdf_o == 0.0 && s.weight == 0.0 && s.m[0] == normal.x &&
                       s.m[1] == normal.y && s.m[2] == normal.z;
     if (kinds[fallback])
         return kinds;
-    kinds[not_unit] = std::fabs(length3(s.m) - 1.0) > 1e-5 || std::fabs(length3(s.o) - 1.0) > 1e-5;
-    kinds[m_below] = dot3(s.m, normal) <= 0.0;
-    kinds[wasted] = dot3(s.o, normal) <= 0.0;
+    const double n[3] = {normal.x, normal.y, normal.z};
+    kinds[not_unit] = off_unit(s);
+    kinds[m_below] = dot(s.m, n) <= 0.0;
+    kinds[wasted] = dot(s.o, n) <= 0.0;
     kinds[pdf_nonpositive] = s.pdf_o < 0.0 || s.pdf_m < 0.0;  // no density is negative, wasted or not
     if (!kinds[wasted]) {
         kinds[pdf_nonpositive] = !(s.pdf_o > 0.0) || !(s.pdf_m > 0.0);
@@ -87,57 +63,11 @@ std::array<bool, failure_kinds> classify(const StressOutcome& s, const ggxcl::Ve
     return kinds;
 }
 
-StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
-                            const std::vector<StressCase>& cases, const StressAxes& axes, bool guards,
-                            const ggxcl::UserSampler* user)
-{
-    const std::size_t n = cases.size();
-    std::vector<float> out =
-        device.stress({method, precision, guards, false, user}, planar_inputs(cases), std::uint32_t(n));
-    StressMap map(axes.alphas.size() * axes.cos_theta.size());
-    for (std::size_t j = 0; j < n; ++j) {
-        auto at = [&](int k) { return double(out[k * n + j]); };
-        StressOutcome s{{at(0), at(1), at(2)}, {at(3), at(4), at(5)}, at(6), at(7), at(8), at(9)};
-        count_outcome(map, axes, cases[j], s);
-    }
-    return map;
-}
-
-StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
-{
-    StressMap map(axes.alphas.size() * axes.cos_theta.size());
-    ggxref::Method ref = ggxbridge::reference_method(method);
-    for (const StressCase& c : cases) {
-        // The float vectors as they are (not the bridge's unit doubles): a view exactly opposite
-        // the normal in float stays exactly opposite, where unit doubles can miss -1 by rounding.
-        ggxref::Params p{c.ax, c.ay, {c.view.x, c.view.y, c.view.z}, {c.normal.x, c.normal.y, c.normal.z}};
-        ggxref::Sample r = ggxref::sample(ref, p, c.u1, c.u2);
-        StressOutcome s{{r.m.x, r.m.y, r.m.z}, {r.o.x, r.o.y, r.o.z}, r.pdf_m, r.pdf_o, r.weight,
-                        ggxref::pdf_o(ref, p, r.o)};
-        count_outcome(map, axes, c, s);
-    }
-    return map;
-}
-
-// ---- The rough dielectric's map (stress_dielectric.hpp) ----
+// ---- The rough dielectric's classification (stress_dielectric.hpp) ----
 
 namespace dielectric {
 
 namespace {
-
-constexpr int input_planes = 12, output_planes = 11;
-
-double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-bool all_finite(const StressOutcome& s)
-{
-    double values[] = {s.m[0],  s.m[1],  s.m[2],   s.o[0],      s.o[1],           s.o[2],
-                       s.pdf_m, s.pdf_o, s.weight, s.pdf_again, s.weight_importance};
-    for (double v : values)
-        if (!std::isfinite(v))
-            return false;
-    return true;
-}
 
 // Within 1e-6 of the surface about a tilted normal (caps-iso's world space), float and double may
 // disagree on which side a direction is.
@@ -257,7 +187,7 @@ std::array<bool, kinds> judge(const StressOutcome& s, const StressCase& c, const
 {
     std::array<bool, kinds> k{};
     const bool valid = s.pdf_o > 0.0;
-    k[not_unit] = std::fabs(std::sqrt(dot(s.m, s.m)) - 1.0) > 1e-5 || std::fabs(std::sqrt(dot(s.o, s.o)) - 1.0) > 1e-5;
+    k[not_unit] = off_unit(s);
     k[m_side] = !(r.sign * dot(s.m, n) > 0.0);
     k[invalid] = !valid;
     k[transmitted] = valid && r.across;
@@ -283,7 +213,7 @@ int failures(const std::array<bool, kinds>& k)
 std::array<bool, kinds> classify(const StressOutcome& s, const StressCase& c)
 {
     std::array<bool, kinds> k{};
-    k[nan_inf] = !all_finite(s);
+    k[nan_inf] = !all_finite(s, true);
     const double n[3] = {c.normal.x, c.normal.y, c.normal.z};
     k[fallback] = !k[nan_inf] && is_fallback(s, n, view_side(c));
     if (k[nan_inf] || k[fallback])
@@ -298,82 +228,125 @@ std::array<bool, kinds> classify(const StressOutcome& s, const StressCase& c)
     return k;
 }
 
-void count(Map& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome)
-{
-    const std::size_t layer = std::find(axes.etas.begin(), axes.etas.end(), c.eta) - axes.etas.begin();
-    Counts& cell = map.at((layer * axes.alphas.size() + c.row) * axes.cos_theta.size() + c.column);
-    ++cell.cases;
-    std::array<bool, kinds> found = classify(outcome, c);
-    for (int k = 0; k < kinds; ++k)
-        cell.failures[k] += found[k];
-}
+} // namespace dielectric
+
+// ---- The runs and their maps ----
 
 namespace {
 
-std::vector<float> planar_inputs(const std::vector<StressCase>& cases)
+// The cases as Backend::stress takes them, plane k holding input k of every case: ax, ay, the view,
+// the normal, u1, u2 (10 planes), and for a dielectric u3 and eta (12).
+std::vector<float> planar_inputs(const std::vector<StressCase>& cases, bool dielectric)
 {
-    const std::size_t n = cases.size();
-    std::vector<float> in(input_planes * n);
+    const std::size_t n = cases.size(), planes = dielectric ? 12 : 10;
+    std::vector<float> in(planes * n);
     for (std::size_t j = 0; j < n; ++j) {
         const StressCase& c = cases[j];
-        float values[input_planes] = {c.ax,       c.ay,       c.view.x,   c.view.y, c.view.z, c.normal.x,
-                                      c.normal.y, c.normal.z, c.u1,       c.u2,     c.u3,     c.eta};
-        for (int k = 0; k < input_planes; ++k)
+        const float values[] = {c.ax,       c.ay,       c.view.x, c.view.y, c.view.z, c.normal.x,
+                                c.normal.y, c.normal.z, c.u1,     c.u2,     c.u3,     c.eta};
+        for (std::size_t k = 0; k < planes; ++k)
             in[k * n + j] = values[k];
     }
     return in;
 }
 
+// Each outcome classified and counted in its case's cell, (layer * rows + row) * columns + column: the
+// layer that of the case's eta in axes.etas (a conductor's map has no etas: layer 0).
+template <std::size_t Kinds>
+StressMap map_of(const std::vector<StressOutcome>& outcomes, const std::vector<StressCase>& cases,
+                 const StressAxes& axes, std::array<bool, Kinds> (*classify)(const StressOutcome&, const StressCase&))
+{
+    const std::size_t rows = axes.alphas.size(), columns = axes.cos_theta.size();
+    const std::size_t layers = std::max<std::size_t>(axes.etas.size(), 1);
+    StressMap map(layers * rows * columns, {0, std::vector<std::uint64_t>(Kinds)});
+    for (std::size_t j = 0; j < cases.size(); ++j) {
+        const StressCase& c = cases[j];
+        const std::size_t layer = std::find(axes.etas.begin(), axes.etas.end(), c.eta) - axes.etas.begin();
+        Counts& cell = map.at((layer * rows + c.row) * columns + c.column);
+        ++cell.cases;
+        const std::array<bool, Kinds> found = classify(outcomes[j], c);
+        for (std::size_t k = 0; k < Kinds; ++k)
+            cell.failures[k] += found[k];
+    }
+    return map;
+}
+
+std::array<bool, failure_kinds> classify_case(const StressOutcome& s, const StressCase& c)
+{
+    return classify(s, c.normal);
+}
+
 } // namespace
 
 std::vector<StressOutcome> device_outcomes(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
-                                           const std::vector<StressCase>& cases, bool guards)
+                                           const std::vector<StressCase>& cases, bool guards,
+                                           const ggxcl::UserSampler* user)
 {
     const std::size_t n = cases.size();
-    std::vector<float> out =
-        device.stress({method, precision, guards, true, nullptr}, planar_inputs(cases), std::uint32_t(n));
+    const bool dielectric = n > 0 && cases.front().eta != 0.0f;
+    const std::vector<float> out = device.stress({method, precision, guards, dielectric, user},
+                                                 planar_inputs(cases, dielectric), std::uint32_t(n));
     std::vector<StressOutcome> outcomes(n);
     for (std::size_t j = 0; j < n; ++j) {
-        auto at = [&](int k) { return double(out[k * n + j]); };
-        outcomes[j] = {{at(0), at(1), at(2)}, {at(3), at(4), at(5)}, at(6), at(7), at(8), at(9), at(10)};
+        auto at = [&](int k) { return double(out[k * n + j]); };  // 10 planes, a dielectric's 11
+        outcomes[j] = {{at(0), at(1), at(2)}, {at(3), at(4), at(5)}, at(6), at(7), at(8), at(9),
+                       dielectric ? at(10) : 0.0};
     }
     return outcomes;
-}
-
-Map device_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
-               const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
-{
-    return map_of(device_outcomes(device, method, precision, cases, guards), cases, axes);
 }
 
 std::vector<StressOutcome> host_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases)
 {
     std::vector<StressOutcome> outcomes;
     outcomes.reserve(cases.size());
-    ggxref::Method ref = ggxbridge::reference_method(method);
+    const ggxref::Method ref = ggxbridge::reference_method(method);
     for (const StressCase& c : cases) {
-        ggxref::Params p{c.ax, c.ay, {c.view.x, c.view.y, c.view.z}, {c.normal.x, c.normal.y, c.normal.z}};
-        ggxref::Sample r = ggxref::dielectric_sample(ref, p, c.eta, true, c.u1, c.u2, c.u3);
-        ggxref::Sample imp = ggxref::dielectric_sample(ref, p, c.eta, false, c.u1, c.u2, c.u3);
-        outcomes.push_back({{r.m.x, r.m.y, r.m.z}, {r.o.x, r.o.y, r.o.z}, r.pdf_m, r.pdf_o, r.weight,
-                            ggxref::dielectric_pdf_o(ref, p, c.eta, r.o), imp.weight});
+        // The float vectors as they are (not the bridge's unit doubles): a view exactly opposite
+        // the normal in float stays exactly opposite, where unit doubles can miss -1 by rounding.
+        const ggxref::Params p{c.ax, c.ay, {c.view.x, c.view.y, c.view.z}, {c.normal.x, c.normal.y, c.normal.z}};
+        const bool dielectric = c.eta != 0.0f;
+        const ggxref::Sample r = dielectric ? ggxref::dielectric_sample(ref, p, c.eta, true, c.u1, c.u2, c.u3)
+                                            : ggxref::sample(ref, p, c.u1, c.u2);
+        const double again = dielectric ? ggxref::dielectric_pdf_o(ref, p, c.eta, r.o) : ggxref::pdf_o(ref, p, r.o);
+        const double importance =
+            dielectric ? ggxref::dielectric_sample(ref, p, c.eta, false, c.u1, c.u2, c.u3).weight : 0.0;
+        outcomes.push_back(
+            {{r.m.x, r.m.y, r.m.z}, {r.o.x, r.o.y, r.o.z}, r.pdf_m, r.pdf_o, r.weight, again, importance});
     }
     return outcomes;
 }
 
-Map map_of(const std::vector<StressOutcome>& outcomes, const std::vector<StressCase>& cases, const StressAxes& axes)
+StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
+                            const std::vector<StressCase>& cases, const StressAxes& axes, bool guards,
+                            const ggxcl::UserSampler* user)
 {
-    Map map(axes.etas.size() * axes.alphas.size() * axes.cos_theta.size());
-    for (std::size_t j = 0; j < cases.size(); ++j)
-        count(map, axes, cases[j], outcomes[j]);
-    return map;
+    return map_of(device_outcomes(device, method, precision, cases, guards, user), cases, axes, classify_case);
 }
 
-Map host_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
+StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
 {
-    return map_of(host_outcomes(method, cases), cases, axes);
+    return map_of(host_outcomes(method, cases), cases, axes, classify_case);
 }
 
-} // namespace dielectric
+StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
+{
+    return map_of(cpp_outcomes(method, cases), cases, axes, classify_case);
+}
+
+dielectric::Map dielectric::device_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
+                                       const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
+{
+    return map_of(device_outcomes(device, method, precision, cases, guards), cases, axes, classify);
+}
+
+dielectric::Map dielectric::host_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
+{
+    return map_of(host_outcomes(method, cases), cases, axes, classify);
+}
+
+dielectric::Map dielectric::cpp_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
+{
+    return map_of(cpp_outcomes(method, cases), cases, axes, classify);
+}
 
 } // namespace ggxapp

@@ -34,28 +34,34 @@ struct StressOutcome {
 };
 std::array<bool, failure_kinds> classify(const StressOutcome& outcome, const ggxcl::Vec3& normal);
 
-template <std::size_t Kinds>
+// One cell of a map: its cases, and per kind (FailureKind; a dielectric's map: dielectric::Kind)
+// the cases of that kind.
 struct Counts {
     std::uint64_t cases = 0;
-    std::array<std::uint64_t, Kinds> failures{};
+    std::vector<std::uint64_t> failures;
 };
-using CellCounts = Counts<failure_kinds>;
+using CellCounts = Counts;
 
-// Counts per cell, row-major: cell (row, column) at row * columns + column.
-using StressMap = std::vector<CellCounts>;
+// Counts per cell: cell (row, column) at row * columns + column (a dielectric's map: a layer per eta).
+using StressMap = std::vector<Counts>;
 
-// The map's cases on `device` (Backend::stress: ggx_stress.cl on OpenCL, its shader on Vulkan);
-// guards = false builds the kernel with GGX_GUARDS=0 (what the map looks like without them).
-// Method::user runs `user`'s device functions.
+// What each side returns for each case, a dielectric's where its eta is not 0: the device's (Backend::stress
+// with ggx_stress.cl on OpenCL, its shader on Vulkan; the cases all a conductor's or all a dielectric's;
+// guards = false builds the kernel with GGX_GUARDS=0, Method::user runs `user`'s device functions), the
+// double reference's, and the device headers' compiled as C++ by this program's compiler (stress_cpp.cpp:
+// the same functions the kernel calls, on the host).
+std::vector<StressOutcome> device_outcomes(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
+                                           const std::vector<StressCase>& cases, bool guards = true,
+                                           const ggxcl::UserSampler* user = nullptr);
+std::vector<StressOutcome> host_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases);
+std::vector<StressOutcome> cpp_outcomes(ggxcl::Method method, const std::vector<StressCase>& cases);
+
+// The conductor's map of the same, each outcome classified; guards = false shows what the map looks
+// like without the guards.
 StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true,
                             const ggxcl::UserSampler* user = nullptr);
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
-// The device headers compiled as C++ by this program's compiler (stress_cpp.cpp): the same
-// functions the kernel calls, on the host.
 StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
-
-// Adds one classified outcome of case c to its cell of the map.
-void count_outcome(StressMap& map, const StressAxes& axes, const StressCase& c, const StressOutcome& outcome);
 
 } // namespace ggxapp

@@ -71,39 +71,35 @@ std::vector<float> parse_etas(const std::string& text)
     return etas;
 }
 
-// One CSV row per cell of `cells` (row-major over alpha x theta), each led by `lead`.
-template <class Cell>
-void append_cells(std::ostringstream& csv, const std::string& lead, const StressAxes& axes, const Cell* cells)
-{
-    for (std::size_t r = 0; r < axes.alphas.size(); ++r)
-        for (std::size_t c = 0; c < axes.cos_theta.size(); ++c) {
-            const Cell& cell = cells[r * axes.cos_theta.size() + c];
-            csv << lead << axes.alphas[r] << "," << axes.theta_degrees[c] << "," << cell.cases;
-            for (std::uint64_t n : cell.failures)
-                csv << "," << n;
-            csv << "\n";
-        }
-}
+// The kinds a map counts, by name: the conductor's FailureKind or the dielectric's Kind.
+struct KindNames {
+    int count;
+    const char* (*name)(int);
+};
 
+// One CSV row per cell of `map` (row-major over alpha x theta), each led by method, side and precision;
+// a dielectric's map (the axes have etas) a layer of cells per eta, its rows with an eta column.
 void append_rows(std::ostringstream& csv, const std::string& method, const char* side, const std::string& precision,
                  const StressAxes& axes, const StressMap& map)
 {
-    append_cells(csv, method + "," + side + "," + precision + ",", axes, map.data());
-}
-
-void append_dielectric_rows(std::ostringstream& csv, const std::string& method, const char* side,
-                            const std::string& precision, const StressAxes& axes, const dielectric::Map& map)
-{
-    const std::size_t layer = axes.alphas.size() * axes.cos_theta.size();
-    for (std::size_t e = 0; e < axes.etas.size(); ++e) {
+    const std::size_t columns = axes.cos_theta.size(), layer = axes.alphas.size() * columns;
+    for (std::size_t e = 0; e < std::max<std::size_t>(axes.etas.size(), 1); ++e) {
         std::ostringstream lead;
-        lead << std::setprecision(9) << method << "," << side << "," << precision << "," << axes.etas[e] << ",";
-        append_cells(csv, lead.str(), axes, map.data() + e * layer);
+        lead << std::setprecision(9) << method << "," << side << "," << precision << ",";
+        if (!axes.etas.empty())
+            lead << axes.etas[e] << ",";
+        for (std::size_t r = 0; r < axes.alphas.size(); ++r)
+            for (std::size_t c = 0; c < columns; ++c) {
+                const Counts& cell = map[e * layer + r * columns + c];
+                csv << lead.str() << axes.alphas[r] << "," << axes.theta_degrees[c] << "," << cell.cases;
+                for (std::uint64_t n : cell.failures)
+                    csv << "," << n;
+                csv << "\n";
+            }
     }
 }
 
-template <class Cell>
-void add_cells(Cell& total, const Cell* cells, std::size_t count)
+void add_cells(Counts& total, const Counts* cells, std::size_t count)
 {
     for (std::size_t j = 0; j < count; ++j) {
         total.cases += cells[j].cases;
@@ -113,20 +109,12 @@ void add_cells(Cell& total, const Cell* cells, std::size_t count)
     }
 }
 
-template <class Cell>
-void print_total(std::ostream& out, const std::string& label, const char* side, const Cell& total)
+void print_total(std::ostream& out, const std::string& label, const char* side, const Counts& total)
 {
     out << "| " << label << " | " << side << " | " << total.cases;
     for (std::uint64_t n : total.failures)
         out << " | " << n;
     out << " |\n";
-}
-
-void print_totals(std::ostream& out, const std::string& method, const char* side, const StressMap& map)
-{
-    CellCounts total;
-    add_cells(total, map.data(), map.size());
-    print_total(out, method, side, total);
 }
 
 struct StressPlan {
@@ -159,68 +147,63 @@ StressPlan plan_stress(const StressCommand& cmd)
 }
 
 // The header of a totals table (Markdown) whose first column is `first`.
-void print_table_header(std::ostream& out, const std::string& first, int kinds, const char* (*name)(int))
+void print_table_header(std::ostream& out, const std::string& first, const KindNames& kinds)
 {
     out << "| " << first << " | side | cases";
-    for (int k = 0; k < kinds; ++k)
-        out << " | " << name(k);
+    for (int k = 0; k < kinds.count; ++k)
+        out << " | " << kinds.name(k);
     out << " |\n|---|---|---|";
-    for (int k = 0; k < kinds; ++k)
+    for (int k = 0; k < kinds.count; ++k)
         out << "---|";
     out << "\n";
 }
 
-// The CSV's header line and the totals table's header (Markdown).
-void write_headers(std::ostringstream& csv, std::ostream& out)
-{
-    csv << std::setprecision(9) << "method,side,precision,alpha,theta_degrees,cases";
-    for (int k = 0; k < failure_kinds; ++k)
-        csv << "," << failure_name(k);
-    csv << "\n";
-    print_table_header(out, "method", failure_kinds, failure_name);
-}
-
-void run_conductor_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Backend& sampler, std::ostream& out)
-{
-    StressAxes axes = stress_axes();
-    std::ostringstream csv;
-    write_headers(csv, out);
-    for (ggxcl::Method method : plan.methods) {
-        std::string name(ggxcl::method_name(method));
-        std::vector<StressCase> cases = stress_cases(method, axes);
-        StressMap device = device_stress_map(sampler, method, plan.precision, cases, axes);
-        StressMap host = host_stress_map(method, cases, axes);
-        append_rows(csv, name, "device", cmd.precision, axes, device);
-        append_rows(csv, name, "host", "double", axes, host);
-        print_totals(out, name, "device", device);
-        print_totals(out, name, "host", host);
-    }
-    for (const auto& user : plan.users) {  // the device alone: the reference does not know them
-        std::vector<StressCase> cases = stress_cases(ggxcl::Method::user, axes, cmd.isotropic_samplers);
-        StressMap device =
-            device_stress_map(sampler, ggxcl::Method::user, plan.precision, cases, axes, true, user.get());
-        append_rows(csv, user->name(), "device", cmd.precision, axes, device);
-        print_totals(out, user->name(), "device", device);
-    }
-    write_text_file(cmd.out + ".csv", csv.str());
-}
-
-// The dielectric's maps of one method, device and host.
-struct DielectricMaps {
+// The maps of one method or user sampler: the device's and the host reference's (none for a user
+// sampler: the reference does not know it).
+struct MethodMaps {
     std::string method;
-    dielectric::Map device, host;
+    StressMap device, host;
 };
 
+// The maps of `method` over its cases: the dielectric's where the axes have etas.
+MethodMaps maps_of(ggxcl::Backend& sampler, ggxcl::Method method, ggxcl::Precision precision, const StressAxes& axes)
+{
+    const std::string name(ggxcl::method_name(method));
+    if (axes.etas.empty()) {
+        const std::vector<StressCase> cases = stress_cases(method, axes);
+        return {name, device_stress_map(sampler, method, precision, cases, axes), host_stress_map(method, cases, axes)};
+    }
+    const std::vector<StressCase> cases = dielectric_cases(method, axes);
+    return {name, dielectric::device_map(sampler, method, precision, cases, axes),
+            dielectric::host_map(method, cases, axes)};
+}
+
+// The maps' rows in the CSV and their totals in the table, device then host.
+void report(std::ostringstream& csv, std::ostream& out, const std::string& precision, const StressAxes& axes,
+            const MethodMaps& maps)
+{
+    for (const char* side : {"device", "host"}) {
+        const StressMap& map = side[0] == 'd' ? maps.device : maps.host;
+        if (map.empty())
+            continue;
+        append_rows(csv, maps.method, side, side[0] == 'd' ? precision : "double", axes, map);
+        Counts total;
+        add_cells(total, map.data(), map.size());
+        print_total(out, maps.method, side, total);
+    }
+}
+
 // The totals per index over every method run, device and host.
-void print_eta_totals(std::ostream& out, const StressAxes& axes, const std::vector<DielectricMaps>& runs)
+void print_eta_totals(std::ostream& out, const StressAxes& axes, const KindNames& kinds,
+                      const std::vector<MethodMaps>& runs)
 {
     out << "\nPer index, every method together:\n\n";
-    print_table_header(out, "eta", dielectric::kinds, dielectric::kind_name);
+    print_table_header(out, "eta", kinds);
     const std::size_t layer = axes.alphas.size() * axes.cos_theta.size();
     for (std::size_t e = 0; e < axes.etas.size(); ++e)
         for (const char* side : {"device", "host"}) {
-            dielectric::Counts total;
-            for (const DielectricMaps& run : runs)
+            Counts total;
+            for (const MethodMaps& run : runs)
                 add_cells(total, (side[0] == 'd' ? run.device : run.host).data() + e * layer, layer);
             std::ostringstream label;
             label << std::setprecision(9) << axes.etas[e];
@@ -228,37 +211,38 @@ void print_eta_totals(std::ostream& out, const StressAxes& axes, const std::vect
         }
 }
 
-void run_dielectric_stress(const StressCommand& cmd, const StressPlan& plan, ggxcl::Backend& sampler, std::ostream& out)
+// Every method's maps (with --eta the dielectric's, the methods without a dielectric sampler listed as
+// refused, then the totals per index), then the user samplers' device maps: the CSV and the totals.
+void run_maps(const StressCommand& cmd, const StressPlan& plan, ggxcl::Backend& sampler, std::ostream& out)
 {
-    StressAxes axes = dielectric_axes(plan.etas);
+    const bool per_eta = !plan.etas.empty();
+    const StressAxes axes = per_eta ? dielectric_axes(plan.etas) : stress_axes();
+    const KindNames kinds = per_eta ? KindNames{dielectric::kinds, dielectric::kind_name}
+                                    : KindNames{failure_kinds, failure_name};
     std::ostringstream csv;
-    csv << std::setprecision(9) << "method,side,precision,eta,alpha,theta_degrees,cases";
-    for (int k = 0; k < dielectric::kinds; ++k)
-        csv << "," << dielectric::kind_name(k);
+    csv << std::setprecision(9) << "method,side,precision," << (per_eta ? "eta," : "") << "alpha,theta_degrees,cases";
+    for (int k = 0; k < kinds.count; ++k)
+        csv << "," << kinds.name(k);
     csv << "\n";
-    print_table_header(out, "method", dielectric::kinds, dielectric::kind_name);
-    std::vector<DielectricMaps> runs;
+    print_table_header(out, "method", kinds);
+    std::vector<MethodMaps> runs;
     for (ggxcl::Method method : plan.methods) {
-        std::string name(ggxcl::method_name(method));
-        if (!ggxcl::method_traits(method).dielectric) {
-            out << "| " << name << " | refused: " << ggxcl::method_traits(method).limits << " |\n";
+        if (per_eta && !ggxcl::method_traits(method).dielectric) {
+            out << "| " << ggxcl::method_name(method) << " | refused: " << ggxcl::method_traits(method).limits
+                << " |\n";
             continue;
         }
-        std::vector<StressCase> cases = dielectric_cases(method, axes);
-        DielectricMaps run{name, dielectric::device_map(sampler, method, plan.precision, cases, axes),
-                           dielectric::host_map(method, cases, axes)};
-        append_dielectric_rows(csv, name, "device", cmd.precision, axes, run.device);
-        append_dielectric_rows(csv, name, "host", "double", axes, run.host);
-        for (const char* side : {"device", "host"}) {
-            dielectric::Counts total;
-            const dielectric::Map& map = side[0] == 'd' ? run.device : run.host;
-            add_cells(total, map.data(), map.size());
-            print_total(out, name, side, total);
-        }
-        runs.push_back(std::move(run));
+        runs.push_back(maps_of(sampler, method, plan.precision, axes));
+        report(csv, out, cmd.precision, axes, runs.back());
     }
-    if (!runs.empty())
-        print_eta_totals(out, axes, runs);
+    for (const auto& user : plan.users) {  // conductors only (plan_stress)
+        std::vector<StressCase> cases = stress_cases(ggxcl::Method::user, axes, cmd.isotropic_samplers);
+        report(csv, out, cmd.precision, axes,
+               {user->name(),
+                device_stress_map(sampler, ggxcl::Method::user, plan.precision, cases, axes, true, user.get()), {}});
+    }
+    if (per_eta && !runs.empty())
+        print_eta_totals(out, axes, kinds, runs);
     write_text_file(cmd.out + ".csv", csv.str());
 }
 
@@ -303,10 +287,7 @@ void run_stress(const StressCommand& cmd, const StressPlan& plan)
         check_writable_folder("--html", cmd.html);
     const std::unique_ptr<ggxcl::Backend> device = plan.api.open();
     std::ostringstream totals;
-    if (plan.etas.empty())
-        run_conductor_stress(cmd, plan, *device, totals);
-    else
-        run_dielectric_stress(cmd, plan, *device, totals);
+    run_maps(cmd, plan, *device, totals);
     std::cout << totals.str();
     if (!cmd.no_png)
         run_plot_script("plot_stress.py", {cmd.out + ".csv", cmd.out});

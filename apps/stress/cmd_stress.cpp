@@ -302,10 +302,9 @@ Prepare add_stress_command(CLI::App& app)
     auto s = std::make_shared<StressCommand>();
     CLI::App* cmd = app.add_subcommand("stress", "Stability map: failures of every method over alpha x view x uniforms, "
                                                  "device and host reference");
-    cmd->add_option("--methods", s->methods, "comma-separated methods, or all")->capture_default_str();
+    cmd->add_option("--methods", s->methods, "comma-separated methods, or all");
     s->user.add_to(*cmd);
-    cmd->add_option("--precision", s->precision, "precision mode on the device: one of " + ggxcl::precision_list())
-        ->capture_default_str();
+    cmd->add_option("--precision", s->precision, "precision mode on the device: one of " + ggxcl::precision_list());
     cmd->add_option("--device", s->device, "device index or name part (see `ggx devices`)");
     cmd->add_option("--eta", s->eta, "the rough dielectric's map instead, over these relative indices (index below "
                                      "the surface over index above; comma-separated, each > 0 and != 1), or all: "

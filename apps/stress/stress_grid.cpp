@@ -100,10 +100,10 @@ ggxcl::Vec3 view_from_above(const ggxcl::Vec3& view, const ggxref::Vec3& n)
     return {float(v.x), float(v.y), float(v.z)};
 }
 
-// The dielectric's uniforms: stress_cases' pairs (uniform_pairs, then the rim pair), each with
-// u3 = 0 (reflects wherever F > 0), 1/2 (random for the random pairs) and 1 - 2^-24 (refracts
-// wherever F < 1).
-std::vector<std::array<float, 3>> uniform_triples(const std::array<float, 2>& rim)
+// The uniforms of one case: uniform_pairs, then the rim pair, with u3 = 0; a dielectric's each also
+// with u3 = 1/2 (random for the random pairs) and 1 - 2^-24 (u3 = 0 reflects wherever F > 0,
+// 1 - 2^-24 refracts wherever F < 1).
+std::vector<std::array<float, 3>> uniform_triples(const std::array<float, 2>& rim, bool dielectric)
 {
     std::vector<std::array<float, 2>> pairs = uniform_pairs();
     const std::size_t first_random = pairs.size() - random_pairs;
@@ -112,10 +112,30 @@ std::vector<std::array<float, 3>> uniform_triples(const std::array<float, 2>& ri
     for (std::size_t j = 0; j < pairs.size(); ++j) {
         const bool random = j >= first_random && j < first_random + random_pairs;
         const float middle = random ? float(ggxref::uniforms(2027, j - first_random)[0]) : 0.5f;
-        for (float u3 : {0.0f, middle, one_below})
+        for (float u3 : dielectric ? std::vector<float>{0.0f, middle, one_below} : std::vector<float>{0.0f})
             triples.push_back({pairs[j][0], pairs[j][1], u3});
     }
     return triples;
+}
+
+// The cases of every eta in `etas` (0: a conductor's), roughness row and view column: per normal and
+// roughness pair, each of uniform_triples (a dielectric's rim pair for the view seen from above).
+std::vector<StressCase> grid_cases(ggxcl::Method method, const StressAxes& axes, const std::vector<float>& etas,
+                                   bool isotropic)
+{
+    std::vector<StressCase> cases;
+    for (float eta : etas)
+        for (int row = 0; row < int(axes.alphas.size()); ++row)
+            for (int column = 0; column < int(axes.cos_theta.size()); ++column)
+                for (const ggxref::Vec3& n : normals_for(method))
+                    for (const auto& alpha : roughness_pairs(method, axes.alphas[row], isotropic)) {
+                        const ggxcl::Vec3 view = view_about(n, axes.cos_theta[column]);
+                        const ggxcl::Vec3 normal{float(n.x), float(n.y), float(n.z)};
+                        const ggxcl::Vec3 rim_view = eta != 0.0f ? view_from_above(view, n) : view;
+                        for (const auto& u : uniform_triples(rim_pair(method, alpha, rim_view, n), eta != 0.0f))
+                            cases.push_back({alpha[0], alpha[1], view, normal, u[0], u[1], row, column, u[2], eta});
+                    }
+    return cases;
 }
 
 } // namespace
@@ -128,21 +148,7 @@ StressAxes stress_axes()
 
 std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axes, bool isotropic)
 {
-    std::vector<StressCase> cases;
-    const std::vector<std::array<float, 2>> uniforms = uniform_pairs();
-    for (int row = 0; row < int(axes.alphas.size()); ++row)
-        for (int column = 0; column < int(axes.cos_theta.size()); ++column) {
-            for (const ggxref::Vec3& n : normals_for(method))
-                for (const auto& alpha : roughness_pairs(method, axes.alphas[row], isotropic)) {
-                    const ggxcl::Vec3 view = view_about(n, axes.cos_theta[column]);
-                    std::vector<std::array<float, 2>> pairs = uniforms;
-                    pairs.push_back(rim_pair(method, alpha, view, n));
-                    for (const auto& u : pairs)
-                        cases.push_back({alpha[0], alpha[1], view, {float(n.x), float(n.y), float(n.z)}, u[0], u[1],
-                                         row, column});
-                }
-        }
-    return cases;
+    return grid_cases(method, axes, {0.0f}, isotropic);
 }
 
 std::vector<float> dielectric_etas()
@@ -163,18 +169,7 @@ StressAxes dielectric_axes(const std::vector<float>& etas)
 
 std::vector<StressCase> dielectric_cases(ggxcl::Method method, const StressAxes& axes)
 {
-    std::vector<StressCase> cases;
-    for (float eta : axes.etas)
-        for (int row = 0; row < int(axes.alphas.size()); ++row)
-            for (int column = 0; column < int(axes.cos_theta.size()); ++column)
-                for (const ggxref::Vec3& n : normals_for(method))
-                    for (const auto& alpha : roughness_pairs(method, axes.alphas[row], false)) {
-                        const ggxcl::Vec3 view = view_about(n, axes.cos_theta[column]);
-                        const ggxcl::Vec3 normal{float(n.x), float(n.y), float(n.z)};
-                        for (const auto& u : uniform_triples(rim_pair(method, alpha, view_from_above(view, n), n)))
-                            cases.push_back({alpha[0], alpha[1], view, normal, u[0], u[1], row, column, u[2], eta});
-                    }
-    return cases;
+    return grid_cases(method, axes, axes.etas, false);
 }
 
 } // namespace ggxapp

@@ -99,6 +99,7 @@ void append_rows(std::ostringstream& csv, const std::string& method, const char*
     }
 }
 
+// Adds `count` cells from `cells` on to `total`.
 void add_cells(Counts& total, const Counts* cells, std::size_t count)
 {
     for (std::size_t j = 0; j < count; ++j) {

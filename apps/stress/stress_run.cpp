@@ -1,5 +1,5 @@
-// stress_run.cpp - device and host runs of the stress cases, classified: the conductor's map
-// (stress_run.hpp) and the rough dielectric's (stress_dielectric.hpp).
+// stress_run.cpp - the stress cases' outcomes on the device and the host reference, classified (the
+// conductor's kinds, stress_run.hpp; the rough dielectric's, stress_dielectric.hpp) and counted per cell.
 #include "stress_run.hpp"
 
 #include <algorithm>

@@ -22,7 +22,9 @@ std::vector<double> per_ring(const std::vector<double>& bins, int phi_bins)
 }
 
 // The edges where the cumulative mass over `fine` (rings between fine_edges, ascending) crosses
-// k / rings of its total, linear within a fine ring.
+// k / rings of its total, linear within a fine ring; the first edge the lower one of the first fine
+// ring with mass, so that a support that begins inside a wide first ring (a lobe that starts at
+// cos theta = -iz, for a view below the horizon) is integrated where it is, not missed.
 std::vector<double> equal_mass_edges(const std::vector<double>& fine_edges, const std::vector<double>& fine,
                                      int rings)
 {
@@ -31,7 +33,10 @@ std::vector<double> equal_mass_edges(const std::vector<double>& fine_edges, cons
         total += std::max(m, 0.0);
     if (!(total > 0.0) || !std::isfinite(total))
         return {};
-    std::vector<double> edges = {fine_edges.front()};
+    std::size_t first = 0;
+    while (first + 1 < fine.size() && !(fine[first] > 0.0))
+        ++first;
+    std::vector<double> edges = {fine_edges[first]};
     double below = 0.0;
     int next = 1;
     for (std::size_t k = 0; k < fine.size() && next < rings; ++k) {

@@ -15,7 +15,7 @@
 namespace ggxbridge {
 
 struct PdfRings {
-    std::vector<double> edges;       // R + 1 values of cos theta, ascending, from 0 to 1
+    std::vector<double> edges;       // R + 1 values of cos theta, ascending, from where the mass begins to 1
     std::vector<double> mass, error;  // each ring's kept probability and its integration error
 };
 

@@ -65,15 +65,16 @@ GGX_INLINE ggx_sample ggx_draw_bounded(ggx_vec3 i, float ax, float ay, float u1,
     float k = ggx_bounded_k(i, ax, ay);
     float lower = k * v.z;
     float inv_sum = ggx_bounded_inv_sum(i, k, ti, ax, ay);        // supplement sec. 2: D / (2 (k iz + t))
-    bool below = i.z < 0.0f;
+    bool below = GGX_BELOW_HORIZON != 0 && i.z < 0.0f;  // false in builds that promise views above
     // The cap z in (-k vz, 1] (supplement sec. 2, q_our), of height 1 + k vz = (k iz + t) / t; below the
-    // horizon k = 1 and the cap is caps' (ggx_cap_height).
+    // horizon k = 1 and the cap is caps' (ggx_cap_height).  It is thin below the horizon and for k < 0
+    // (a > 1, lower = k vz < 0): 1 + k vz nears 0 as a grows at the pole.
 #if GGX_BELOW_HORIZON
     float height = i.z > 0.0f ? ggx_bounded_sum(i, k, ti, ax, ay) * inv_ti : ggx_cap_height(lower, ti, inv_sum, below);
 #else
     float height = ggx_bounded_sum(i, k, ti, ax, ay) * inv_ti;
 #endif
-    ggx_vec3 c = ggx_sample_cap_of_height(lower, height, u1, u2, below);
+    ggx_vec3 c = ggx_sample_cap_of_height(lower, height, u1, u2, lower < 0.0f);
     ggx_vec3 h = ggx_cap_half_vector(c, v, height, u2, below);
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);
 }

@@ -10,17 +10,17 @@
 
 // A direction drawn uniformly from the spherical cap z in (-lower, 1] around +z, whose
 // height 1 + lower the caller gives (ggx_cap_height: without cancellation where lower nears -1):
-// phi = 2 pi u1, z = (1 - u2) height - lower (Dupuy & Benyoub, Listing 3).  Below the horizon
-// (`below`: the view's iz < 0, the cap thin as lower nears -1) the sine comes from 1 - z = u2 height,
-// exactly: sin^2 = u2 height (2 - u2 height), where 1 - z^2 cancels (docs/MATH.md "Views near -n").
-GGX_INLINE ggx_vec3 ggx_sample_cap_of_height(float lower, float height, float u1, float u2, bool below)
+// phi = 2 pi u1, z = (1 - u2) height - lower (Dupuy & Benyoub, Listing 3).  On a cap less than a
+// hemisphere (`thin`: lower < 0, as below the horizon and for bounded's k < 0; the caller says so,
+// false where it cannot be) the sine comes from 1 - z = u2 height, exactly (height = 1 + lower):
+// sin^2 = u2 height (2 - u2 height), where 1 - z^2 cancels as the cap thins (docs/MATH.md "Views
+// near -n").
+GGX_INLINE ggx_vec3 ggx_sample_cap_of_height(float lower, float height, float u1, float u2, bool thin)
 {
     float z = (1.0f - u2) * height - lower;
     float sin2 = 1.0f - z * z;
-#if GGX_BELOW_HORIZON
     float depth = u2 * height;
-    sin2 = below ? depth * (2.0f - depth) : sin2;
-#endif
+    sin2 = thin ? depth * (2.0f - depth) : sin2;
     float sin_theta = ggx_sqrt(ggx_clamp(sin2, 0.0f, 1.0f));
     ggx_sin_cos phi = ggx_sincos_2pi(u1);
     float sin_phi = phi.sine, cos_phi = phi.cosine;
@@ -57,7 +57,7 @@ GGX_INLINE ggx_sample ggx_draw_caps(ggx_vec3 i, float ax, float ay, float u1, fl
     float ti = ggx_t(i, ax, ay);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, ax, ay), 1.0f / ti);   // warp to the hemisphere configuration
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, ax, ay, i);
-    bool below = i.z < 0.0f;
+    bool below = GGX_BELOW_HORIZON != 0 && i.z < 0.0f;  // false in builds that promise views above
     float height = ggx_cap_height(v.z, ti, inv_sum, below);
     ggx_vec3 c = ggx_sample_cap_of_height(v.z, height, u1, u2, below);  // reflected direction in that space (eq. 10)
     ggx_vec3 h = ggx_cap_half_vector(c, v, height, u2, below);          // unnormalized half vector (sec. 3.3)

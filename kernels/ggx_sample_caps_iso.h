@@ -55,7 +55,7 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso_z(ggx_vec3 i, float alpha, float u1, flo
     float ti = ggx_t(i, alpha, alpha);
     ggx_vec3 v = ggx_scale(ggx_stretch(i, alpha, alpha), 1.0f / ti);
     float inv_sum = ggx_inv_iz_plus_t(i.z, ti, alpha, alpha, i);
-    bool below = i.z < 0.0f;
+    bool below = GGX_BELOW_HORIZON != 0 && i.z < 0.0f;  // false in builds that promise views above
     float height = ggx_cap_height(v.z, ti, inv_sum, below);
     ggx_vec3 c = ggx_sample_cap_of_height(v.z, height, u1, u2, below);
     // The half-turn about z, then c + v (ggx_cap_half_vector of the turned c).
@@ -71,7 +71,7 @@ GGX_INLINE ggx_sample ggx_draw_caps_iso(ggx_vec3 n, ggx_vec3 i, float alpha, flo
     ggx_vec3 v = ggx_scale(ggx_stretch_about(i, n, alpha), inv_ti);
     // A cap around +z with the height of v above the surface, then the half-turn onto n.
     float inv_sum = ggx_inv_iz_plus_t_about(i, n, alpha, iz, ti);
-    bool below = iz < 0.0f;
+    bool below = GGX_BELOW_HORIZON != 0 && iz < 0.0f;  // false in builds that promise views above
     float height = ggx_cap_height(iz * inv_ti, ti, inv_sum, below);
     ggx_vec3 c_std = ggx_sample_cap_of_height(iz * inv_ti, height, u1, u2, below);
     ggx_vec3 w = ggx_vec3_make(n.x, n.y, n.z + 1.0f);

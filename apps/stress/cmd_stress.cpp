@@ -130,11 +130,7 @@ StressPlan plan_stress(const StressCommand& cmd)
 {
     StressPlan plan;
     plan.methods = parse_methods(cmd.methods);
-    try {
-        plan.precision = ggxcl::parse_precision(cmd.precision);
-    } catch (const ggxcl::InvalidArgument&) {
-        throw UsageError("--precision", cmd.precision, "one of " + ggxcl::precision_list());
-    }
+    plan.precision = parse_precision_option("--precision", cmd.precision);
     if (!cmd.eta.empty())
         plan.etas = parse_etas(cmd.eta);
     plan.api = cmd.api.choose(cmd.device, cmd.user.files);

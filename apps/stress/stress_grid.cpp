@@ -103,17 +103,22 @@ ggxcl::Vec3 view_from_above(const ggxcl::Vec3& view, const ggxref::Vec3& n)
 // The uniforms of one case: uniform_pairs, then the rim pair, with u3 = 0; a dielectric's each also
 // with u3 = 1/2 (random for the random pairs) and 1 - 2^-24 (u3 = 0 reflects wherever F > 0,
 // 1 - 2^-24 refracts wherever F < 1).
-std::vector<std::array<float, 3>> uniform_triples(const std::array<float, 2>& rim, bool dielectric)
+struct UniformTriple {
+    float u1, u2, u3;
+    bool random;  // of the random pairs
+};
+
+std::vector<UniformTriple> uniform_triples(const std::array<float, 2>& rim, bool dielectric)
 {
     std::vector<std::array<float, 2>> pairs = uniform_pairs();
     const std::size_t first_random = pairs.size() - random_pairs;
     pairs.push_back(rim);
-    std::vector<std::array<float, 3>> triples;
+    std::vector<UniformTriple> triples;
     for (std::size_t j = 0; j < pairs.size(); ++j) {
         const bool random = j >= first_random && j < first_random + random_pairs;
         const float middle = random ? float(ggxref::uniforms(2027, j - first_random)[0]) : 0.5f;
         for (float u3 : dielectric ? std::vector<float>{0.0f, middle, one_below} : std::vector<float>{0.0f})
-            triples.push_back({pairs[j][0], pairs[j][1], u3});
+            triples.push_back({pairs[j][0], pairs[j][1], u3, random});
     }
     return triples;
 }
@@ -132,8 +137,9 @@ std::vector<StressCase> grid_cases(ggxcl::Method method, const StressAxes& axes,
                         const ggxcl::Vec3 view = view_about(n, axes.cos_theta[column]);
                         const ggxcl::Vec3 normal{float(n.x), float(n.y), float(n.z)};
                         const ggxcl::Vec3 rim_view = eta != 0.0f ? view_from_above(view, n) : view;
-                        for (const auto& u : uniform_triples(rim_pair(method, alpha, rim_view, n), eta != 0.0f))
-                            cases.push_back({alpha[0], alpha[1], view, normal, u[0], u[1], row, column, u[2], eta});
+                        for (const UniformTriple& u : uniform_triples(rim_pair(method, alpha, rim_view, n), eta != 0.0f))
+                            cases.push_back({alpha[0], alpha[1], view, normal, u.u1, u.u2, row, column, u.u3, eta,
+                                             u.random});
                     }
     return cases;
 }
@@ -143,7 +149,9 @@ std::vector<StressCase> grid_cases(ggxcl::Method method, const StressAxes& axes,
 StressAxes stress_axes()
 {
     return axes_of({1.0, std::cos(30 * rad), std::cos(60 * rad), std::cos(85 * rad), std::cos(89 * rad), 1e-4, 1e-7,
-                    0.0, std::cos(95 * rad), std::cos(120 * rad), std::cos(150 * rad), std::cos(179 * rad), -1.0});
+                    0.0, std::cos(95 * rad), std::cos(120 * rad), std::cos(150 * rad), std::cos(170 * rad),
+                    std::cos(175 * rad), std::cos(178 * rad), std::cos(179 * rad), std::cos(179.5 * rad),
+                    std::cos(179.9 * rad), -1.0});
 }
 
 std::vector<StressCase> stress_cases(ggxcl::Method method, const StressAxes& axes, bool isotropic)

@@ -26,6 +26,7 @@ struct StressCase {
     float u1, u2;
     int row, column;              // alpha row, theta column of the map
     float u3 = 0.0f, eta = 0.0f;  // a dielectric's lobe uniform and relative index (0: a conductor)
+    bool random = false;          // uniforms drawn at random (not the edge and rim pairs)
 };
 
 struct StressAxes {

@@ -31,12 +31,18 @@ bool off_unit(const StressOutcome& s)
     return std::fabs(length(s.m) - 1.0) > 1e-5 || std::fabs(length(s.o) - 1.0) > 1e-5;
 }
 
+double angle_between(const double* a, const double* b)
+{
+    const double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    return std::atan2(length(c), dot(a, b));
+}
+
 } // namespace
 
 const char* failure_name(int kind)
 {
-    static const char* names[] = {"nan_inf",         "fallback",   "not_unit", "m_below", "wasted",
-                                  "pdf_nonpositive", "pdf_mismatch"};
+    static const char* names[] = {"nan_inf",         "fallback",     "not_unit",   "m_below",        "wasted",
+                                  "pdf_nonpositive", "pdf_mismatch", "inaccurate", "inaccurate_edge"};
     return names[kind];
 }
 
@@ -278,6 +284,24 @@ std::array<bool, failure_kinds> classify_case(const StressOutcome& s, const Stre
 
 } // namespace
 
+StressMap map_against(const std::vector<StressOutcome>& outcomes, const std::vector<StressOutcome>& reference,
+                      const std::vector<StressCase>& cases, const StressAxes& axes)
+{
+    StressMap map = map_of(outcomes, cases, axes, classify_case);
+    const std::size_t columns = axes.cos_theta.size();
+    for (std::size_t j = 0; j < cases.size(); ++j) {
+        const StressCase& c = cases[j];
+        const std::array<bool, failure_kinds> mine = classify_case(outcomes[j], c), theirs = classify_case(reference[j], c);
+        if (mine[nan_inf] || mine[fallback] || theirs[nan_inf] || theirs[fallback])
+            continue;
+        const double angle = std::max(angle_between(outcomes[j].m, reference[j].m),
+                                      angle_between(outcomes[j].o, reference[j].o));
+        if (!(angle <= (c.random ? accuracy_bound : accuracy_bound_edge)))
+            ++map[std::size_t(c.row) * columns + c.column].failures[c.random ? inaccurate : inaccurate_edge];
+    }
+    return map;
+}
+
 std::vector<StressOutcome> device_outcomes(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                                            const std::vector<StressCase>& cases, bool guards,
                                            const ggxcl::UserSampler* user)
@@ -320,7 +344,10 @@ StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl:
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards,
                             const ggxcl::UserSampler* user)
 {
-    return map_of(device_outcomes(device, method, precision, cases, guards, user), cases, axes, classify_case);
+    const std::vector<StressOutcome> outcomes = device_outcomes(device, method, precision, cases, guards, user);
+    if (user)  // no reference to hold it to
+        return map_of(outcomes, cases, axes, classify_case);
+    return map_against(outcomes, host_outcomes(method, cases), cases, axes);
 }
 
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
@@ -330,7 +357,7 @@ StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& c
 
 StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
 {
-    return map_of(cpp_outcomes(method, cases), cases, axes, classify_case);
+    return map_against(cpp_outcomes(method, cases), host_outcomes(method, cases), cases, axes);
 }
 
 dielectric::Map dielectric::device_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,

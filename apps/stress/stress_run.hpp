@@ -24,8 +24,18 @@ namespace ggxapp {
 //   wasted           o at or below the surface (o.n <= 0): not a failure, counted;
 //   pdf_nonpositive  a usable sample (o above the surface) with pdf_o or pdf_m <= 0, or any
 //                    sample with a negative pdf_o or pdf_m;
-//   pdf_mismatch     its pdf recomputed from (i, o) differs from pdf_o by more than 1e-3 (relative) or is not finite.
-enum FailureKind { nan_inf, fallback, not_unit, m_below, wasted, pdf_nonpositive, pdf_mismatch, failure_kinds };
+//   pdf_mismatch     its pdf recomputed from (i, o) differs from pdf_o by more than 1e-3 (relative) or is not finite;
+//   inaccurate       a case of random uniforms whose m or o lies more than 2e-5 rad from the double reference's
+//                    on the same uniforms (neither side's sample NaN, Inf or the fallback; the reference's own map
+//                    and a user sampler's, which has none, count 0);
+//   inaccurate_edge  a case of the edge and rim uniform pairs, where m's conditioning is worst, more than 2e-3 away.
+// The two bounds are the per-sample suites' (tests/helpers/sample_compare.hpp): 99.9% of samples within
+// 2e-5 rad, every sample within 2e-3.
+enum FailureKind {
+    nan_inf, fallback, not_unit, m_below, wasted, pdf_nonpositive, pdf_mismatch, inaccurate, inaccurate_edge,
+    failure_kinds
+};
+constexpr double accuracy_bound = 2e-5, accuracy_bound_edge = 2e-3;  // radians
 const char* failure_name(int kind);
 
 struct StressOutcome {
@@ -63,5 +73,10 @@ StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl:
                             const ggxcl::UserSampler* user = nullptr);
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
 StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
+
+// The conductor's map of `outcomes`, the cases whose m or o lies too far from `reference`'s (the same
+// cases' reference outcomes) counted as inaccurate or inaccurate_edge.
+StressMap map_against(const std::vector<StressOutcome>& outcomes, const std::vector<StressOutcome>& reference,
+                      const std::vector<StressCase>& cases, const StressAxes& axes);
 
 } // namespace ggxapp

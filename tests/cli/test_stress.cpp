@@ -127,6 +127,39 @@ TEST_CASE("classify names each failure kind and nothing else")
     CHECK(kinds_of(s).empty());
 }
 
+TEST_CASE("a sample off the reference's by more than its uniforms' bound counts as inaccurate, by kind")
+{
+    const ggxapp::StressAxes axes = ggxapp::stress_axes();
+    ggxapp::StressCase random_case{0.3f, 0.3f, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f}, 0.1f, 0.2f, 0, 0};
+    random_case.random = true;
+    ggxapp::StressCase edge_case = random_case;
+    edge_case.random = false;
+    const std::vector<ggxapp::StressCase> cases = {random_case, edge_case};
+    const StressOutcome reference = good();
+    // m and o turned about y by `angle`.
+    auto turned = [&](double angle) {
+        StressOutcome s = reference;
+        for (double* v : {s.m, s.o}) {
+            const double x = v[0], z = v[2];
+            v[0] = std::cos(angle) * x + std::sin(angle) * z;
+            v[2] = -std::sin(angle) * x + std::cos(angle) * z;
+        }
+        return s;
+    };
+    auto counts = [&](double angle) {  // inaccurate, inaccurate_edge in the cases' cell
+        const ggxapp::StressMap map = ggxapp::map_against({turned(angle), turned(angle)}, {reference, reference},
+                                                          cases, axes);
+        return std::pair{map[0].failures[ggxapp::inaccurate], map[0].failures[ggxapp::inaccurate_edge]};
+    };
+    CHECK(counts(1e-6) == std::pair<std::uint64_t, std::uint64_t>{0, 0});
+    CHECK(counts(1e-4) == std::pair<std::uint64_t, std::uint64_t>{1, 0});
+    CHECK(counts(1e-2) == std::pair<std::uint64_t, std::uint64_t>{1, 1});
+    StressOutcome fallback = reference;  // the fallback is not judged
+    fallback.m[0] = fallback.m[1] = 0.0, fallback.m[2] = 1.0, fallback.pdf_m = fallback.pdf_o = fallback.weight = 0.0;
+    const ggxapp::StressMap map = ggxapp::map_against({fallback, fallback}, {reference, reference}, cases, axes);
+    CHECK(map[0].failures[ggxapp::inaccurate] + map[0].failures[ggxapp::inaccurate_edge] == 0);
+}
+
 TEST_CASE("ggx stress writes one row per method, side and cell, with every case counted")
 {
     ggxtest::fs::path dir = ggxtest::scratch_dir("stress");
@@ -138,7 +171,7 @@ TEST_CASE("ggx stress writes one row per method, side and cell, with every case 
     std::string line;
     std::getline(csv, line);
     CHECK(line == "method,side,precision,alpha,theta_degrees,cases,nan_inf,fallback,not_unit,m_below,wasted,"
-                  "pdf_nonpositive,pdf_mismatch");
+                  "pdf_nonpositive,pdf_mismatch,inaccurate,inaccurate_edge");
     int rows = 0;
     while (std::getline(csv, line)) {
         std::stringstream fields(line);
@@ -146,16 +179,16 @@ TEST_CASE("ggx stress writes one row per method, side and cell, with every case 
         std::string field;
         while (std::getline(fields, field, ','))
             f.push_back(field);
-        REQUIRE(f.size() == 13);
+        REQUIRE(f.size() == 15);
         CAPTURE(line);
         long cases = std::stol(f[5]);
         CHECK(cases == 90);  // caps: 5 roughness pairs x 18 uniform pairs; caps-iso: 5 normals x 18
-        for (int k = 6; k < 13; ++k)
+        for (int k = 6; k < 15; ++k)
             CHECK(std::stol(f[k]) <= cases);
         CHECK(f[6] == "0");  // no NaN or Inf anywhere
         ++rows;
     }
-    CHECK(rows == 2 * 2 * 19 * 13);  // 2 methods x (device, host) x 19 alphas x 13 views
+    CHECK(rows == 2 * 2 * 19 * 18);  // 2 methods x (device, host) x 19 alphas x 18 views
     ggxtest::fs::remove_all(dir);
 }
 
@@ -280,8 +313,9 @@ TEST_CASE("inside the domain nothing fails: alpha 1e-2..1e2 (anisotropy to 1:100
         CAPTURE(ggxcl::method_name(method));
         REQUIRE(!inside.empty());
         for (int kind = 0; kind < ggxapp::failure_kinds; ++kind) {
-            if (kind == ggxapp::wasted)
-                continue;  // not a failure
+            if (kind == ggxapp::wasted || kind == ggxapp::inaccurate_edge)
+                continue;  // not a failure; reported apart (the edge uniforms: 1 - 2^-24 rounds at sqrt and
+                           // at the cap's rim, where m is ill-conditioned in float: docs/STABILITY.md)
             CAPTURE(ggxapp::failure_name(kind));
             CHECK(total(maps.host, kind) == 0);
             // caps-iso's general form (any n; the runtime uses the exact tangent-space form for
@@ -293,6 +327,27 @@ TEST_CASE("inside the domain nothing fails: alpha 1e-2..1e2 (anisotropy to 1:100
             CHECK(total(maps.cpp, kind) == 0);
         }
     }
+}
+
+TEST_CASE("views from below to 179.9 degrees: heitz, caps, bounded and caps-iso about +z stay within 2e-5 rad of the "
+          "reference on random uniforms at every roughness of the map")
+{
+    const ggxapp::StressAxes axes = ggxapp::stress_axes();
+    for (ggxcl::Method method : {ggxcl::Method::heitz, ggxcl::Method::caps, ggxcl::Method::bounded, ggxcl::Method::caps_iso}) {
+        CAPTURE(ggxcl::method_name(method));
+        const auto below = cases_where(method, axes, [&](const ggxapp::StressCase& c) {
+            return axes.cos_theta[c.column] < 0.0 && c.normal.z == 1.0f;  // about +z: float world space aside
+        });
+        REQUIRE(!below.empty());
+        const BothSides maps = both_sides(method, below, axes);
+        CHECK(total(maps.device, ggxapp::inaccurate) == 0);
+        CHECK(total(maps.cpp, ggxapp::inaccurate) == 0);
+    }
+    // Negative control: heitz2017 keeps the cancelling 1 + vz there (its half disks assume iz >= 0).
+    const auto below = cases_where(ggxcl::Method::heitz2017, axes,
+                                   [&](const ggxapp::StressCase& c) { return axes.cos_theta[c.column] < 0.0; });
+    CHECK(total(ggxapp::device_stress_map(sampler(), ggxcl::Method::heitz2017, ggxcl::Precision::precise, below, axes),
+                ggxapp::inaccurate) > 0);
 }
 
 // ---- The rough dielectric's map (`ggx stress --eta`, stress_dielectric.hpp) ----
@@ -464,9 +519,10 @@ TEST_CASE("ggx stress without --eta is the conductor's map, as before")
     REQUIRE(run.status == 0);
     // The totals table exactly (the host's row is the double reference's: docs/STABILITY.md).
     const std::string header = "| method | side | cases | nan_inf | fallback | not_unit | m_below | wasted | "
-                               "pdf_nonpositive | pdf_mismatch |\n|---|---|---|---|---|---|---|---|---|---|\n";
+                               "pdf_nonpositive | pdf_mismatch | inaccurate | inaccurate_edge |\n"
+                               "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     CHECK(run.err.rfind(header, 0) == 0);
-    CHECK(run.err.find("| caps | host | 22230 | 0 | 9918 | 0 | 0 | 1543 | 0 | 185 |\n") != std::string::npos);
+    CHECK(run.err.find("| caps | host | 30780 | 0 | 13356 | 0 | 0 | 1543 | 0 | 185 | 0 | 0 |\n") != std::string::npos);
     CHECK(run.err.find("eta") == std::string::npos);
     std::string first_line = ggxtest::read_all(dir / "map.csv").substr(0, 40);
     CHECK(first_line.rfind("method,side,precision,alpha,", 0) == 0);

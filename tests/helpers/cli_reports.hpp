@@ -1,6 +1,7 @@
 // cli_reports.hpp - what the user-sampler CLI tests read back of `ggx
 // stress` and `ggx converge`: each sampler's stress rows (by "METHOD SIDE",
-// the cells after the method and side) and NaN/Inf totals, and each
+// the cells after the method and side up to the accuracy columns, which a
+// user sampler, with no reference, leaves at 0) and NaN/Inf totals, and each
 // sampler's convergence curve (the CSV's rows by method, before the speeds).
 #pragma once
 
@@ -28,7 +29,9 @@ inline StressRows stress_rows(const std::string& csv)
     std::getline(lines, line);
     while (std::getline(lines, line)) {
         const std::string key = csv_cell(csv, line, "method") + " " + csv_cell(csv, line, "side");
-        out.rows[key].push_back(line.substr(line.find(',', line.find(',') + 1)));
+        const std::size_t after_side = line.find(',', line.find(',') + 1);
+        const std::size_t accuracy = line.rfind(',', line.rfind(',') - 1);  // inaccurate, inaccurate_edge
+        out.rows[key].push_back(line.substr(after_side, accuracy - after_side));
         out.nan_inf[key] += std::stoull(csv_cell(csv, line, "nan_inf"));
     }
     return out;

@@ -47,8 +47,6 @@ std::string describe(const ggxref::Params& p)
     return out.str();
 }
 
-namespace {
-
 // The float parameters the device sees, as the reference takes them (the
 // bridge's doubles, unit in double), so that both work on the same inputs.
 Config as_device_sees(const ggxref::Params& p)
@@ -78,7 +76,6 @@ ggxref::Params tilted(double alpha, double theta, double tilt)
     return local;
 }
 
-} // namespace
 
 std::vector<Config> per_sample_grid(ggxref::Method method)
 {

@@ -36,6 +36,14 @@ struct Config {
     std::string label;
 };
 
+// The float parameters the device sees, as the reference takes them (the bridge's doubles, unit in
+// double), so that both work on the same inputs.
+Config as_device_sees(const ggxref::Params& p);
+
+// A world normal tilted by `tilt` degrees towards azimuth 120, and the view given in the frame of
+// that normal at (theta, phi 35) degrees.
+ggxref::Params tilted(double alpha, double theta, double tilt);
+
 // Per-sample grid: alpha 0.01..2, anisotropy up to 1:10, theta 0..85 degrees.
 // For caps-iso only the isotropic pairs, with normals away from +z as well.
 std::vector<Config> per_sample_grid(ggxref::Method method);

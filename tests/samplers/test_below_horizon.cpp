@@ -22,12 +22,6 @@ namespace {
 constexpr std::uint64_t samples = 4096, seed = 1790;
 const double views[] = {120.0, 150.0, 170.0, 179.0, 179.9};
 
-ggxtest::Config config_of(const ggxref::Params& p)
-{
-    const ggxref::Params seen = ggxbridge::reference_params(ggxcl::normalized(ggxtest::to_library(ggxref::Method::caps, p)));
-    return {seen, ggxtest::describe(seen)};
-}
-
 std::vector<ggxtest::Config> below_grid(ggxref::Method method)
 {
     std::vector<ggxtest::Config> grid;
@@ -36,7 +30,7 @@ std::vector<ggxtest::Config> below_grid(ggxref::Method method)
         if (method == ggxref::Method::caps_iso && a[0] != a[1])
             continue;
         for (double theta : views)
-            grid.push_back(config_of(ggxtest::make_params(a[0], a[1], theta)));
+            grid.push_back(ggxtest::as_device_sees(ggxtest::make_params(a[0], a[1], theta)));
     }
     // The general form, about a tilted normal, where float world-space inputs hold the bounds: the
     // tangential part i - (i.n) n of a view near -n keeps about 6e-8 / |i_t| of relative precision,
@@ -44,15 +38,8 @@ std::vector<ggxtest::Config> below_grid(ggxref::Method method)
     const double tilted_views[][2] = {{1.0, 120.0}, {1.0, 150.0}, {0.3, 120.0}, {0.3, 150.0}};
     if (method == ggxref::Method::caps_iso)
         for (const auto& [alpha, theta] : tilted_views)
-                for (double tilt : {40.0, 120.0}) {
-                    ggxref::Params p = ggxtest::make_params(alpha, alpha, 0.0);
-                    const double rad = 3.14159265358979323846 / 180.0, ct = std::cos(tilt * rad), st = std::sin(tilt * rad);
-                    p.n = {st * std::cos(120 * rad), st * std::sin(120 * rad), ct};
-                    // the view at theta from n, in the plane of n and z
-                    const ggxref::Vec3 across = ggxref::normalize(ggxref::Vec3{0, 0, 1} - ct * p.n);
-                    p.i = std::cos(theta * rad) * p.n + std::sin(theta * rad) * across;
-                    grid.push_back(config_of(p));
-                }
+            for (double tilt : {40.0, 120.0})
+                grid.push_back(ggxtest::as_device_sees(ggxtest::tilted(alpha, theta, tilt)));
     return grid;
 }
 
@@ -88,7 +75,7 @@ ggxref::Vec3 cancelling_caps_m(const ggxref::Params& p, float u1, float u2)
 // The 99.9th percentile of the angle between the cancelling form's m and the reference's.
 double cancelling_angle_p999(double alpha, double theta)
 {
-    const ggxtest::Config config = config_of(ggxtest::make_params(alpha, alpha, theta));
+    const ggxtest::Config config = ggxtest::as_device_sees(ggxtest::make_params(alpha, alpha, theta));
     std::vector<double> angles;
     for (std::uint64_t j = 0; j < samples; ++j) {
         const std::array<double, 2> u = ggxtest::reference_uniforms(ggxcl::Sequence::philox, seed, j);

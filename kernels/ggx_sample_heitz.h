@@ -62,9 +62,9 @@ GGX_INLINE ggx_sample ggx_draw_heitz(ggx_vec3 i, float ax, float ay, float u1, f
     float tv = ggx_sqrt(ggx_fmax(0.0f, tv2));
     ggx_vec3 h = ggx_lift_by(t1, t2w, tv, T1, T2, v);
 #if GGX_BELOW_HORIZON
-    float vxy = ggx_sqrt(v.x * v.x + v.y * v.y), den = t2w * vxy - tv * v.z;
-    float hz_below = den > 0.0f ? s * (w + t2) * (t2w - v.z * w) / den : 0.0f;
-    h.z = below ? hz_below : h.z;
+    // (|vxy| is T2.z; den is 0 only where w = t2 = 0, the numerator too: the floor keeps 0 / 0 away.)
+    float den = ggx_fmax(t2w * T2.z - tv * v.z, 1e-30f);
+    h.z = below ? s * (w + t2) * (t2w - v.z * w) / den : h.z;
 #endif
     h.z = ggx_fmax(0.0f, h.z);
     return ggx_finish_vndf_sample(i, h, ax, ay, ti, inv_sum);

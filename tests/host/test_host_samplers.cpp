@@ -103,6 +103,28 @@ TEST_CASE("the device headers compiled as C++ match the reference and the device
     }
 }
 
+TEST_CASE("near -n the device headers compiled as C++ match the reference and the device: alpha 0.05 at 179 degrees, "
+          "0.01 at 179.9")
+{
+    for (ggxref::Method method : {ggxref::Method::heitz, ggxref::Method::caps, ggxref::Method::caps_iso,
+                                  ggxref::Method::bounded}) {
+        const std::string name = ggxref::method_name(method);
+        ggxtest::SampleErrors against_reference;
+        HostDevice against_device;
+        for (const auto& [alpha, theta] : {std::pair{0.05, 179.0}, std::pair{0.01, 179.9}}) {
+            const ggxtest::Config config = ggxtest::as_device_sees(ggxtest::make_params(alpha, alpha, theta));
+            const ggxcl::SampleSet host = host_samples(method, config.params, samples_per_config);
+            auto reference = [&](std::size_t, double u1, double u2) { return ggxref::sample(method, config.params, u1, u2); };
+            ggxtest::compare_samples(host, seed, reference, false, config.label, against_reference);
+            compare_host_device(host, ggxtest::device_samples(method, config.params, seed, samples_per_config,
+                                                              ggxcl::FieldSet::all()),
+                                against_device);
+        }
+        ggxtest::check_sample_errors(name + " (C++) near -n against the reference", against_reference);
+        ggxtest::check_sample_errors(name + " (C++) near -n against the device", against_device.errors);
+    }
+}
+
 TEST_CASE("negative control: the C++ samples of swapped uniforms fail the comparison")
 {
     const ggxtest::Config config = ggxtest::per_sample_grid(ggxref::Method::caps).at(0);

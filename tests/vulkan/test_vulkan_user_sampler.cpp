@@ -107,9 +107,10 @@ TEST_CASE("a user sampler's stress map on Vulkan is the built-in caps' map")
     const ggxapp::StressMap caps =
         ggxapp::device_stress_map(vk, ggxcl::Method::caps, ggxcl::Precision::precise, cases, axes, true);
     REQUIRE(mine.size() == caps.size());
-    for (std::size_t c = 0; c < mine.size(); ++c) {
+    for (std::size_t c = 0; c < mine.size(); ++c) {  // the accuracy kinds apart: a user sampler has no reference
         CHECK(mine[c].cases == caps[c].cases);
-        CHECK(mine[c].failures == caps[c].failures);
+        CHECK(std::equal(mine[c].failures.begin(), mine[c].failures.begin() + ggxapp::inaccurate,
+                         caps[c].failures.begin()));
     }
     const std::vector<float> in(10 * 4, 0.5f);
     CHECK_THROWS_AS(vk.stress({ggxcl::Method::user}, in, 4), ggxcl::InvalidArgument);

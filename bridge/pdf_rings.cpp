@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference_bridge.hpp"
+
 namespace ggxbridge {
 
 namespace {
@@ -84,6 +86,35 @@ int ring_of(const std::vector<double>& edges, double z)
         return -1;
     const auto above = std::upper_bound(edges.begin(), edges.end(), z);
     return int(std::min<std::ptrdiff_t>(above - edges.begin() - 1, std::ptrdiff_t(edges.size()) - 2));
+}
+
+ggxcl::Histogram ring_counts(const ggxcl::SampleSet& samples, ggxcl::Field direction, const std::vector<double>& edges)
+{
+    ggxcl::Histogram h;
+    h.bins_z = int(edges.size());
+    h.bins_phi = 1;
+    h.counts.assign(edges.size(), 0);  // the rings, then the cell outside them
+    for (std::size_t j = 0; j < samples.count; ++j) {
+        const ggxcl::Vec3 o = samples.o_at(j), d = direction == ggxcl::Field::m ? samples.m_at(j) : o;
+        if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)) {
+            ++h.non_finite;
+        } else if (o.z <= 0.0f && samples.weight[j] == 0.0f) {
+            ++h.invalid;
+        } else {
+            const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
+            const int ring = ring_of(edges, double(d.z) / length);
+            ++h.counts[ring < 0 ? edges.size() - 1 : std::size_t(ring)];
+        }
+    }
+    return h;
+}
+
+ggxref::ChiSquare ring_fit(const PdfRings& rings, const ggxcl::Histogram& counts, bool with_discarded)
+{
+    std::vector<double> mass = rings.mass, error = rings.error;
+    mass.push_back(0.0);
+    error.push_back(0.0);
+    return user_histogram_fit(counts, mass, error, with_discarded);
 }
 
 } // namespace ggxbridge

@@ -28,4 +28,15 @@ PdfRings equal_mass_rings(const DirectionPdf& pdf, const ggxcl::SampleParams& pa
 // The ring of cos theta z, -1 outside [edges.front(), edges.back()].
 int ring_of(const std::vector<double>& edges, double z);
 
+// The kept samples' `direction` (o, or m) counted in the rings of `edges`, one more cell for those outside
+// them (above the horizon below where the mass begins, or below the horizon with a weight); directions
+// that are not finite and the discarded (o below the horizon with weight 0) apart.  `samples` holds o,
+// the weight and, for m, m.
+ggxcl::Histogram ring_counts(const ggxcl::SampleSet& samples, ggxcl::Field direction, const std::vector<double>& edges);
+
+// The chi-square of ring_counts against `rings`' masses (the outside cell expecting nothing): of the kept
+// samples' shape, or `with_discarded` with the discarded expecting what the rings leave of 1 (a pdf that
+// integrates to 1 over the sphere; reference_bridge.hpp: user_histogram_fit).
+ggxref::ChiSquare ring_fit(const PdfRings& rings, const ggxcl::Histogram& counts, bool with_discarded);
+
 } // namespace ggxbridge

@@ -168,7 +168,9 @@ MethodMaps maps_of(ggxcl::Backend& sampler, ggxcl::Method method, ggxcl::Precisi
     const std::string name(ggxcl::method_name(method));
     if (axes.etas.empty()) {
         const std::vector<StressCase> cases = stress_cases(method, axes);
-        return {name, device_stress_map(sampler, method, precision, cases, axes), host_stress_map(method, cases, axes)};
+        const std::vector<StressOutcome> reference = host_outcomes(method, cases);  // drawn once for both maps
+        return {name, map_against(device_outcomes(sampler, method, precision, cases), reference, cases, axes),
+                map_against(reference, reference, cases, axes)};
     }
     const std::vector<StressCase> cases = dielectric_cases(method, axes);
     return {name, dielectric::device_map(sampler, method, precision, cases, axes),

@@ -256,11 +256,11 @@ std::vector<float> planar_inputs(const std::vector<StressCase>& cases, bool diel
     return in;
 }
 
-// Each outcome classified and counted in its case's cell, (layer * rows + row) * columns + column: the
-// layer that of the case's eta in axes.etas (a conductor's map has no etas: layer 0).
-template <std::size_t Kinds>
-StressMap map_of(const std::vector<StressOutcome>& outcomes, const std::vector<StressCase>& cases,
-                 const StressAxes& axes, std::array<bool, Kinds> (*classify)(const StressOutcome&, const StressCase&))
+// Each case classified (classify(j): its kinds, an array of Kinds flags) and counted in its cell,
+// (layer * rows + row) * columns + column: the layer that of the case's eta in axes.etas (a conductor's
+// map has no etas: layer 0).
+template <std::size_t Kinds, class Classify>
+StressMap map_of(const std::vector<StressCase>& cases, const StressAxes& axes, Classify classify)
 {
     const std::size_t rows = axes.alphas.size(), columns = axes.cos_theta.size();
     const std::size_t layers = std::max<std::size_t>(axes.etas.size(), 1);
@@ -270,16 +270,24 @@ StressMap map_of(const std::vector<StressOutcome>& outcomes, const std::vector<S
         const std::size_t layer = std::find(axes.etas.begin(), axes.etas.end(), c.eta) - axes.etas.begin();
         Counts& cell = map.at((layer * rows + c.row) * columns + c.column);
         ++cell.cases;
-        const std::array<bool, Kinds> found = classify(outcomes[j], c);
+        const std::array<bool, Kinds> found = classify(j);
         for (std::size_t k = 0; k < Kinds; ++k)
             cell.failures[k] += found[k];
     }
     return map;
 }
 
-std::array<bool, failure_kinds> classify_case(const StressOutcome& s, const StressCase& c)
+// The conductor's kinds of each outcome, or the dielectric's, counted per cell.
+StressMap conductor_map(const std::vector<StressOutcome>& outcomes, const std::vector<StressCase>& cases,
+                        const StressAxes& axes)
 {
-    return classify(s, c.normal);
+    return map_of<failure_kinds>(cases, axes, [&](std::size_t j) { return classify(outcomes[j], cases[j].normal); });
+}
+
+dielectric::Map dielectric_map(const std::vector<StressOutcome>& outcomes, const std::vector<StressCase>& cases,
+                               const StressAxes& axes)
+{
+    return map_of<dielectric::kinds>(cases, axes, [&](std::size_t j) { return dielectric::classify(outcomes[j], cases[j]); });
 }
 
 } // namespace
@@ -287,19 +295,17 @@ std::array<bool, failure_kinds> classify_case(const StressOutcome& s, const Stre
 StressMap map_against(const std::vector<StressOutcome>& outcomes, const std::vector<StressOutcome>& reference,
                       const std::vector<StressCase>& cases, const StressAxes& axes)
 {
-    StressMap map = map_of(outcomes, cases, axes, classify_case);
-    const std::size_t columns = axes.cos_theta.size();
-    for (std::size_t j = 0; j < cases.size(); ++j) {
+    return map_of<failure_kinds>(cases, axes, [&](std::size_t j) {
         const StressCase& c = cases[j];
-        const std::array<bool, failure_kinds> mine = classify_case(outcomes[j], c), theirs = classify_case(reference[j], c);
-        if (mine[nan_inf] || mine[fallback] || theirs[nan_inf] || theirs[fallback])
-            continue;
+        std::array<bool, failure_kinds> kinds = classify(outcomes[j], c.normal);
+        const std::array<bool, failure_kinds> theirs = classify(reference[j], c.normal);
+        if (kinds[nan_inf] || kinds[fallback] || theirs[nan_inf] || theirs[fallback])
+            return kinds;
         const double angle = std::max(angle_between(outcomes[j].m, reference[j].m),
                                       angle_between(outcomes[j].o, reference[j].o));
-        if (!(angle <= (c.random ? accuracy_bound : accuracy_bound_edge)))
-            ++map[std::size_t(c.row) * columns + c.column].failures[c.random ? inaccurate : inaccurate_edge];
-    }
-    return map;
+        kinds[c.random ? inaccurate : inaccurate_edge] = !(angle <= (c.random ? accuracy_bound : accuracy_bound_edge));
+        return kinds;
+    });
 }
 
 std::vector<StressOutcome> device_outcomes(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
@@ -346,13 +352,13 @@ StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl:
 {
     const std::vector<StressOutcome> outcomes = device_outcomes(device, method, precision, cases, guards, user);
     if (user)  // no reference to hold it to
-        return map_of(outcomes, cases, axes, classify_case);
+        return conductor_map(outcomes, cases, axes);
     return map_against(outcomes, host_outcomes(method, cases), cases, axes);
 }
 
 StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
 {
-    return map_of(host_outcomes(method, cases), cases, axes, classify_case);
+    return conductor_map(host_outcomes(method, cases), cases, axes);
 }
 
 StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
@@ -363,17 +369,17 @@ StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& ca
 dielectric::Map dielectric::device_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                                        const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
 {
-    return map_of(device_outcomes(device, method, precision, cases, guards), cases, axes, classify);
+    return dielectric_map(device_outcomes(device, method, precision, cases, guards), cases, axes);
 }
 
 dielectric::Map dielectric::host_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
 {
-    return map_of(host_outcomes(method, cases), cases, axes, classify);
+    return dielectric_map(host_outcomes(method, cases), cases, axes);
 }
 
 dielectric::Map dielectric::cpp_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
 {
-    return map_of(cpp_outcomes(method, cases), cases, axes, classify);
+    return dielectric_map(cpp_outcomes(method, cases), cases, axes);
 }
 
 } // namespace ggxapp

@@ -88,8 +88,11 @@ struct BothSides {
 BothSides both_sides(ggxcl::Method method, const std::vector<ggxapp::StressCase>& cases,
                      const ggxapp::StressAxes& axes)
 {
-    return {ggxapp::device_stress_map(sampler(), method, ggxcl::Precision::precise, cases, axes),
-            ggxapp::host_stress_map(method, cases, axes), ggxapp::cpp_stress_map(method, cases, axes)};
+    const std::vector<StressOutcome> reference = ggxapp::host_outcomes(method, cases);  // drawn once for the three
+    return {ggxapp::map_against(ggxapp::device_outcomes(sampler(), method, ggxcl::Precision::precise, cases), reference,
+                                cases, axes),
+            ggxapp::map_against(reference, reference, cases, axes),
+            ggxapp::map_against(ggxapp::cpp_outcomes(method, cases), reference, cases, axes)};
 }
 
 } // namespace

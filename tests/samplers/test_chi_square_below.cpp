@@ -4,7 +4,8 @@
 // 120, 150, 170, 179 and 179.9 degrees, 1e6 samples each, two chi-square tests against the double
 // reference: the 24 x 48 bins of equal solid angle (which from 170 degrees see the lobe's azimuth
 // alone: it sits in their top ring) and 64 rings of equal mass in theta under the reference's pdf
-// (bridge/pdf_rings.hpp: they follow the lobe), Sidak-corrected over every test.  caps-iso's
+// (bridge/pdf_rings.hpp: they follow the lobe, as `ggx histogram --sampler` tests a lobe's width;
+// o below the horizon expects the mass they leave), Sidak-corrected over every test.  caps-iso's
 // general form about a tilted normal, in the bins, at the views where float world-space inputs hold
 // it (alpha 1 and 0.3 at 120 and 150 degrees, docs/STABILITY.md).  Negative control, wrong only in
 // theta: caps' samples at alpha 0.05 and 179.9 degrees with the lobe narrowed by 5% in theta (1 - cos
@@ -35,48 +36,25 @@ std::vector<ggxtest::Config> configurations()
     return configs;
 }
 
-// The cos theta of each sample's o about +z (NaN for a sample with no density).
-std::vector<double> heights(const ggxcl::SampleSet& s)
-{
-    std::vector<double> z(s.count);
-    for (std::size_t j = 0; j < s.count; ++j) {
-        const ggxcl::Vec3 o = s.o_at(j);
-        z[j] = s.pdf_o[j] == 0.0f ? std::nan("") : o.z / std::sqrt(double(o.x) * o.x + double(o.y) * o.y + double(o.z) * o.z);
-    }
-    return z;
-}
-
-// Heights `z` counted in rings of equal mass in theta about +z under `tested`'s pdf at `params` (the
-// reference's), those at or below the horizon in one more category expecting what the rings leave of
-// 1, and its chi-square; p 0 when there are no rings.
-ggxref::ChiSquare ring_fit(ggxref::Method tested, const ggxref::Params& params, const std::vector<double>& z)
+// The samples' o in rings of equal mass in theta about +z under `tested`'s pdf at `params` (the
+// reference's; bridge/pdf_rings.hpp, as `ggx histogram --sampler` tests a lobe's width), those below the
+// horizon expecting the mass the rings leave, and their chi-square; p 0 when there are no rings.
+ggxref::ChiSquare ring_fit(ggxref::Method tested, const ggxref::Params& params, const ggxcl::SampleSet& s)
 {
     const ggxcl::SampleParams p = ggxtest::to_library(tested, params);
     const ggxbridge::PdfRings r = ggxbridge::equal_mass_rings(ggxbridge::reference_direction_pdf(p.method), p,
                                                              ggxcl::Field::o, rings, samples);
     if (r.edges.empty())
         return {0.0, 0, 0.0, 0};
-    ggxcl::Histogram counts;
-    counts.bins_z = rings;
-    counts.bins_phi = 1;
-    counts.counts.assign(rings, 0);
-    for (double height : z) {
-        if (std::isnan(height))
-            continue;  // no sample
-        const int ring = ggxbridge::ring_of(r.edges, height);
-        if (ring < 0)
-            ++counts.invalid;
-        else
-            ++counts.counts[ring];
-    }
-    return ggxbridge::user_histogram_fit(counts, r.mass, r.error, true);
+    return ggxbridge::ring_fit(r, ggxbridge::ring_counts(s, ggxcl::Field::o, r.edges), true);
 }
+
+const ggxcl::FieldSet drawn = {ggxcl::Field::o, ggxcl::Field::pdf_o, ggxcl::Field::weight};
 
 // The bins' fit and, about +z, the rings' (bridge/pdf_rings.hpp works in tangent space).
 void check_config(ggxref::Method method, const ggxtest::Config& config, std::uint64_t seed, double level)
 {
-    const ggxcl::SampleSet s = ggxtest::device_samples(method, config.params, seed, samples,
-                                                       {ggxcl::Field::o, ggxcl::Field::pdf_o});
+    const ggxcl::SampleSet s = ggxtest::device_samples(method, config.params, seed, samples, drawn);
     CAPTURE(std::string(ggxref::method_name(method)));
     CAPTURE(config.label);
     const ggxref::ChiSquare bins = ggxtest::fit(ggxtest::histogram_of(s.o, s.count, ggxtest::bins_z, ggxtest::bins_phi),
@@ -85,7 +63,7 @@ void check_config(ggxref::Method method, const ggxtest::Config& config, std::uin
     CHECK(bins.p_value > level);
     if (config.params.n.z != 1.0)
         return;
-    const ggxref::ChiSquare theta = ring_fit(method, config.params, heights(s));
+    const ggxref::ChiSquare theta = ring_fit(method, config.params, s);
     CAPTURE(theta.statistic);
     CHECK(theta.p_value > level);
 }
@@ -113,8 +91,7 @@ TEST_CASE("views from below to 179.9 degrees: every method's o fits the referenc
 TEST_CASE("negative control: caps' lobe narrowed by 5% in theta, its azimuth kept, fails the rings at 179.9 degrees")
 {
     const ggxtest::Config config = ggxtest::as_device_sees(ggxtest::make_params(0.05, 0.05, 179.9));
-    ggxcl::SampleSet s = ggxtest::device_samples(ggxref::Method::caps, config.params, 99, samples,
-                                                 {ggxcl::Field::o, ggxcl::Field::pdf_o});
+    ggxcl::SampleSet s = ggxtest::device_samples(ggxref::Method::caps, config.params, 99, samples, drawn);
     for (std::size_t j = 0; j < s.count; ++j) {  // 1 - cos theta times 0.95, the azimuth kept
         const ggxcl::Vec3 o = s.o_at(j);
         const double z = double(o.z), z_narrow = 1.0 - 0.95 * (1.0 - z);
@@ -122,7 +99,7 @@ TEST_CASE("negative control: caps' lobe narrowed by 5% in theta, its azimuth kep
         const double scale = across > 0.0 ? across_narrow / across : 0.0;
         s.o[j] = float(o.x * scale), s.o[s.count + j] = float(o.y * scale), s.o[2 * s.count + j] = float(z_narrow);
     }
-    const ggxref::ChiSquare theta = ring_fit(ggxref::Method::caps, config.params, heights(s));
+    const ggxref::ChiSquare theta = ring_fit(ggxref::Method::caps, config.params, s);
     CAPTURE(theta.statistic);
     CHECK(theta.p_value < 1e-6);
 }

@@ -78,7 +78,8 @@ GGX_INLINE float ggx_inv_iz_plus_t(float iz, float t, float ax, float ay, ggx_ve
 {
 #if GGX_BELOW_HORIZON
     float sx = ax * i.x, sy = ay * i.y;
-    return iz >= 0.0f ? 1.0f / (iz + t) : (t - iz) / (sx * sx + sy * sy);
+    bool above = iz >= 0.0f;  // one division, its operands selected: the quotient of each side unchanged
+    return (above ? 1.0f : t - iz) / (above ? iz + t : sx * sx + sy * sy);
 #else
     return 1.0f / (iz + t);
 #endif

@@ -43,7 +43,8 @@ GGX_INLINE float ggx_t_about(ggx_vec3 i, ggx_vec3 n, float alpha)
 GGX_INLINE float ggx_inv_iz_plus_t_about(ggx_vec3 i, ggx_vec3 n, float alpha, float iz, float ti)
 {
 #if GGX_BELOW_HORIZON
-    return iz >= 0.0f ? 1.0f / (iz + ti) : (ti - iz) / (alpha * alpha * ggx_tangential2(i, n, iz));
+    bool above = iz >= 0.0f;  // one division, its operands selected (as ggx_inv_iz_plus_t)
+    return (above ? 1.0f : ti - iz) / (above ? iz + ti : alpha * alpha * ggx_tangential2(i, n, iz));
 #else
     return 1.0f / (iz + ti);
 #endif

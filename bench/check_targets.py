@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """check_targets.py - the project's own speed targets, checked against the CSV
-of a `ggx bench` run (its --csv): speed against the device's limits and
-between methods, the precision modes and guards, the jobs, the native C++
+of a `ggx bench` run (its --csv) and, with --limits, of a `ggx-limits` run
+(bench/limits): speed against the device's limits and between methods, the precision modes and guards, the jobs, the native C++
 baseline, start-up, the commands' whole-process cost and small enqueues.
 Prints the targets as a Markdown section; with --into it also writes that
 section into the project's benchmark document (docs/BENCHMARKS.md),
@@ -11,7 +11,7 @@ it needs (a bench run with --no-native, --no-startup, fewer methods) is left
 out.  Exits 0 whether targets are met or not: they are measurements to read,
 not a gate; exits 1 naming the problem when the CSV is not a bench CSV.
 
-Usage: python3 bench/check_targets.py BENCH.csv [--into docs/BENCHMARKS.md]
+Usage: python3 bench/check_targets.py BENCH.csv [--limits LIMITS.csv] [--into docs/BENCHMARKS.md]
 """
 import argparse
 import csv
@@ -60,16 +60,26 @@ def worst_ratio(pairs):
     return max(ratios) if ratios else None
 
 
-def limit_and_rate_targets(r):
+def limit_targets(limits_csv):
+    """The 2x target on ggx-limits' CSV (its precise write and furnace rows with a compute limit)."""
+    if not limits_csv:
+        return []
+    with open(limits_csv, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows or "percent_of_limit" not in rows[0]:
+        sys.exit(f"check_targets: {limits_csv} is not the CSV of `ggx-limits --csv` (needs percent_of_limit)")
+    percents = [(float(row["percent_of_limit"]), f"{row['method']} {row['job']}") for row in rows
+                if row["job"] in ("write", "furnace") and row.get("compute_limit_ns") and row.get("percent_of_limit")]
     out = []
-    percents = [(float(row["percent_of_limit"]), f"{row['method']} {row['job']}") for row in r.rows
-                if row["precision"] == "precise" and row["job"] in ("write", "furnace")
-                and row.get("sequence") == "philox" and float(row.get("eta") or 0) == 0
-                and row.get("compute_limit_ns") and row.get("percent_of_limit")]
     if percents:
         worst, who = min(percents)
         out.append(target("every method within 2x of its limit (precise write and fused)",
                           f"slowest {who}: {worst:.0f}% of its limit", worst >= 50))
+    return out
+
+
+def rate_targets(r):
+    out = []
     for job in ("write", "furnace"):
         caps, heitz = r.ns("caps", "precise", job), r.ns("heitz", "precise", job)
         if caps and heitz:
@@ -160,7 +170,7 @@ def process_targets(r):
 def section(targets, csv_name, command):
     lines = [BEGIN, "## The project's speed targets", "", f"- Command: `{command}`", "",
              f"What ggxcl expects of itself on this device, checked by `bench/check_targets.py` against the bench's "
-             f"CSV ({csv_name}). The report above is what a user reads; these are the project's own goals. "
+             f"CSV ({csv_name}) and ggx-limits' (bench/limits). The report above is what a user reads; these are the project's own goals. "
              f"Cost probes, the limits' arithmetic and earlier measurements: [COST-PROBES.md](COST-PROBES.md).", "",
              "| target | measured | met |", "|---|---|---|"]
     lines += [f"| {t['what']} | {t['measured']} | {'yes' if t['met'] else '**no**'} |" for t in targets]
@@ -186,10 +196,12 @@ def write_into(document, text):
 def main():
     parser = argparse.ArgumentParser(description="The project's speed targets from a `ggx bench --csv` file.")
     parser.add_argument("csv", help="the bench's CSV")
+    parser.add_argument("--limits", help="the CSV of a ggx-limits run on the same device (the 2x target)")
     parser.add_argument("--into", help="write the section into this Markdown document (replacing the one there)")
     args = parser.parse_args()
     r = Rows(args.csv)
-    targets = limit_and_rate_targets(r) + mode_and_job_targets(r) + baseline_targets(r) + process_targets(r)
+    targets = limit_targets(args.limits) + rate_targets(r) + mode_and_job_targets(r) + baseline_targets(r) + \
+        process_targets(r)
     text = section(targets, os.path.basename(args.csv), " ".join(["python3", "bench/check_targets.py", *sys.argv[1:]]))
     sys.stdout.write(text)
     if args.into:

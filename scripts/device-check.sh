@@ -2,8 +2,9 @@
 # device-check.sh - one prepared check of ggxcl on a Linux machine with an
 # NVIDIA GPU and its OpenCL driver: builds ggxcl, runs the device test
 # suites on the GPU (GGXCL_DEVICE=nvidia), then a short `ggx bench` (caps,
-# heitz and caps-iso; write, fused furnace and world space; % of the GPU's
-# limits; measured ratios beside docs/DEVICES.md's static predictions) and, where nvcc is installed,
+# heitz and caps-iso; write, fused furnace and world space; measured ratios
+# beside docs/DEVICES.md's static predictions), ggx-limits (% of the GPU's
+# limits) and, where nvcc is installed,
 # the CUDA example built from the same device headers, in under 8 minutes.  It fails
 # with a clear message, never hangs, when there is no GPU, no OpenCL ICD
 # for it, or a missing build tool.  When the driver is installed but no ICD
@@ -78,15 +79,19 @@ ctest_status=$?
 grep -E "tests passed|tests failed|\*\*\*|Passed|Failed" "$out/ctest.log" | tee -a "$summary"
 say "suites done after $(elapsed) (exit $ctest_status)"
 
-# 5. A short bench: caps, heitz and caps-iso, write, furnace and world space, with accuracy; each
-#    job's % of the GPU's own limits, and the measured speed ratios beside the static predictions
-#    of docs/DEVICES.md (instruction counts of the PTX); the driver's SPIR-V (IL) version.
+# 5. A short bench: caps, heitz and caps-iso, write, furnace and world space, with accuracy, and the
+#    measured speed ratios beside the static predictions of docs/DEVICES.md (instruction counts of
+#    the PTX); each write and furnace job's % of the GPU's own limits (ggx-limits: the compute limit
+#    needs clang 15 for the op counts, else the bandwidth limit alone); the driver's SPIR-V (IL) version.
 timeout 90 build-gpu/apps/ggx bench --methods caps,heitz,caps-iso --precisions precise,relaxed \
   --jobs write,furnace,world -n 2^22 --repeats 5 --no-startup --scene 8 --csv "$out/bench.csv" \
   --markdown "$out/BENCH.md" --charts "$out/bench" >"$out/bench.log" 2>&1
 bench_status=$?
 sed -n '/## Speed (ns per sample)/,/## Speed against numerical error/p' "$out/BENCH.md" 2>/dev/null | tee -a "$summary"
 python3 scripts/predicted_vs_measured.py "$out/bench.csv" docs/DEVICES.md 2>&1 | tee -a "$summary"
+timeout 60 build-gpu/bench/limits/ggx-limits --methods caps,heitz,caps-iso -n 2^22 --repeats 5 \
+  --csv "$out/limits.csv" --markdown "$out/LIMITS.md" >"$out/limits.log" 2>&1 || bench_status=$?
+sed -n '/^| method | job | measured/,/^$/p' "$out/LIMITS.md" 2>/dev/null | tee -a "$summary"
 if command -v clinfo >/dev/null; then
   clinfo 2>/dev/null | grep -E "Device Name|IL version" | tee -a "$summary"
 else

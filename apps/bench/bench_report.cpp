@@ -4,7 +4,6 @@
 // devices their rows side by side; the process rows last.
 #include "bench_report.hpp"
 
-#include "bench_limits.hpp"
 #include "report_text.hpp"
 
 #include <algorithm>
@@ -417,26 +416,24 @@ void write_csv_row(std::ostream& csv, const BenchRow& row, const BenchReport& r,
     csv << ",";
     if (row.pdf_disagreement >= 0)
         csv << row.pdf_disagreement;
-    csv << limit_csv_cells(row, r) << dielectric_csv_cells(row) << "," << samples_per_run << "," << row.api << "\n";
+    csv << dielectric_csv_cells(row) << "," << samples_per_run << "," << row.api << "\n";
 }
 
 } // namespace
 
 std::string bench_csv(const BenchReport& r, bool with_process_rows)
 {
-    const std::string limit_header = limit_csv_header();
-    const std::size_t limit_columns = std::count(limit_header.begin(), limit_header.end(), ',');
     std::ostringstream csv;
     csv << std::setprecision(6)
         << "method,precision,job,ns_median,ns_min,ns_max,gsamples_per_s,angle_p99,angle_max,pdf_rel_p99,pdf_rel_max,"
            "albedo_variance,mean_albedo,efficiency,rmse_at_budget,sequence,rmse_measured,pdf_disagreement"
-        << limit_header << dielectric_csv_header << ",samples_per_run,api\n";
+        << dielectric_csv_header << ",samples_per_run,api\n";
     for (const BenchRow& row : r.rows)
         write_csv_row(csv, row, r, row.precision == "native" ? r.native_count : r.count);
     if (r.has_vectorized)
         csv << "caps,native-vectorized,furnace," << r.vectorized.median << "," << r.vectorized.low << ","
             << r.vectorized.high << "," << 1.0 / r.vectorized.median << ",,,,,,,,,philox,,"
-            << std::string(limit_columns, ',') << dielectric_csv_cells(BenchRow{}) << "," << r.native_count << ",native\n";
+            << dielectric_csv_cells(BenchRow{}) << "," << r.native_count << ",native\n";
     if (with_process_rows)
         for (CsvRow row : process_rows(r)) {
             row.row.api = r.devices.empty() ? "" : r.devices.front().api;  // the processes ran on the first device
@@ -464,7 +461,7 @@ void write_user_pdf_section(std::ostringstream& md, const BenchReport& r)
 
 namespace {
 
-// The sections of one device: the answer, its speed, the dielectric's, its limits and accuracy.
+// The sections of one device: the answer, its speed, the dielectric's and its accuracy.
 void write_device_sections(std::ostringstream& md, const BenchReport& r, const ChartFiles& charts)
 {
     write_answer(md, r);
@@ -472,7 +469,6 @@ void write_device_sections(std::ostringstream& md, const BenchReport& r, const C
     write_speed_table(md, r);
     if (r.eta != 0.0f)
         write_dielectric_section(md, r);
-    write_limit_section(md, r);
     md << "\n## Speed against numerical error\n\nDevice samples against the double-precision reference on the same "
           "uniforms (alpha 0.05, 0.3, 1 x view 0, 45, 80 degrees, 8192 samples each): angle between m's and "
           "between o's, relative error of pdf_m and pdf_o (native: m and pdf_m, the fields it writes).\n\n";
@@ -547,7 +543,6 @@ BenchReport device_report(const BenchReport& r, const std::string& api)
     for (const BenchDeviceNote& d : r.devices)
         if (d.api == api)
             one.devices.push_back(d);
-    one.has_peaks = r.has_peaks && r.peaks_api == api;
     return one;
 }
 

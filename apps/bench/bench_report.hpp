@@ -4,17 +4,14 @@
 // dielectric's rows, eta set, beside conductor rows of the same jobs),
 // derived columns (efficiency, RMSE at equal time), the CSV, the Markdown
 // report (a section per device, which sampler to pick first, and with two
-// devices their rows side by side), and the charts; the rows' op counts and
-// the device's peaks give how close each runs to its limits (bench_limits.hpp).
+// devices their rows side by side), and the charts.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "bench_accuracy.hpp"
-#include "bench_peak.hpp"
 #include "bench_speed.hpp"
-#include "op_counts.hpp"
 
 namespace ggxapp {
 
@@ -30,8 +27,6 @@ struct BenchRow {
     double rmse_measured = 0;     // precise furnace rows: the table's RMSE at the budget, measured (0: not)
     double pdf_disagreement = -1; // a user sampler's write rows: the fraction of pdf_o whose pdf from (i, o)
                                   // differs by more than 1e-3 (-1: not measured)
-    bool has_ops = false;         // write and furnace rows: operations per sample of the kernel's IR
-    OpCounts ops;
     float eta = 0;                // a rough dielectric's relative index (SampleParams::eta); 0: a conductor
     std::string transport;        // dielectric rows: radiance or importance
     DielectricAccuracy dielectric;  // dielectric furnace rows: reflectance and transmittance against the reference
@@ -91,10 +86,6 @@ struct BenchReport {
     StartupTiming startup;
     EnqueueTiming enqueue;
     AppTimings apps;
-    bool has_peaks = false;       // the device's compute peaks, measured in this run (bench_peak.hpp)
-    PeakRates peaks;
-    std::string peaks_api;        // the api of the device whose peaks they are (the one with op counts)
-    std::string peaks_unavailable, ops_unavailable;  // why there are no peaks, no op counts
 };
 
 // A row of (method, precision, job) with its timing, nothing else measured.
@@ -117,7 +108,7 @@ double rmse_at_budget(const BenchRow& row, const BenchReport& report);
 // process_rows), what bench/check_targets.py reads beside the device rows.
 std::string bench_csv(const BenchReport& report, bool with_process_rows = true);
 
-// The report of one device: its rows and the native ones, and the peaks where they are its own.
+// The report of one device: its rows and the native ones.
 BenchReport device_report(const BenchReport& report, const std::string& api);
 
 // The two charts of a device (paths relative to the report; empty: none).

@@ -11,7 +11,6 @@
 // charts, the report and its page (docs/BENCHMARKS.md is made by it, with
 // the project's targets from bench/check_targets.py).
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -21,8 +20,6 @@
 #include "bench_accuracy.hpp"
 #include "user_checks.hpp"
 #include "bench_native.hpp"
-#include "bench_ops.hpp"
-#include "bench_peak.hpp"
 #include "bench_plan.hpp"
 #include "bench_report.hpp"
 #include "api_options.hpp"
@@ -37,44 +34,6 @@
 namespace ggxapp {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// Seconds the peak probe's child may take, its build included (a GPU's takes about one).
-constexpr double peak_probe_limit_s = 60;
-
-// What the limits need, before any timing: the tasks' op counts (clang, in parallel, where a device
-// runs OpenCL C) and then the peaks of the device whose tasks were counted (bench_limits.hpp),
-// measured in a child process with a time limit.  Neither stops the bench when it fails or runs
-// past its time: the report says why.
-std::vector<std::optional<OpCounts>> measure_limit_inputs(const std::vector<BenchTask>& tasks, BenchReport& report)
-{
-    auto start = std::chrono::steady_clock::now();
-    std::cerr << "counting the operations of the device rows' kernels (clang)\n";
-    std::vector<std::optional<OpCounts>> ops = count_task_ops(tasks, report.ops_unavailable);
-    std::cerr << "op counts: " << (report.ops_unavailable.empty() ? "" : "unavailable (" + report.ops_unavailable + "), ")
-              << seconds_since(start) << " s\n";
-    const BenchDevice* counted = nullptr;  // the device whose programs clang reads
-    for (const BenchTask& task : tasks)
-        if (!counted && counts_ops(task) && task.device->jobs->program(task.job, task.params))
-            counted = task.device;
-    if (!counted)
-        return ops;
-    std::cerr << "measuring the device's peaks (a child process, at most " << peak_probe_limit_s << " s)\n";
-    try {
-        report.peaks = measure_peaks_in_child(counted->choice.selector, peak_probe_limit_s);
-        report.has_peaks = true;
-        report.peaks_api = counted->backend->api_label();
-        std::cerr << "peak probe: " << report.peaks.seconds << " s\n";
-    } catch (const std::exception& e) {
-        report.peaks_unavailable = e.what();
-        std::cerr << "peak probe unavailable: " << e.what() << "\n";
-    }
-    return ops;
-}
 
 // `p` as planned (a method or a user sampler, in a precision) with each job, and the guards' cost
 // and the other sequences side by side.
@@ -218,7 +177,6 @@ void measure_devices(std::vector<BenchDevice>& devices, const BenchPlan& plan, c
     std::vector<BenchTask> tasks;
     for (BenchDevice& device : devices)
         add_device_tasks(plan, device, tasks);
-    const std::vector<std::optional<OpCounts>> ops = measure_limit_inputs(tasks, report);
     std::cerr << "timing " << tasks.size() << " device rows, " << report.repeats << " interleaved rounds\n";
     const std::vector<Timing> timings = time_interleaved(tasks, report.repeats);
     for (const BenchDevice& device : devices) {
@@ -231,8 +189,6 @@ void measure_devices(std::vector<BenchDevice>& devices, const BenchPlan& plan, c
         std::cerr << "measuring the accuracy columns\n";
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         BenchRow row = device_row(tasks[t], timings[t]);
-        if (ops[t])
-            row.has_ops = true, row.ops = *ops[t];
         if (!cmd.no_accuracy && tasks[t].params.guards && tasks[t].job != BenchJob::store)  // unguarded: speed only
             add_accuracy(tasks[t], report, plan.users, exact, row);
         report.rows.push_back(row);

@@ -42,7 +42,6 @@ Prepare add_histogram_command(CLI::App& app);
 Prepare add_bench_command(CLI::App& app);
 Prepare add_stress_command(CLI::App& app);
 Prepare add_converge_command(CLI::App& app);
-Prepare add_peak_probe_command(CLI::App& app);  // internal: run by `ggx bench`
 
 // The command line as typed (program name shortened to `ggx`), for reports.
 void remember_command_line(int argc, char** argv);

@@ -14,7 +14,7 @@ GgxApp::GgxApp()
     cli.require_subcommand(1);
     commands_ = {add_devices_command(cli), add_methods_command(cli), add_sample_command(cli), add_histogram_command(cli),
                  add_demo_command(cli),    add_merge_command(cli),  add_bench_command(cli),
-                 add_converge_command(cli), add_stress_command(cli), add_peak_probe_command(cli)};
+                 add_converge_command(cli), add_stress_command(cli)};
     describe_option_values(cli);
 }
 

@@ -36,6 +36,7 @@ QUICK = {"test_uniforms", "test_device_math", "test_fresnel_eval", "test_per_sam
 # Paths the tests have compiled in (tests/CMakeLists.txt), as they lie in the trees.
 COMPILED_PATHS = {
     "GGX_BINARY": ("build", "apps/ggx"),
+    "GGX_LIMITS_BINARY": ("build", "bench/limits/ggx-limits"),
     "GGX_USER_SAMPLERS_DIR": ("source", "tests/user_samplers"),
     "GGX_KERNEL_DIR": ("source", "kernels"),
     "GGX_EXAMPLES_DIR": ("source", "examples"),

@@ -3,13 +3,15 @@ a target met and not met turns on the numbers (caps / heitz at 1.4 and 1.2),
 targets without their rows are left out, --into replaces its own section
 (run twice, one section) and keeps the rest, and a file that is not a bench
 CSV is refused with a message naming what is missing; a run on two APIs is
-checked on its first device's rows."""
+checked on its first device's rows; the 2x-of-the-limit target reads
+ggx-limits' CSV (--limits)."""
 import os
 import subprocess
 import sys
 
 SCRIPT = os.path.join(os.path.dirname(__file__), "..", "..", "bench", "check_targets.py")
-HEADER = "method,precision,job,ns_median,ns_min,ns_max,sequence,eta,compute_limit_ns,percent_of_limit,samples_per_run\n"
+HEADER = "method,precision,job,ns_median,ns_min,ns_max,sequence,eta,samples_per_run\n"
+LIMITS_HEADER = "method,precision,job,ns_median,ns_low,ns_high,compute_limit_ns,percent_of_limit\n"
 
 
 def write_csv(path, rows):
@@ -22,8 +24,14 @@ def run(*args):
 
 
 def rows(caps_ns, heitz_ns):
-    return [("caps", "precise", "write", caps_ns, caps_ns, caps_ns, "philox", 0, 3.0, 60, 1024),
-            ("heitz", "precise", "write", heitz_ns, heitz_ns, heitz_ns, "philox", 0, 3.0, 40, 1024)]
+    return [("caps", "precise", "write", caps_ns, caps_ns, caps_ns, "philox", 0, 1024),
+            ("heitz", "precise", "write", heitz_ns, heitz_ns, heitz_ns, "philox", 0, 1024)]
+
+
+def write_limits(path, caps_percent, heitz_percent):
+    with open(path, "w") as f:
+        f.write(LIMITS_HEADER + f"caps,precise,write,5,5,5,3.0,{caps_percent}\n"
+                f"heitz,precise,write,7,7,7,3.0,{heitz_percent}\nall,store-only,write,1,1,1,,\n")
 
 
 def target_line(output, start):
@@ -38,13 +46,23 @@ def test_a_target_turns_on_the_numbers(tmp_path):
     assert out_met.returncode == 0 and out_missed.returncode == 0
     assert target_line(out_met.stdout, "caps / heitz speed >= 1.35, write").endswith("| 1.40 | yes |")
     assert target_line(out_missed.stdout, "caps / heitz speed >= 1.35, write").endswith("| 1.20 | **no** |")
-    assert "slowest heitz write: 40% of its limit | **no** |" in out_met.stdout
-    near_limit = tmp_path / "near.csv"
-    write_csv(near_limit, [row[:9] + (50,) + row[10:] for row in rows(5.0, 7.0)])   # both at 50%: met
-    assert "slowest caps write: 50% of its limit | yes |" in run(near_limit).stdout
     assert "furnace" not in out_met.stdout         # no furnace rows: no furnace target
     assert "native C++" not in out_met.stdout      # no native rows: no baseline target
-    assert "2 of 3 met." in out_met.stdout      # every method within 2x of caps, too
+    assert "of its limit" not in out_met.stdout    # no --limits: no limit target
+    assert "2 of 2 met." in out_met.stdout      # every method within 2x of caps, too
+
+
+def test_the_limit_target_reads_the_limits_csv(tmp_path):
+    bench, limits = tmp_path / "b.csv", tmp_path / "limits.csv"
+    write_csv(bench, rows(5.0, 7.0))
+    write_limits(limits, 60, 40)
+    out = run(bench, "--limits", limits)
+    assert out.returncode == 0
+    assert "slowest heitz write: 40% of its limit | **no** |" in out.stdout
+    write_limits(limits, 60, 50)   # both at 50% or more: met
+    assert "slowest heitz write: 50% of its limit | yes |" in run(bench, "--limits", limits).stdout
+    result = run(bench, "--limits", bench)   # the bench's CSV given as the limits'
+    assert result.returncode == 1 and "is not the CSV of `ggx-limits --csv`" in result.stderr
 
 
 def test_into_replaces_its_own_section(tmp_path):

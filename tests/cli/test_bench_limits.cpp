@@ -1,10 +1,11 @@
-// test_bench_limits.cpp - `ggx bench`'s limits: the LLVM IR op counter on
+// test_bench_limits.cpp - ggx-limits (bench/limits): the LLVM IR op counter on
 // hand-written IR (exact counts; unknown calls named and failing the strict
 // count), the roofline arithmetic on given numbers, every bench kernel's IR
 // free of unknown operations, the peak probe's kernels counted as the probe
-// assumes (nothing folded away) and measured on the device, and the report
-// without a compiler.  The cases that compile kernels to IR need clang 15
-// (clang-15 on PATH, or GGXCL_CLANG): skipped without it (skip.hpp).
+// assumes (nothing folded away) and measured on the device, and the tool's
+// report and CSV with a compiler and without one.  The cases that compile
+// kernels to IR need clang 15 (clang-15 on PATH, or GGXCL_CLANG): skipped
+// without it (skip.hpp).
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -148,24 +149,27 @@ TEST_CASE("the roofline: max and sum over classes, bandwidth from the store-only
 
 TEST_CASE("a row's limit is the tighter of compute and bandwidth, and its percentage goes into the CSV")
 {
-    BenchReport report;
+    LimitReport report;
     report.has_peaks = true;
     report.peaks = peaks_of(100e9, 100e9, 100e9, 100e9, 10e9, 10e9);
-    BenchRow store, caps;
-    store.method = "all", store.precision = "store-only", store.job = "write", store.timing.median = 1.0;
-    caps.method = "caps", caps.precision = "precise", caps.job = "write", caps.timing.median = 4.0;
-    caps.has_ops = true;
-    caps.ops[OpClass::float_op] = 200;  // 2 ns at 100 G/s: tighter than the store's 1 ns
+    LimitRow store, caps;
+    store.row.method = "all", store.row.precision = "store-only", store.row.job = "write", store.row.timing.median = 1.0;
+    caps.row.method = "caps", caps.row.precision = "precise", caps.row.job = "write", caps.row.timing.median = 4.0;
+    caps.ops = OpCounts{};
+    (*caps.ops)[OpClass::float_op] = 200;  // 2 ns at 100 G/s: tighter than the store's 1 ns
     report.rows = {store, caps};
     std::optional<RowLimit> limit = row_limit(report.rows[1], report);
     REQUIRE(limit);
     CHECK(limit->compute_binds);
     CHECK(limit->percent == doctest::Approx(50.0));
-    report.rows[1].timing.median = 4.1;
+    report.rows[1].row.timing.median = 4.1;
     CHECK(row_limit(report.rows[1], report)->percent == doctest::Approx(200.0 / 4.1));
-    const std::string cells = limit_csv_cells(report.rows[1], report);
-    CHECK(cells.find(",float,") != std::string::npos);
-    CHECK(cells.substr(cells.rfind(',') + 1) == "48.7805");  // percent_of_limit, what bench/check_targets.py reads
+    const std::string csv = limits_csv(report);
+    const std::string caps_line = csv.substr(csv.find("\ncaps,") + 1);
+    CHECK(caps_line.find(",float,") != std::string::npos);
+    CHECK(caps_line.substr(0, caps_line.find('\n')).substr(caps_line.rfind(',', caps_line.find('\n')) + 1) ==
+          "48.7805");  // percent_of_limit, what bench/check_targets.py reads
+    CHECK(csv.find("all,store-only,write,1,") != std::string::npos);
 }
 
 TEST_CASE("the peak probe's kernels do the operations the probe divides by: nothing folded away")
@@ -227,17 +231,17 @@ TEST_CASE("a child past its time limit is stopped and named; the peak rates trav
     CHECK_THROWS_AS(parse_peak_rates("peak_float 1e9\n"), std::runtime_error);
 }
 
-TEST_CASE("`ggx peak-probe`, the bench's child, prints every class's rate")
+TEST_CASE("`ggx-limits --peak-probe`, the tool's child, prints every class's rate")
 {
-    const ChildOutput child = run_child(ggxtest::ggx_binary(), {"peak-probe"}, 120);
+    const ChildOutput child = run_child(ggxtest::limits_binary(), {"--peak-probe"}, 120);
     CAPTURE(child.err);
     REQUIRE(exited_ok(child.status));
     const PeakRates peaks = parse_peak_rates(child.out);
     for (OpClass c : all_op_classes)
         CHECK(peaks[c] > 1e6);
-    const ChildOutput help = run_child(ggxtest::ggx_binary(), {"--help"}, 60);
-    CHECK(help.out.find("bench") != std::string::npos);
-    CHECK(help.out.find("peak-probe") == std::string::npos);  // internal: not listed
+    const ChildOutput help = run_child(ggxtest::limits_binary(), {"--help"}, 60);
+    CHECK(help.out.find("--methods") != std::string::npos);
+    CHECK(help.out.find("--peak-probe") == std::string::npos);  // internal: not listed
 }
 
 TEST_CASE("every bench kernel (method x write, furnace x precision) has only operations of known classes")
@@ -287,20 +291,42 @@ TEST_CASE("the peak probe measures positive finite rates on the device")
     CHECK(peaks.seconds > 0);
 }
 
-TEST_CASE("ggx bench without a compiler reports the compute limit unavailable, why, and the rest as before")
+TEST_CASE("ggx-limits reports each row against its limits, and without a compiler the compute limit unavailable")
 {
     const ggxtest::ScratchFolder dir("bench-limits");
-    ggxtest::Run run = ggxtest::run_ggx("GGXCL_CLANG=" + (dir / "no-clang").string() + " " + ggxtest::ggx_binary() +
-                                            " bench --methods caps --precisions precise --jobs write,furnace -n 2^14 "
-                                            "--repeats 5 --no-native --no-accuracy --no-startup --sequences philox --csv " +
-                                            (dir / "b.csv").string() + " --markdown " + (dir / "B.md").string(),
+    const std::string command = ggxtest::limits_binary() + " --methods caps,heitz -n 2^14 --repeats 5 --csv " +
+                                (dir / "l.csv").string() + " --markdown " + (dir / "L.md").string();
+    const ClangTool clang = find_clang();
+    if (!clang.path.empty()) {
+        ggxtest::Run run = ggxtest::run_ggx("{ " + command + " >" + (dir / "out.md").string() + "; }", dir / "stderr.txt",
+                                            false);
+        CAPTURE(run.err);
+        REQUIRE(run.status == 0);
+        const std::string csv = read_all(dir / "l.csv");
+        CHECK(csv.rfind("method,precision,job,ns_median", 0) == 0);
+        int limited = 0;
+        for (const char* row : {"\ncaps,precise,write,", "\ncaps,precise,furnace,", "\nheitz,precise,write,",
+                                "\nheitz,precise,furnace,"}) {
+            CAPTURE(row);
+            REQUIRE(csv.find(row) != std::string::npos);
+            const std::string line = csv.substr(csv.find(row) + 1, csv.find('\n', csv.find(row) + 1) - csv.find(row) - 1);
+            limited += std::stod(line.substr(line.rfind(',') + 1)) > 0.0;  // percent_of_limit
+        }
+        CHECK(limited == 4);
+        const std::string md = read_all(dir / "L.md");
+        CHECK(md == read_all(dir / "out.md"));  // printed and written alike
+        for (const char* part : {"## How close to this device's limits", "| heitz | furnace |", "Peaks of this device",
+                                 "Operations per sample by class"})
+            CHECK(md.find(part) != std::string::npos);
+    }
+    ggxtest::Run run = ggxtest::run_ggx("GGXCL_CLANG=" + (dir / "no-clang").string() + " " + command,
                                         dir / "stderr.txt", false);
     CAPTURE(run.err);
     REQUIRE(run.status == 0);
-    const std::string md = read_all(dir / "B.md");
+    const std::string md = read_all(dir / "L.md");
     CHECK(md.find("## How close to this device's limits") != std::string::npos);
     CHECK(md.find("Compute limits unavailable: no op counts (GGXCL_CLANG=") != std::string::npos);
     CHECK(md.find("| caps | write |") != std::string::npos);  // against the bandwidth limit alone
-    CHECK(md.find("every method within 2x of its limit") == std::string::npos);  // no compute limit, no target
-    CHECK(read_all(dir / "b.csv").find(",percent_of_limit") != std::string::npos);
+    CHECK(read_all(dir / "l.csv").find(",percent_of_limit") != std::string::npos);
+    CHECK(ggxtest::run_ggx(ggxtest::limits_binary() + " --methods nonesuch", dir / "stderr.txt", false).status != 0);
 }

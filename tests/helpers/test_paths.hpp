@@ -21,6 +21,9 @@ inline std::string path_from_env(const char* variable, const char* compiled_defa
 #ifdef GGX_BINARY
 inline std::string ggx_binary() { return path_from_env("GGX_BINARY", GGX_BINARY); }
 #endif
+#ifdef GGX_LIMITS_BINARY
+inline std::string limits_binary() { return path_from_env("GGX_LIMITS_BINARY", GGX_LIMITS_BINARY); }
+#endif
 #ifdef GGX_CHECK_TARGETS
 inline std::string check_targets_script() { return path_from_env("GGX_CHECK_TARGETS", GGX_CHECK_TARGETS); }
 #endif

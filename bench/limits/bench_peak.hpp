@@ -1,8 +1,8 @@
-// bench_peak.hpp - the device's own compute peaks, measured in the bench's
+// bench_peak.hpp - the device's own compute peaks, measured in ggx-limits'
 // run the way clpeak measures them: per op class, a kernel of 8 independent
 // chains per work-item, each a long unrolled line of dependent operations
 // (no loop, so that PoCL still vectorizes across work-items), enough
-// work-items for a run of a few ms, the median of 5 event-profiled runs, and
+// work-items for a run of about 40 ms, the fastest of 5 event-profiled runs, and
 // a sum of the chains written per work-item so nothing is optimized away.
 // One op: one fma (a*b+c, contracted), one add or xor, one 32-bit multiply,
 // one 32 x 32 -> 64-bit product with its high half taken (as Philox does),
@@ -36,7 +36,7 @@ double peak_ops_per_item(OpClass c);
 // Measures every class on the sampler's device and queue (which profiles).  Throws ggxcl or cl errors.
 PeakRates measure_peaks(ggxcl::Sampler& sampler);
 
-// The same in a child process, `ggx peak-probe` on the device `device` selects (a build inside a
+// The same in a child process, `ggx-limits --peak-probe` on the device `device` selects (a build inside a
 // driver cannot be interrupted, and one compiler took minutes on an earlier probe): stopped after
 // `limit_s` seconds.  Throws std::runtime_error saying why when the child fails, prints something
 // else than its rates, or runs past the limit (ChildTimedOut).

@@ -1,8 +1,9 @@
-// bench_limits.cpp - the report's limits section: per row, the compute and
-// bandwidth limits, the CSV columns, the tables and the 2x target.
+// bench_limits.cpp - ggx-limits' report: per row, the compute and bandwidth
+// limits, the CSV and the tables.
 #include "bench_limits.hpp"
 
 #include <algorithm>
+#include <iomanip>
 #include <sstream>
 
 #include "report_text.hpp"
@@ -16,13 +17,22 @@ std::string giga(double per_s)
     return fixed(per_s * 1e-9, per_s < 1e10 ? 2 : 1) + " G";
 }
 
-// The precise philox conductor rows of the limits table, method by method (library order), write then furnace.
-std::vector<const BenchRow*> table_rows(const BenchReport& r)
+const LimitRow* find_limit_row(const LimitReport& r, const std::string& method, const std::string& precision,
+                               const std::string& job)
 {
-    std::vector<const BenchRow*> rows;
+    for (const LimitRow& row : r.rows)
+        if (row.row.method == method && row.row.precision == precision && row.row.job == job && row.row.eta == 0.0f)
+            return &row;
+    return nullptr;
+}
+
+// The precise conductor rows of the limits table, method by method (library order), write then furnace.
+std::vector<const LimitRow*> table_rows(const LimitReport& r)
+{
+    std::vector<const LimitRow*> rows;
     for (ggxcl::Method m : ggxcl::all_methods)
         for (const char* job : {"write", "furnace"})
-            if (const BenchRow* row = find_row(r, std::string(ggxcl::method_name(m)), "precise", job))
+            if (const LimitRow* row = find_limit_row(r, std::string(ggxcl::method_name(m)), "precise", job))
                 rows.push_back(row);
     return rows;
 }
@@ -34,7 +44,7 @@ std::string compute_cell(const RowLimit& limit)
     return fixed(limit.compute->ns, 2) + " (" + op_class_name(limit.compute->binding) + ")";
 }
 
-void write_peaks(std::ostream& md, const BenchReport& r)
+void write_peaks(std::ostream& md, const LimitReport& r)
 {
     if (!r.has_peaks) {
         md << "Compute limits unavailable: the peak probe failed (" << r.peaks_unavailable << ").\n\n";
@@ -50,35 +60,36 @@ void write_peaks(std::ostream& md, const BenchReport& r)
         md << "Compute limits unavailable: no op counts (" << r.ops_unavailable << ").\n\n";
 }
 
-void write_ops_table(std::ostream& md, const std::vector<const BenchRow*>& rows)
+void write_ops_table(std::ostream& md, const std::vector<const LimitRow*>& rows)
 {
     md << "\nOperations per sample by class, static count of the kernel's LLVM IR (clang -O3, the runtime's "
           "source and options; both sides of every branch):\n\n| method | job |";
     for (OpClass c : all_op_classes)
         md << " " << op_class_name(c) << " |";
     md << " other |\n|---|---|---|---|---|---|---|---|---|\n";
-    for (const BenchRow* row : rows) {
-        if (!row->has_ops)
+    for (const LimitRow* row : rows) {
+        if (!row->ops)
             continue;
-        md << "| " << row->method << " | " << row->job << " |";
+        md << "| " << row->row.method << " | " << row->row.job << " |";
         for (OpClass c : all_op_classes)
-            md << " " << fixed(row->ops[c], 1) << " |";
-        md << " " << (row->ops.other.empty() ? "–" : row->ops.other_text()) << " |\n";
+            md << " " << fixed((*row->ops)[c], 1) << " |";
+        md << " " << (row->ops->other.empty() ? "–" : row->ops->other_text()) << " |\n";
     }
 }
 
 } // namespace
 
-std::optional<RowLimit> row_limit(const BenchRow& row, const BenchReport& report)
+std::optional<RowLimit> row_limit(const LimitRow& limit_row, const LimitReport& report)
 {
+    const BenchRow& row = limit_row.row;
     if ((row.job != "write" && row.job != "furnace") || row.eta != 0.0f)  // conductors only
         return std::nullopt;
     RowLimit limit;
-    if (row.has_ops && report.has_peaks)
-        limit.compute = compute_limit(row.ops, report.peaks);
-    if (const BenchRow* store = find_row(report, "all", "store-only", "write"))
+    if (limit_row.ops && report.has_peaks)
+        limit.compute = compute_limit(*limit_row.ops, report.peaks);
+    if (const LimitRow* store = find_limit_row(report, "all", "store-only", "write"))
         limit.bandwidth_ns = bandwidth_limit_ns(
-            stored_bytes_per_sample(row.job == "write" ? BenchJob::write : BenchJob::furnace), store->timing.median);
+            stored_bytes_per_sample(row.job == "write" ? BenchJob::write : BenchJob::furnace), store->row.timing.median);
     if (!limit.compute && !limit.bandwidth_ns)
         return std::nullopt;
     const double compute_ns = limit.compute ? limit.compute->ns : 0.0;
@@ -88,51 +99,54 @@ std::optional<RowLimit> row_limit(const BenchRow& row, const BenchReport& report
     return limit;
 }
 
-std::string limit_csv_header()
+std::string limits_csv(const LimitReport& report)
 {
-    std::string header;
-    for (OpClass c : all_op_classes)
-        header += ",ops_" + std::string(op_class_name(c));
-    for (char& ch : header)
-        ch = ch == ' ' ? '_' : ch;
-    return header + ",ops_other,compute_limit_ns,compute_binding,compute_sum_limit_ns,bandwidth_limit_ns,"
-                    "percent_of_limit";
-}
-
-std::string limit_csv_cells(const BenchRow& row, const BenchReport& report)
-{
-    std::ostringstream cells;
-    cells << std::setprecision(6);
+    std::ostringstream csv;
+    csv << std::setprecision(6) << "method,precision,job,ns_median,ns_low,ns_high";
     for (OpClass c : all_op_classes) {
-        cells << ",";
-        if (row.has_ops)
-            cells << row.ops[c];
+        std::string name = op_class_name(c);
+        std::replace(name.begin(), name.end(), ' ', '_');
+        csv << ",ops_" << name;
     }
-    cells << "," << (row.has_ops && !row.ops.other.empty() ? std::to_string(row.ops.other.size()) + " kinds" : "");
-    std::optional<RowLimit> limit = row_limit(row, report);
-    if (!limit)
-        return cells.str() + ",,,,,";
-    if (limit->compute)
-        cells << "," << limit->compute->ns << "," << op_class_name(limit->compute->binding) << "," << limit->compute->sum_ns;
-    else
-        cells << ",,,";
-    cells << ",";
-    if (limit->bandwidth_ns)
-        cells << *limit->bandwidth_ns;
-    cells << "," << limit->percent;
-    return cells.str();
+    csv << ",ops_other,compute_limit_ns,compute_binding,compute_sum_limit_ns,bandwidth_limit_ns,percent_of_limit\n";
+    for (const LimitRow& row : report.rows) {
+        const Timing& t = row.row.timing;
+        csv << row.row.method << "," << row.row.precision << "," << row.row.job << "," << t.median << "," << t.low
+            << "," << t.high;
+        for (OpClass c : all_op_classes) {
+            csv << ",";
+            if (row.ops)
+                csv << (*row.ops)[c];
+        }
+        csv << "," << (row.ops && !row.ops->other.empty() ? std::to_string(row.ops->other.size()) + " kinds" : "");
+        const std::optional<RowLimit> limit = row_limit(row, report);
+        if (!limit) {
+            csv << ",,,,,\n";
+            continue;
+        }
+        if (limit->compute)
+            csv << "," << limit->compute->ns << "," << op_class_name(limit->compute->binding) << ","
+                << limit->compute->sum_ns;
+        else
+            csv << ",,,";
+        csv << ",";
+        if (limit->bandwidth_ns)
+            csv << *limit->bandwidth_ns;
+        csv << "," << limit->percent << "\n";
+    }
+    return csv.str();
 }
 
-void write_limit_section(std::ostream& md, const BenchReport& r)
+void write_limit_section(std::ostream& md, const LimitReport& r)
 {
-    const std::vector<const BenchRow*> rows = table_rows(r);
-    if (std::none_of(rows.begin(), rows.end(), [&](const BenchRow* row) { return row_limit(*row, r).has_value(); })) {
+    const std::vector<const LimitRow*> rows = table_rows(r);
+    if (std::none_of(rows.begin(), rows.end(), [&](const LimitRow* row) { return row_limit(*row, r).has_value(); })) {
         md << "\n## How close to this device's limits\n\nNot known here: the limits need the kernels' op counts "
               "(OpenCL C through clang" << (r.ops_unavailable.empty() ? "" : ": " + r.ops_unavailable)
            << ") or the store-only kernel's speed (OpenCL), and neither was measured for this device.\n";
         return;
     }
-    md << "\n## How close to this device's limits\n\nEach method's precise write and fused (furnace) jobs against "
+    md << "\n## How close to this device's limits\n\n" << "Device: " << r.device << ".\n\nEach method's precise write and fused (furnace) jobs against "
           "the limits of this device measured in this run: the compute limit, ns per sample = max over op classes "
           "of (ops per sample / the class's peak), the class that binds in brackets, and beside it the sum over "
           "the classes (the bound where all classes share one set of units, as on a CPU); the bandwidth limit, the "
@@ -141,11 +155,11 @@ void write_limit_section(std::ostream& md, const BenchReport& r)
     write_peaks(md, r);
     md << "| method | job | measured ns | compute limit ns (binds) | sum over classes ns | bandwidth limit ns | "
           "% of the tighter limit |\n|---|---|---|---|---|---|---|\n";
-    for (const BenchRow* row : rows) {
+    for (const LimitRow* row : rows) {
         std::optional<RowLimit> limit = row_limit(*row, r);
         if (!limit)
             continue;
-        md << "| " << row->method << " | " << row->job << " | " << fixed(row->timing.median, 2) << " | "
+        md << "| " << row->row.method << " | " << row->row.job << " | " << fixed(row->row.timing.median, 2) << " | "
            << compute_cell(*limit) << " | " << (limit->compute ? fixed(limit->compute->sum_ns, 2) : "–") << " | "
            << (limit->bandwidth_ns ? fixed(*limit->bandwidth_ns, 2) : "–") << " | " << fixed(limit->percent, 0)
            << "% (" << (limit->compute_binds ? "compute" : "bandwidth") << ") |\n";

@@ -19,6 +19,8 @@
 //   GGX_UNUSED(x)          a parameter a function form does not read
 //   GGX_TYPEDEF_STRUCT(n)  after `struct n { ... };`, the name n alone names the type
 //   GGX_SHADER             1 in GLSL and HLSL, 0 in the C family
+//   ggx_real, GGX_R(x)     the arithmetic type of the device math and a literal of it
+//                          (GGX_ARITHMETIC, below)
 //
 // In OpenCL C they are the built-ins themselves, so the kernels compile to
 // what they did before these names existed.  The accuracy differs by
@@ -31,6 +33,22 @@
 // ggx_sincos.h uses a multiply and an add instead.
 #ifndef GGX_PLATFORM_H
 #define GGX_PLATFORM_H
+
+// GGX_ARITHMETIC: the arithmetic type of the device math, ggx_real: 32 (float, the default) or 16
+// (half precision; so far C++'s _Float16 only, for the headers written on ggx_real: ggx_common.h,
+// ggx_math.h).  GGX_R(x) makes the float literal x (0.5f) a ggx_real: in float the literal itself; in
+// half a conversion that the compiler folds, so that no operation is promoted to float by a literal.
+// One arithmetic per translation unit: in C++ a half build includes the headers inside a namespace
+// of its own, after <cmath>, <cstdint> and <cstring> (tests/host/test_half_math.cpp).
+#ifndef GGX_ARITHMETIC
+#define GGX_ARITHMETIC 32
+#endif
+#if GGX_ARITHMETIC != 32 && GGX_ARITHMETIC != 16
+#error "GGX_ARITHMETIC: 32 (float) or 16 (half)"
+#endif
+#if GGX_ARITHMETIC == 16 && !defined(__cplusplus)
+#error "GGX_ARITHMETIC 16: the device headers compute in half precision in C++ (_Float16) only so far"
+#endif
 
 #if defined(__OPENCL_C_VERSION__)
 // ---- OpenCL C ------------------------------------------------------------
@@ -45,6 +63,7 @@
 #endif
 typedef uint ggx_uint;
 typedef ulong ggx_ulong;
+typedef float ggx_real;
 // static: a plain `inline` function left uninlined (an unoptimized build, SPIR-V) has no external
 // definition, and llvm-spirv marks its body for import, which spirv-val rejects.
 #define GGX_INLINE static inline __attribute__((always_inline))
@@ -67,6 +86,10 @@ typedef ulong ggx_ulong;
 #include <string.h>
 typedef unsigned int ggx_uint;
 typedef unsigned long long ggx_ulong;
+#if GGX_ARITHMETIC == 16
+#error "GGX_ARITHMETIC 16: not yet in CUDA"
+#endif
+typedef float ggx_real;
 #define GGX_INLINE __host__ __device__ __forceinline__
 #if defined(__CUDA_ARCH__) || defined(__clang__)
 #define GGX_UNROLL _Pragma("unroll")
@@ -100,6 +123,11 @@ GGX_INLINE ggx_uint ggx_as_uint(float x)
 #include <cstring>
 typedef std::uint32_t ggx_uint;
 typedef std::uint64_t ggx_ulong;
+#if GGX_ARITHMETIC == 16
+typedef _Float16 ggx_real;  // g++ 12 and clang 15 on x86-64; -mf16c converts in one instruction
+#else
+typedef float ggx_real;
+#endif
 #if defined(_MSC_VER)
 #define GGX_INLINE __forceinline
 #define GGX_UNROLL
@@ -114,17 +142,27 @@ typedef std::uint64_t ggx_ulong;
 #if !defined(GGX_NO_FMA) && !defined(__FP_FAST_FMAF) && !defined(FP_FAST_FMAF)
 #define GGX_NO_FMA 1  // no hardware fma on the target: a multiply and an add (ggx_sincos.h)
 #endif
-GGX_INLINE float ggx_sqrt(float x) { return std::sqrt(x); }
-GGX_INLINE float ggx_rsqrt(float x) { return 1.0f / std::sqrt(x); }
-GGX_INLINE float ggx_fabs(float x) { return std::fabs(x); }
+// In half the functions compute in float and round once: for sqrt that is the correctly rounded
+// half result (float has more than 2 x 11 + 2 bits), for fma in double; std::sqrt and std::fma are
+// ambiguous on _Float16.  In float the casts do nothing.
+GGX_INLINE ggx_real ggx_sqrt(ggx_real x) { return (ggx_real)std::sqrt((float)x); }
+GGX_INLINE ggx_real ggx_rsqrt(ggx_real x) { return (ggx_real)(1.0f / std::sqrt((float)x)); }
+GGX_INLINE ggx_real ggx_fabs(ggx_real x) { return (ggx_real)std::fabs((float)x); }
 // fmin and fmax by a compare and a select, with their rule for NaN (the other
 // argument): x86 has no instruction with that rule, and GCC calls libm's
 // fminf and fmaxf instead, out of line, which also stops the vectorizer.
-GGX_INLINE float ggx_fmin(float a, float b) { return (a < b || b != b) ? a : b; }
-GGX_INLINE float ggx_fmax(float a, float b) { return (a > b || b != b) ? a : b; }
-GGX_INLINE float ggx_rint(float x) { return std::rint(x); }
-GGX_INLINE float ggx_copysign(float x, float y) { return std::copysign(x, y); }
+GGX_INLINE ggx_real ggx_fmin(ggx_real a, ggx_real b) { return (a < b || b != b) ? a : b; }
+GGX_INLINE ggx_real ggx_fmax(ggx_real a, ggx_real b) { return (a > b || b != b) ? a : b; }
+GGX_INLINE ggx_real ggx_rint(ggx_real x) { return (ggx_real)std::rint((float)x); }
+GGX_INLINE ggx_real ggx_copysign(ggx_real x, ggx_real y) { return (ggx_real)std::copysign((float)x, (float)y); }
+#if GGX_ARITHMETIC == 16
+GGX_INLINE ggx_real ggx_fma(ggx_real a, ggx_real b, ggx_real c)
+{
+    return (ggx_real)std::fma((double)a, (double)b, (double)c);
+}
+#else
 GGX_INLINE float ggx_fma(float a, float b, float c) { return std::fma(a, b, c); }
+#endif
 GGX_INLINE ggx_uint ggx_as_uint(float x)
 {
     ggx_uint bits;
@@ -165,7 +203,13 @@ GGX_INLINE ggx_uint ggx_as_uint(float x)
 
 // fmin(fmax(x, lo), hi), OpenCL C's clamp.
 #if !defined(__OPENCL_C_VERSION__) && !GGX_SHADER
-GGX_INLINE float ggx_clamp(float x, float lo, float hi) { return ggx_fmin(ggx_fmax(x, lo), hi); }
+GGX_INLINE ggx_real ggx_clamp(ggx_real x, ggx_real lo, ggx_real hi) { return ggx_fmin(ggx_fmax(x, lo), hi); }
+#endif
+
+#if GGX_ARITHMETIC == 16
+#define GGX_R(x) ((ggx_real)(x))
+#else
+#define GGX_R(x) (x)
 #endif
 
 #endif

@@ -23,6 +23,7 @@
 #define GGX_FLT_MAX 3.402823466e+38f
 #define ggx_uint uint
 #define ggx_ulong uint64_t
+#define ggx_real float  // GGX_ARITHMETIC 32 only (ggx_platform.h)
 #define GGX_UNUSED(x)
 #define GGX_TYPEDEF_STRUCT(name)
 

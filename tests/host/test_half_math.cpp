@@ -1,0 +1,141 @@
+// test_half_math.cpp - the GGX math of ggx_math.h built in half precision (GGX_ARITHMETIC 16: C++
+// _Float16, -mf16c, -ffp-contract=off, every operation rounded to half) against the double
+// reference on the same half inputs: D, Lambda, G1 and both G2 over roughnesses 0.05 to 1 and
+// directions where every value is a normal half number, within 2^-7 relative (16 half ulps; Lambda,
+// whose (t/|z| - 1)/2 cancels in half as t nears |z|, against 1 + Lambda, what G1 divides by); the
+// errors are half-sized, not float-sized (control: the largest is above 1e-4); a D off by 1% in
+// alpha fails the same bound (negative control); and D at the pole overflows to Inf where
+// 1 / (pi alpha^2) passes 65504, alpha 0.002.  The CPU's f16 flags are printed: a CPU with
+// AVX512-FP16 lowers _Float16 to its own instructions.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "ggx_reference.hpp"
+
+namespace ggx_f16 {
+#define GGX_ARITHMETIC 16
+#include "ggx_math.h"
+} // namespace ggx_f16
+
+namespace {
+
+using half = _Float16;
+constexpr double bound = 1.0 / 128;  // 2^-7: 16 ulps of a half near 1
+
+struct HalfVec {
+    ggx_f16::ggx_vec3 h;  // the half direction the math gets
+    ggxref::Vec3 d;       // the same numbers as doubles, for the reference
+};
+
+HalfVec half_vec(double x, double y, double z)
+{
+    const half hx = half(x), hy = half(y), hz = half(z);
+    return {ggx_f16::ggx_vec3_make(hx, hy, hz), {double(hx), double(hy), double(hz)}};
+}
+
+// Unit directions over the sphere, each rounded to half, |z| >= 0.05 (Lambda's 1/|z| stays normal).
+std::vector<HalfVec> directions(int count)
+{
+    std::mt19937_64 random(20261207);
+    std::normal_distribution<double> normal;
+    std::vector<HalfVec> out;
+    while (int(out.size()) < count) {
+        double x = normal(random), y = normal(random), z = normal(random);
+        const double length = std::sqrt(x * x + y * y + z * z);
+        x /= length, y /= length, z /= length;
+        if (std::fabs(z) >= 0.05)
+            out.push_back(half_vec(x, y, z));
+    }
+    return out;
+}
+
+// The largest relative error of one function over the grid, counting only values that are normal
+// half numbers (>= 2^-14, <= 65504), and how many were counted.
+struct Worst {
+    double error = 0;
+    int counted = 0;
+    void add(double got, double want, double scale)
+    {
+        if (!(std::fabs(want) >= 6.103515625e-05 && std::fabs(want) <= 65504.0))
+            return;
+        error = std::max(error, std::fabs(got - want) / scale);
+        ++counted;
+    }
+    void add(double got, double want) { add(got, want, std::fabs(want)); }
+};
+
+std::string f16_flags()
+{
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line, flags;
+    while (std::getline(cpuinfo, line))
+        if (line.rfind("flags", 0) == 0) {
+            for (const char* flag : {" f16c", " avx512fp16", " avx512_fp16"})
+                if (line.find(std::string(flag) + " ") != std::string::npos)
+                    flags += flag;
+            break;
+        }
+    return flags.empty() ? " (none)" : flags;
+}
+
+} // namespace
+
+TEST_CASE("the GGX math in half precision agrees with the double reference within 16 half ulps")
+{
+    MESSAGE("CPU f16 flags:" << f16_flags());
+    const std::vector<HalfVec> dirs = directions(4000);
+    const double alphas[][2] = {{0.05, 0.05}, {0.1, 0.1}, {0.3, 0.3}, {0.6, 0.6}, {1.0, 1.0}, {0.1, 0.5}};
+    Worst D, lambda, G1, G2, G2_separable;
+    for (const auto& a : alphas) {
+        const half ax = half(a[0]), ay = half(a[1]);
+        const double dx = double(ax), dy = double(ay);
+        for (std::size_t k = 0; k < dirs.size(); ++k) {
+            const HalfVec& w = dirs[k];
+            const HalfVec& v = dirs[(k * 7 + 3) % dirs.size()];
+            if (w.d.z > 0)
+                D.add(double(ggx_f16::ggx_D(w.h, ax, ay)), ggxref::D(w.d, dx, dy));
+            const double exact_lambda = ggxref::lambda(w.d, dx, dy);
+            lambda.add(double(ggx_f16::ggx_lambda(w.h, ax, ay)), exact_lambda, 1 + std::fabs(exact_lambda));
+            G1.add(double(ggx_f16::ggx_G1(w.h, ax, ay)), ggxref::G1(w.d, dx, dy));
+            G2.add(double(ggx_f16::ggx_G2(w.h, v.h, ax, ay)), ggxref::G2_height_correlated(w.d, v.d, dx, dy));
+            G2_separable.add(double(ggx_f16::ggx_G2_separable(w.h, v.h, ax, ay)), ggxref::G2_separable(w.d, v.d, dx, dy));
+        }
+    }
+    const Worst* all[] = {&D, &lambda, &G1, &G2, &G2_separable};
+    const std::string names[] = {"D", "lambda", "G1", "G2", "G2_separable"};
+    double largest = 0;
+    for (int f = 0; f < 5; ++f) {
+        CAPTURE(names[f]);
+        MESSAGE(names[f] << ": largest error " << all[f]->error << " over " << all[f]->counted << " values");
+        CHECK(all[f]->counted > 3000);
+        CHECK(all[f]->error <= bound);
+        largest = std::max(largest, all[f]->error);
+    }
+    CHECK(largest > 1e-4);  // control: half arithmetic, not float (float's would be about 1e-7)
+}
+
+TEST_CASE("the bound rejects a D whose alpha is 1% off (negative control)")
+{
+    Worst off;
+    for (const HalfVec& w : directions(2000))
+        if (w.d.z > 0)
+            off.add(double(ggx_f16::ggx_D(w.h, half(0.303), half(0.303))), ggxref::D(w.d, double(half(0.3)),
+                                                                                       double(half(0.3))));
+    CHECK(off.counted > 500);
+    CHECK(off.error > bound);
+}
+
+TEST_CASE("D at the pole overflows half where 1 / (pi alpha^2) passes 65504")
+{
+    const HalfVec pole = half_vec(0, 0, 1);
+    CHECK(std::isfinite(double(ggx_f16::ggx_D(pole.h, half(0.003), half(0.003)))));  // 35 368
+    CHECK(std::isinf(double(ggx_f16::ggx_D(pole.h, half(0.002), half(0.002)))));     // 79 577 in double
+    CHECK(ggxref::D(pole.d, double(half(0.002)), double(half(0.002))) > 65504.0);
+}

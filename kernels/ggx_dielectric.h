@@ -26,9 +26,9 @@
 
 // A relative index the functions below take: finite, > 0 and != 1 (others
 // give the fallback sample, pdf 0).
-GGX_INLINE int ggx_eta_ok(float eta)
+GGX_INLINE int ggx_eta_ok(ggx_real eta)
 {
-    return ggx_to_int(eta > 0.0f) & ggx_to_int(eta <= GGX_FLT_MAX) & ggx_to_int(eta != 1.0f);
+    return ggx_to_int(eta > GGX_R(0.0f)) & ggx_to_int(eta <= GGX_FLT_MAX) & ggx_to_int(eta != GGX_R(1.0f));
 }
 
 // v mirrored through the plane of the unit normal n, v - 2 (v.n) n, where
@@ -36,7 +36,7 @@ GGX_INLINE int ggx_eta_ok(float eta)
 // struct selects stop PoCL's vectorizer (ggx_guards.h).
 GGX_INLINE ggx_vec3 ggx_mirror_if(ggx_vec3 v, ggx_vec3 n, bool mirror)
 {
-    return ggx_add(v, ggx_scale(n, mirror ? -2.0f * ggx_dot(v, n) : 0.0f));
+    return ggx_add(v, ggx_scale(n, mirror ? -GGX_R(2.0f) * ggx_dot(v, n) : GGX_R(0.0f)));
 }
 
 // Per component: a where `pick_a`, else b.
@@ -52,8 +52,8 @@ GGX_INLINE ggx_vec3 ggx_local_of(ggx_vec3 w, ggx_vec3 n, bool about_n)
 {
     if (!about_n)
         return w;
-    const float wn = ggx_dot(w, n);
-    return ggx_vec3_make(ggx_sqrt(ggx_tangential2(w, n, wn)), 0.0f, wn);
+    const ggx_real wn = ggx_dot(w, n);
+    return ggx_vec3_make(ggx_sqrt(ggx_tangential2(w, n, wn)), GGX_R(0.0f), wn);
 }
 
 // Snell's law through m for c = i.m > 0 below the critical angle: with
@@ -61,16 +61,16 @@ GGX_INLINE ggx_vec3 ggx_local_of(ggx_vec3 w, ggx_vec3 n, bool about_n)
 // ggx_fresnel_dielectric, without cancellation) and
 // o = -i / eta + (c / eta - cos_t) m, so o.m = -cos_t (Walter et al. eq. 40).
 // Normalized: for a small eta the rounding of i grows by 1/eta.
-GGX_INLINE ggx_vec3 ggx_refract(ggx_vec3 i, ggx_vec3 m, float c, float eta, float cos_t)
+GGX_INLINE ggx_vec3 ggx_refract(ggx_vec3 i, ggx_vec3 m, ggx_real c, ggx_real eta, ggx_real cos_t)
 {
-    const float inv_eta = 1.0f / eta;
+    const ggx_real inv_eta = GGX_R(1.0f) / eta;
     return ggx_normalize(ggx_add(ggx_scale(i, -inv_eta), ggx_scale(m, c * inv_eta - cos_t)));
 }
 
-GGX_INLINE float ggx_refracted_cosine(float c, float eta)
+GGX_INLINE ggx_real ggx_refracted_cosine(ggx_real c, ggx_real eta)
 {
-    const float d = (eta - 1.0f) * (eta + 1.0f);
-    return ggx_sqrt(ggx_fmax(d + c * c, 0.0f)) / eta;
+    const ggx_real d = (eta - GGX_R(1.0f)) * (eta + GGX_R(1.0f));
+    return ggx_sqrt(ggx_fmax(d + c * c, GGX_R(0.0f))) / eta;
 }
 
 // The Jacobian |dm/do| of a refraction, eta^2 |o.m| / (i.m + eta o.m)^2 with
@@ -78,37 +78,38 @@ GGX_INLINE float ggx_refracted_cosine(float c, float eta)
 // eta = 1: c - eta cos_t = -d / (c + eta cos_t), so the Jacobian is
 // cos_t q^2 with q = eta (c + eta cos_t) / d, a form that stays in float
 // range for any index of a finite square.
-GGX_INLINE float ggx_refraction_jacobian(float c, float eta, float cos_t)
+GGX_INLINE ggx_real ggx_refraction_jacobian(ggx_real c, ggx_real eta, ggx_real cos_t)
 {
-    const float d = (eta - 1.0f) * (eta + 1.0f);
-    const float q = eta * ((c + eta * cos_t) / d);
+    const ggx_real d = (eta - GGX_R(1.0f)) * (eta + GGX_R(1.0f));
+    const ggx_real q = eta * ((c + eta * cos_t) / d);
     return cos_t * q * q;
 }
 
 // The density of the normal m for the method's family: D(m) mz for ndf
 // (Walter et al. eq. 24), the VNDF 2 (i.m) D(m) / (iz + t(i)) otherwise
 // (Heitz 2018 eq. 1); i_local, m_local as ggx_local_of gives, c = i.m > 0.
-GGX_INLINE float ggx_normal_density(bool ndf, ggx_vec3 i_local, ggx_vec3 m_local, float c, float ax, float ay)
+GGX_INLINE ggx_real ggx_normal_density(bool ndf, ggx_vec3 i_local, ggx_vec3 m_local, ggx_real c, ggx_real ax,
+                                       ggx_real ay)
 {
-    const float D = ggx_D(m_local, ax, ay);
+    const ggx_real D = ggx_D(m_local, ax, ay);
     if (ndf)
         return D * m_local.z;
-    const float inv = ggx_inv_iz_plus_t(i_local.z, ggx_t(i_local, ax, ay), ax, ay, i_local);
-    return 2.0f * c * D * inv;
+    const ggx_real inv = ggx_inv_iz_plus_t(i_local.z, ggx_t(i_local, ax, ay), ax, ay, i_local);
+    return GGX_R(2.0f) * c * D * inv;
 }
 
 // f |o.n| / pdf_o of a transmission through m (Walter et al. eqs. 21, 38-41;
 // SPEC "Rough dielectrics"), the even Lambda for o below: G2 (i.m) / (iz mz)
 // for ndf, G2 / G1(i) for the VNDF methods; radiance divides by eta^2.
-GGX_INLINE float ggx_transmission_weight(bool ndf, ggx_vec3 i_local, ggx_vec3 o_local, ggx_vec3 m_local, float c,
-                                         float ax, float ay, float eta, int radiance)
+GGX_INLINE ggx_real ggx_transmission_weight(bool ndf, ggx_vec3 i_local, ggx_vec3 o_local, ggx_vec3 m_local, ggx_real c,
+                                         ggx_real ax, ggx_real ay, ggx_real eta, int radiance)
 {
     const ggx_vec3 o_up = ggx_vec3_make(o_local.x, o_local.y, -o_local.z);
-    const float iz = i_local.z, ti = ggx_t(i_local, ax, ay);
-    const float g2 = ggx_G2_from_t(iz, o_up.z, ti, ggx_t(o_up, ax, ay));
-    const float weight = ndf ? g2 * c / (iz * m_local.z) : g2 * (iz + ti) / (2.0f * iz);
-    const float scaled = radiance != 0 ? weight / (eta * eta) : weight;
-    return iz > 0.0f ? scaled : 0.0f;
+    const ggx_real iz = i_local.z, ti = ggx_t(i_local, ax, ay);
+    const ggx_real g2 = ggx_G2_from_t(iz, o_up.z, ti, ggx_t(o_up, ax, ay));
+    const ggx_real weight = ndf ? g2 * c / (iz * m_local.z) : g2 * (iz + ti) / (GGX_R(2.0f) * iz);
+    const ggx_real scaled = radiance != 0 ? weight / (eta * eta) : weight;
+    return iz > GGX_R(0.0f) ? scaled : GGX_R(0.0f);
 }
 
 // The dielectric sample from the reflection sample s of a view i above the
@@ -116,31 +117,33 @@ GGX_INLINE float ggx_transmission_weight(bool ndf, ggx_vec3 i_local, ggx_vec3 o_
 // The lobe is a branch: computing both and selecting holds too much live at
 // once for an unrolled furnace on RDNA3, which then spills.  s with pdf_o = 0
 // (the fallback, or a direction without density) keeps its m and o.
-GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, ggx_vec3 i, float ax, float ay,
-                                                     float eta, int radiance, float u3, bool ndf, bool about_n)
+GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, ggx_vec3 i, ggx_real ax, ggx_real ay,
+                                                     ggx_real eta, int radiance, ggx_real u3, bool ndf, bool about_n)
 {
-    const float c = ggx_dot(i, s.m);
-    const float F = ggx_fresnel_dielectric(ggx_fmax(c, 0.0f), eta);
+    const ggx_real c = ggx_dot(i, s.m);
+    const ggx_real F = ggx_fresnel_dielectric(ggx_fmax(c, GGX_R(0.0f)), eta);
     ggx_sample result = s;
-    if (!(c > 0.0f && s.pdf_o > 0.0f)) {  // a back-facing m (ndf) scatters nothing; o stays the fallback's
-        result.pdf_o = 0.0f;
-        result.weight = 0.0f;
+    // A back-facing m (ndf) scatters nothing; o stays the fallback's.
+    if (!(c > GGX_R(0.0f) && s.pdf_o > GGX_R(0.0f))) {
+        result.pdf_o = GGX_R(0.0f);
+        result.weight = GGX_R(0.0f);
         return result;
     }
     if (u3 < F) {  // reflection, with probability F (always under total internal reflection)
-        const bool valid = ggx_dot(s.o, n) > 0.0f;  // a reflection stays on the view's side
-        result.pdf_o = valid ? F * s.pdf_o : 0.0f;
-        result.weight = valid ? s.weight : 0.0f;
+        const bool valid = ggx_dot(s.o, n) > GGX_R(0.0f);  // a reflection stays on the view's side
+        result.pdf_o = valid ? F * s.pdf_o : GGX_R(0.0f);
+        result.weight = valid ? s.weight : GGX_R(0.0f);
         return result;
     }
     // The transmission through m (Snell's law), its density and weight.
-    const float cos_t = ggx_refracted_cosine(c, eta);
+    const ggx_real cos_t = ggx_refracted_cosine(c, eta);
     result.o = ggx_refract(i, s.m, c, eta, cos_t);
-    const bool valid = ggx_dot(result.o, n) < 0.0f;  // a transmission crosses the surface
-    const float weight = ggx_transmission_weight(ndf, ggx_local_of(i, n, about_n), ggx_local_of(result.o, n, about_n),
-                                                 ggx_local_of(s.m, n, about_n), c, ax, ay, eta, radiance);
-    result.pdf_o = valid ? (1.0f - F) * s.pdf_m * ggx_refraction_jacobian(c, eta, cos_t) : 0.0f;
-    result.weight = valid ? weight : 0.0f;
+    const bool valid = ggx_dot(result.o, n) < GGX_R(0.0f);  // a transmission crosses the surface
+    const ggx_real weight =
+        ggx_transmission_weight(ndf, ggx_local_of(i, n, about_n), ggx_local_of(result.o, n, about_n),
+                                ggx_local_of(s.m, n, about_n), c, ax, ay, eta, radiance);
+    result.pdf_o = valid ? (GGX_R(1.0f) - F) * s.pdf_m * ggx_refraction_jacobian(c, eta, cos_t) : GGX_R(0.0f);
+    result.weight = valid ? weight : GGX_R(0.0f);
     return result;
 }
 
@@ -148,34 +151,37 @@ GGX_INLINE ggx_sample ggx_dielectric_from_reflection(ggx_sample s, ggx_vec3 n, g
 // F(i.h) times the method's reflection pdf for o above; for o below, the
 // generalized half vector m = -(i + eta o) turned to face n, valid where
 // i.m > 0 and o.m < 0, with (1 - F(i.m)) pdf_m(m) |dm/do|.
-GGX_INLINE float ggx_dielectric_pdf_above(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay,
-                                          float eta, float reflection_pdf, bool about_n)
+GGX_INLINE ggx_real ggx_dielectric_pdf_above(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, ggx_real ax, ggx_real ay,
+                                          ggx_real eta, ggx_real reflection_pdf, bool about_n)
 {
-    const float on = ggx_dot(o, n);
-    const float reflected = ggx_fresnel_dielectric(ggx_fmax(ggx_dot(i, ggx_half_vector(i, o)), 0.0f), eta) * reflection_pdf;
+    const ggx_real on = ggx_dot(o, n);
+    const ggx_real reflected =
+        ggx_fresnel_dielectric(ggx_fmax(ggx_dot(i, ggx_half_vector(i, o)), GGX_R(0.0f)), eta) * reflection_pdf;
     ggx_vec3 m = ggx_add(i, ggx_scale(o, eta));
-    const float len2 = ggx_dot(m, m);
-    m = ggx_scale(m, (ggx_dot(m, n) > 0.0f ? 1.0f : -1.0f) * (len2 > 0.0f ? ggx_rsqrt(len2) : 0.0f));
-    const float c = ggx_dot(i, m), om = ggx_dot(o, m);
-    const int valid = ggx_to_int(on < 0.0f) & ggx_to_int(c > 0.0f) & ggx_to_int(om < 0.0f);
-    const float c_up = ggx_fmax(c, 0.0f), cos_t = ggx_fmax(-om, 0.0f), sum = c + eta * om;
-    const float density = ggx_normal_density(ggx_method_ndf_normals(method) != 0, ggx_local_of(i, n, about_n),
+    const ggx_real len2 = ggx_dot(m, m);
+    m = ggx_scale(m, (ggx_dot(m, n) > GGX_R(0.0f) ? GGX_R(1.0f) : -GGX_R(1.0f)) *
+                         (len2 > GGX_R(0.0f) ? ggx_rsqrt(len2) : GGX_R(0.0f)));
+    const ggx_real c = ggx_dot(i, m), om = ggx_dot(o, m);
+    const int valid = ggx_to_int(on < GGX_R(0.0f)) & ggx_to_int(c > GGX_R(0.0f)) & ggx_to_int(om < GGX_R(0.0f));
+    const ggx_real c_up = ggx_fmax(c, GGX_R(0.0f)), cos_t = ggx_fmax(-om, GGX_R(0.0f)), sum = c + eta * om;
+    const ggx_real density = ggx_normal_density(ggx_method_ndf_normals(method) != 0, ggx_local_of(i, n, about_n),
                                               ggx_local_of(m, n, about_n), c_up, ax, ay);
-    const float transmitted = (1.0f - ggx_fresnel_dielectric(c_up, eta)) * density * eta * eta * cos_t / (sum * sum);
-    return on > 0.0f ? reflected : (valid != 0 ? transmitted : 0.0f);
+    const ggx_real transmitted =
+        (GGX_R(1.0f) - ggx_fresnel_dielectric(c_up, eta)) * density * eta * eta * cos_t / (sum * sum);
+    return on > GGX_R(0.0f) ? reflected : (valid != 0 ? transmitted : GGX_R(0.0f));
 }
 
 // A dielectric sample of `method` in tangent space (caps-iso: about n).
-GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay, float eta,
-                                                   int radiance, float u1, float u2, float u3)
+GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_real ax, ggx_real ay,
+                                                   ggx_real eta, int radiance, ggx_real u1, ggx_real u2, ggx_real u3)
 {
     const bool about_n = ggx_method_world_space(method) != 0;
-    const ggx_vec3 up = about_n ? n : ggx_vec3_make(0.0f, 0.0f, 1.0f);
-    const bool below = ggx_dot(i, up) < 0.0f;
+    const ggx_vec3 up = about_n ? n : ggx_vec3_make(GGX_R(0.0f), GGX_R(0.0f), GGX_R(1.0f));
+    const bool below = ggx_dot(i, up) < GGX_R(0.0f);
     if (ggx_method_dielectric(method) == 0)
         return ggx_fallback_sample(up);
     const ggx_vec3 i_above = ggx_mirror_if(i, up, below);
-    const float eta_side = below ? 1.0f / eta : eta;
+    const ggx_real eta_side = below ? GGX_R(1.0f) / eta : eta;
     ggx_sample s = ggx_sample_method(method, n, i_above, ax, ay, u1, u2);
     s = ggx_dielectric_from_reflection(s, up, i_above, ax, ay, eta_side, radiance, u3,
                                        ggx_method_ndf_normals(method) != 0, about_n);
@@ -185,20 +191,20 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_method(int method, ggx_vec3 n, ggx_v
 }
 
 // The density of o for `method`'s dielectric sampler, recomputed from (i, o) alone.
-GGX_INLINE float ggx_pdf_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay,
-                                           float eta)
+GGX_INLINE ggx_real ggx_pdf_dielectric_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, ggx_real ax, ggx_real ay,
+                                           ggx_real eta)
 {
     const bool about_n = ggx_method_world_space(method) != 0;
-    const ggx_vec3 up = about_n ? n : ggx_vec3_make(0.0f, 0.0f, 1.0f);
-    const bool below = ggx_dot(i, up) < 0.0f;
+    const ggx_vec3 up = about_n ? n : ggx_vec3_make(GGX_R(0.0f), GGX_R(0.0f), GGX_R(1.0f));
+    const bool below = ggx_dot(i, up) < GGX_R(0.0f);
     if (ggx_method_dielectric(method) == 0)
-        return 0.0f;
+        return GGX_R(0.0f);
     const ggx_vec3 i_above = ggx_mirror_if(i, up, below), o_side = ggx_mirror_if(o, up, below);
-    const float eta_side = below ? 1.0f / eta : eta;
-    const float reflection_pdf = ggx_pdf_method(method, n, i_above, o_side, ax, ay);
-    const float pdf =
+    const ggx_real eta_side = below ? GGX_R(1.0f) / eta : eta;
+    const ggx_real reflection_pdf = ggx_pdf_method(method, n, i_above, o_side, ax, ay);
+    const ggx_real pdf =
         ggx_dielectric_pdf_above(method, up, i_above, o_side, ax, ay, eta_side, reflection_pdf, about_n);
-    return ggx_guard_pdf(ggx_eta_ok(eta) != 0 ? pdf : 0.0f, ax, ay);
+    return ggx_guard_pdf(ggx_eta_ok(eta) != 0 ? pdf : GGX_R(0.0f), ax, ay);
 }
 
 #endif

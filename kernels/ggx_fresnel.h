@@ -23,16 +23,16 @@
 // 2007, eq. 22).  ct^2 is written without forming 1/eta or 1 - sin^2, which
 // cancel near the critical angle: above, ((eta - 1)(eta + 1) + c^2) / eta^2;
 // below, (1 - eta)(1 + eta) + eta^2 c^2.
-GGX_INLINE float ggx_fresnel_dielectric(float c, float eta)
+GGX_INLINE ggx_real ggx_fresnel_dielectric(ggx_real c, ggx_real eta)
 {
     // Selects, not branches: a dielectric's lobe choice stays vectorizable on CPUs.
-    const float d = (eta - 1.0f) * (eta + 1.0f);
-    const float a_c = ggx_fmin(ggx_fabs(c), 1.0f);
-    const float ct2 = c >= 0.0f ? (d + a_c * a_c) / (eta * eta) : eta * eta * a_c * a_c - d;
-    const float ct = ggx_sqrt(ggx_fmax(ct2, 0.0f));
-    const float a = (a_c - eta * ct) / (a_c + eta * ct);
-    const float b = (eta * a_c - ct) / (eta * a_c + ct);
-    return ct2 > 0.0f ? 0.5f * (a * a + b * b) : 1.0f;
+    const ggx_real d = (eta - GGX_R(1.0f)) * (eta + GGX_R(1.0f));
+    const ggx_real a_c = ggx_fmin(ggx_fabs(c), GGX_R(1.0f));
+    const ggx_real ct2 = c >= GGX_R(0.0f) ? (d + a_c * a_c) / (eta * eta) : eta * eta * a_c * a_c - d;
+    const ggx_real ct = ggx_sqrt(ggx_fmax(ct2, GGX_R(0.0f)));
+    const ggx_real a = (a_c - eta * ct) / (a_c + eta * ct);
+    const ggx_real b = (eta * a_c - ct) / (eta * a_c + ct);
+    return ct2 > GGX_R(0.0f) ? GGX_R(0.5f) * (a * a + b * b) : GGX_R(1.0f);
 }
 
 // Conductor of complex relative index eta + i k, at cosine c in [0, 1], for
@@ -49,35 +49,35 @@ GGX_INLINE float ggx_fresnel_dielectric(float c, float eta)
 // the larger is (sqrt(t0^2 + 4 eta^2 k^2) + |t0|) / 2, a sum of positives,
 // and the smaller eta^2 k^2 over it; and the numerators as sums of squares
 // rather than differences of the expanded terms.
-GGX_INLINE float ggx_fresnel_conductor(float c, float eta, float k)
+GGX_INLINE ggx_real ggx_fresnel_conductor(ggx_real c, ggx_real eta, ggx_real k)
 {
-    c = ggx_clamp(c, 0.0f, 1.0f);
-    const float c2 = c * c, s2 = 1.0f - c2, ek = eta * k;
-    const float t0 = ggx_fma(c, c, ggx_fma(-k, k, ggx_fma(eta, eta, -1.0f)));
-    const float twice_larger = ggx_sqrt(t0 * t0 + 4.0f * ek * ek) + ggx_fabs(t0);
-    const float larger = 0.5f * twice_larger;
-    const float smaller = twice_larger > 0.0f ? 2.0f * ek * ek / twice_larger : 0.0f;
-    const float a2 = t0 >= 0.0f ? larger : smaller, b2 = t0 >= 0.0f ? smaller : larger;
-    const float a = ggx_sqrt(a2);
-    const float rs = ((a - c) * (a - c) + b2) / ((a + c) * (a + c) + b2);
-    const float ac = a * c, b2c2 = b2 * c2;
-    const float rp = rs * ((ac - s2) * (ac - s2) + b2c2) / ((ac + s2) * (ac + s2) + b2c2);
-    return 0.5f * (rs + rp);
+    c = ggx_clamp(c, GGX_R(0.0f), GGX_R(1.0f));
+    const ggx_real c2 = c * c, s2 = GGX_R(1.0f) - c2, ek = eta * k;
+    const ggx_real t0 = ggx_fma(c, c, ggx_fma(-k, k, ggx_fma(eta, eta, -GGX_R(1.0f))));
+    const ggx_real twice_larger = ggx_sqrt(t0 * t0 + GGX_R(4.0f) * ek * ek) + ggx_fabs(t0);
+    const ggx_real larger = GGX_R(0.5f) * twice_larger;
+    const ggx_real smaller = twice_larger > GGX_R(0.0f) ? GGX_R(2.0f) * ek * ek / twice_larger : GGX_R(0.0f);
+    const ggx_real a2 = t0 >= GGX_R(0.0f) ? larger : smaller, b2 = t0 >= GGX_R(0.0f) ? smaller : larger;
+    const ggx_real a = ggx_sqrt(a2);
+    const ggx_real rs = ((a - c) * (a - c) + b2) / ((a + c) * (a + c) + b2);
+    const ggx_real ac = a * c, b2c2 = b2 * c2;
+    const ggx_real rp = rs * ((ac - s2) * (ac - s2) + b2c2) / ((ac + s2) * (ac + s2) + b2c2);
+    return GGX_R(0.5f) * (rs + rp);
 }
 
 // Schlick 1994: F0 + (1 - F0) (1 - c)^5, F0 the reflectance at normal
 // incidence; c clamped to [0, 1].
-GGX_INLINE float ggx_fresnel_schlick(float c, float f0)
+GGX_INLINE ggx_real ggx_fresnel_schlick(ggx_real c, ggx_real f0)
 {
-    const float x = 1.0f - ggx_clamp(c, 0.0f, 1.0f);
-    const float x2 = x * x;
-    return f0 + (1.0f - f0) * (x2 * x2 * x);
+    const ggx_real x = GGX_R(1.0f) - ggx_clamp(c, GGX_R(0.0f), GGX_R(1.0f));
+    const ggx_real x2 = x * x;
+    return f0 + (GGX_R(1.0f) - f0) * (x2 * x2 * x);
 }
 
 // alpha = roughness^2: the perceptual roughness of Burley's model, glTF,
 // Filament and Unreal.  (pbrt-v4's RoughnessToAlpha is another convention:
 // alpha = sqrt(roughness).)
-GGX_INLINE float ggx_alpha_from_perceptual_roughness(float roughness)
+GGX_INLINE ggx_real ggx_alpha_from_perceptual_roughness(ggx_real roughness)
 {
     return roughness * roughness;
 }
@@ -86,9 +86,9 @@ GGX_INLINE float ggx_alpha_from_perceptual_roughness(float roughness)
 // than sample the microfacet lobe: 99% of the normals then lie within 0.01
 // rad of the surface normal (docs/MATH.md; pbrt-v4's EffectivelySmooth uses
 // the same bound).
-#define GGX_SMOOTH_ALPHA 1e-3f
+#define GGX_SMOOTH_ALPHA GGX_R(1e-3f)
 
-GGX_INLINE bool ggx_is_effectively_smooth(float ax, float ay)
+GGX_INLINE bool ggx_is_effectively_smooth(ggx_real ax, ggx_real ay)
 {
     return ggx_fmax(ax, ay) < GGX_SMOOTH_ALPHA;
 }

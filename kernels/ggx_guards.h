@@ -23,7 +23,7 @@
 #define GGX_GUARDS 1
 #endif
 
-GGX_INLINE int ggx_is_finite(float x)
+GGX_INLINE int ggx_is_finite(ggx_real x)
 {
     return ggx_to_int((ggx_as_uint(x) & 0x7f800000u) != 0x7f800000u);
 }
@@ -31,9 +31,9 @@ GGX_INLINE int ggx_is_finite(float x)
 // A roughness usable by the samplers: finite and > 0 (float compares, false
 // for NaN; bit tests here would be paired by the SLP vectorizer with the one
 // on m, see below).
-GGX_INLINE int ggx_roughness_ok(float ax, float ay)
+GGX_INLINE int ggx_roughness_ok(ggx_real ax, ggx_real ay)
 {
-    return ggx_to_int(ax > 0.0f && ay > 0.0f && ax <= GGX_FLT_MAX && ay <= GGX_FLT_MAX);
+    return ggx_to_int(ax > GGX_R(0.0f) && ay > GGX_R(0.0f) && ax <= GGX_FLT_MAX && ay <= GGX_FLT_MAX);
 }
 
 // The fallback sample about the unit normal n: m = o = n, pdfs and weight 0.
@@ -42,9 +42,9 @@ GGX_INLINE ggx_sample ggx_fallback_sample(ggx_vec3 n)
     ggx_sample result;
     result.m = n;
     result.o = n;
-    result.pdf_m = 0.0f;
-    result.pdf_o = 0.0f;
-    result.weight = 0.0f;
+    result.pdf_m = GGX_R(0.0f);
+    result.pdf_o = GGX_R(0.0f);
+    result.weight = GGX_R(0.0f);
     return result;
 }
 
@@ -56,21 +56,21 @@ GGX_INLINE ggx_sample ggx_keep_or_fallback(ggx_sample s, int ok, ggx_vec3 n)
     ggx_sample result;
     result.m = ggx_vec3_make(keep ? s.m.x : n.x, keep ? s.m.y : n.y, keep ? s.m.z : n.z);
     result.o = ggx_vec3_make(keep ? s.o.x : n.x, keep ? s.o.y : n.y, keep ? s.o.z : n.z);
-    result.pdf_m = keep ? s.pdf_m : 0.0f;
-    result.pdf_o = keep ? s.pdf_o : 0.0f;
-    result.weight = keep ? s.weight : 0.0f;
+    result.pdf_m = keep ? s.pdf_m : GGX_R(0.0f);
+    result.pdf_o = keep ? s.pdf_o : GGX_R(0.0f);
+    result.weight = keep ? s.weight : GGX_R(0.0f);
     return result;
 }
 
 // s when the roughness is usable and `key` < 1e20, else the fallback about
 // the unit normal n.
-GGX_INLINE ggx_sample ggx_guard_about(ggx_sample s, float key, ggx_vec3 n, float ax, float ay)
+GGX_INLINE ggx_sample ggx_guard_about(ggx_sample s, ggx_real key, ggx_vec3 n, ggx_real ax, ggx_real ay)
 {
 #if GGX_GUARDS
     // key < 1e20 (false for NaN and Inf): a visible area below 1e-20 makes densities beyond float
     // range.  For a uniform view and roughness `ok` is uniform: the guard costs a select per field.
     // (The bit test keeps it under -cl-fast-relaxed-math, which may fold compares with NaN and Inf.)
-    int ok = ggx_roughness_ok(ax, ay) & ggx_to_int(key < 1e20f) & ggx_is_finite(key);
+    int ok = ggx_roughness_ok(ax, ay) & ggx_to_int(key < GGX_R(1e20f)) & ggx_is_finite(key);
     return ggx_keep_or_fallback(s, ok, n);
 #else
     return s;
@@ -78,16 +78,16 @@ GGX_INLINE ggx_sample ggx_guard_about(ggx_sample s, float key, ggx_vec3 n, float
 }
 
 // The same in tangent space, n = (0, 0, 1).
-GGX_INLINE ggx_sample ggx_guard(ggx_sample s, float key, float ax, float ay)
+GGX_INLINE ggx_sample ggx_guard(ggx_sample s, ggx_real key, ggx_real ax, ggx_real ay)
 {
-    return ggx_guard_about(s, key, ggx_vec3_make(0.0f, 0.0f, 1.0f), ax, ay);
+    return ggx_guard_about(s, key, ggx_vec3_make(GGX_R(0.0f), GGX_R(0.0f), GGX_R(1.0f)), ax, ay);
 }
 
 // A pdf of a direction: 0 for an unusable roughness or where it is not finite.
-GGX_INLINE float ggx_guard_pdf(float pdf, float ax, float ay)
+GGX_INLINE ggx_real ggx_guard_pdf(ggx_real pdf, ggx_real ax, ggx_real ay)
 {
 #if GGX_GUARDS
-    return (ggx_roughness_ok(ax, ay) & ggx_is_finite(pdf)) != 0 ? pdf : 0.0f;
+    return (ggx_roughness_ok(ax, ay) & ggx_is_finite(pdf)) != 0 ? pdf : GGX_R(0.0f);
 #else
     return pdf;
 #endif

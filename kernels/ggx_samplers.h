@@ -45,18 +45,19 @@
 #define GGX_USER_METHOD_LINE(X)
 #endif
 
-GGX_INLINE ggx_sample ggx_sample_method(int method, ggx_vec3 n, ggx_vec3 i, float ax, float ay, float u1, float u2)
+GGX_INLINE ggx_sample ggx_sample_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_real ax, ggx_real ay, ggx_real u1,
+                                        ggx_real u2)
 {
     GGX_METHOD_LIST(GGX_SAMPLE_IF_METHOD)
     GGX_USER_METHOD_LINE(GGX_SAMPLE_IF_METHOD)
     return ggx_fallback_sample(n);  // not a method id
 }
 
-GGX_INLINE float ggx_pdf_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float ax, float ay)
+GGX_INLINE ggx_real ggx_pdf_method(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, ggx_real ax, ggx_real ay)
 {
     GGX_METHOD_LIST(GGX_PDF_IF_METHOD)
     GGX_USER_METHOD_LINE(GGX_PDF_IF_METHOD)
-    return 0.0f;  // not a method id
+    return GGX_R(0.0f);  // not a method id
 }
 
 #endif

@@ -18,11 +18,11 @@ GGX_TYPEDEF_STRUCT(ggx_basis)
 // t = (1 + side nx^2 a, side b, -side nx), b = (b, side + ny^2 a, -ny).
 GGX_INLINE ggx_basis ggx_basis_from_normal(ggx_vec3 n)
 {
-    float side = ggx_copysign(1.0f, n.z);
-    float a = -1.0f / (side + n.z);
-    float b = n.x * n.y * a;
+    ggx_real side = ggx_copysign(GGX_R(1.0f), n.z);
+    ggx_real a = -GGX_R(1.0f) / (side + n.z);
+    ggx_real b = n.x * n.y * a;
     ggx_basis basis;
-    basis.t = ggx_vec3_make(1.0f + side * n.x * n.x * a, side * b, -side * n.x);
+    basis.t = ggx_vec3_make(GGX_R(1.0f) + side * n.x * n.x * a, side * b, -side * n.x);
     basis.b = ggx_vec3_make(b, side + n.y * n.y * a, -n.y);
     basis.n = n;
     return basis;
@@ -39,7 +39,7 @@ GGX_INLINE ggx_vec3 ggx_from_local(ggx_basis basis, ggx_vec3 v)
 }
 
 // A sample of `method` for world-space n and i with roughness alpha; m and o in world space.
-GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, float alpha, float u1, float u2)
+GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_real alpha, ggx_real u1, ggx_real u2)
 {
     if (ggx_method_world_space(method) != 0)
         return ggx_sample_method(method, n, i, alpha, alpha, u1, u2);
@@ -51,14 +51,14 @@ GGX_INLINE ggx_sample ggx_sample_world(int method, ggx_vec3 n, ggx_vec3 i, float
 }
 
 // The BRDF value f |cos| (ggx_eval_reflection) of world-space i and o about the normal n.
-GGX_INLINE float ggx_eval_reflection_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
+GGX_INLINE ggx_real ggx_eval_reflection_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, ggx_real alpha)
 {
     ggx_basis basis = ggx_basis_from_normal(n);
     return ggx_eval_reflection(ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha);
 }
 
 // The pdf of the world-space direction o for `method` (0 where it never samples o).
-GGX_INLINE float ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha)
+GGX_INLINE ggx_real ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, ggx_real alpha)
 {
     if (ggx_method_world_space(method) != 0)
         return ggx_pdf_method(method, n, i, o, alpha, alpha);
@@ -67,22 +67,23 @@ GGX_INLINE float ggx_pdf_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, f
 }
 
 // The dielectric value f |cos| (ggx_eval_dielectric) of world-space i and o about the normal n.
-GGX_INLINE float ggx_eval_dielectric_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha, float eta, int radiance)
+GGX_INLINE ggx_real ggx_eval_dielectric_world(ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, ggx_real alpha, ggx_real eta,
+                                             int radiance)
 {
     ggx_basis basis = ggx_basis_from_normal(n);
     return ggx_eval_dielectric(ggx_to_local(basis, i), ggx_to_local(basis, o), alpha, alpha, eta, radiance);
 }
 
 // A dielectric sample of `method` (ggx_dielectric.h) for world-space n and i; m and o in world space.
-GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, float alpha, float eta,
-                                                  int radiance, float u1, float u2, float u3)
+GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_real alpha, ggx_real eta,
+                                                  int radiance, ggx_real u1, ggx_real u2, ggx_real u3)
 {
-    const bool below = ggx_dot(i, n) < 0.0f;
+    const bool below = ggx_dot(i, n) < GGX_R(0.0f);
     if (ggx_method_dielectric(method) == 0)
         return ggx_fallback_sample(n);
     const ggx_vec3 i_above = ggx_mirror_if(i, n, below);
     ggx_sample s = ggx_sample_world(method, n, i_above, alpha, u1, u2);
-    s = ggx_dielectric_from_reflection(s, n, i_above, alpha, alpha, below ? 1.0f / eta : eta, radiance, u3,
+    s = ggx_dielectric_from_reflection(s, n, i_above, alpha, alpha, below ? GGX_R(1.0f) / eta : eta, radiance, u3,
                                        ggx_method_ndf_normals(method) != 0, true);
     s.m = ggx_mirror_if(s.m, n, below);
     s.o = ggx_mirror_if(s.o, n, below);
@@ -90,16 +91,18 @@ GGX_INLINE ggx_sample ggx_sample_dielectric_world(int method, ggx_vec3 n, ggx_ve
 }
 
 // The density of the world-space o for `method`'s dielectric sampler, from (i, o) alone.
-GGX_INLINE float ggx_pdf_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, float alpha, float eta)
+GGX_INLINE ggx_real ggx_pdf_dielectric_world(int method, ggx_vec3 n, ggx_vec3 i, ggx_vec3 o, ggx_real alpha,
+                                            ggx_real eta)
 {
-    const bool below = ggx_dot(i, n) < 0.0f;
+    const bool below = ggx_dot(i, n) < GGX_R(0.0f);
     if (ggx_method_dielectric(method) == 0)
-        return 0.0f;
+        return GGX_R(0.0f);
     const ggx_vec3 i_above = ggx_mirror_if(i, n, below), o_side = ggx_mirror_if(o, n, below);
-    const float eta_side = below ? 1.0f / eta : eta;
-    const float reflection_pdf = ggx_pdf_world(method, n, i_above, o_side, alpha);
-    const float pdf = ggx_dielectric_pdf_above(method, n, i_above, o_side, alpha, alpha, eta_side, reflection_pdf, true);
-    return ggx_guard_pdf(ggx_eta_ok(eta) != 0 ? pdf : 0.0f, alpha, alpha);
+    const ggx_real eta_side = below ? GGX_R(1.0f) / eta : eta;
+    const ggx_real reflection_pdf = ggx_pdf_world(method, n, i_above, o_side, alpha);
+    const ggx_real pdf =
+        ggx_dielectric_pdf_above(method, n, i_above, o_side, alpha, alpha, eta_side, reflection_pdf, true);
+    return ggx_guard_pdf(ggx_eta_ok(eta) != 0 ? pdf : GGX_R(0.0f), alpha, alpha);
 }
 
 #endif

@@ -30,51 +30,64 @@ struct LimitsCommand {
 // Seconds the peak probe's child may take, its build included (a GPU's takes about one).
 constexpr double peak_probe_limit_s = 60;
 
-// Each method's precise write and furnace tasks, then the store-only kernel's.
-std::vector<BenchTask> limit_tasks(const LimitsCommand& cmd, BenchDevice& device)
-{
+// The command's values, checked before any device work.
+struct LimitsPlan {
+    std::vector<ggxcl::Method> methods;
     ggxcl::SampleParams base;
-    base.alpha_x = base.alpha_y = parse_alpha("--alpha", cmd.alpha)[0];
-    base.view = ggxcl::view_from_angles(parse_angle("--theta", cmd.theta, 0, 89), 0.0);
-    base.precision = ggxcl::Precision::precise;
-    std::vector<ggxcl::Method> methods(std::begin(ggxcl::all_methods), std::end(ggxcl::all_methods));
+    std::uint32_t count = 0;
+    int repeats = 0;
+};
+
+LimitsPlan plan_of(const LimitsCommand& cmd)
+{
+    LimitsPlan plan;
+    plan.methods.assign(std::begin(ggxcl::all_methods), std::end(ggxcl::all_methods));
     if (cmd.methods != "all") {
-        methods.clear();
+        plan.methods.clear();
         for (const std::string& name : split_list(cmd.methods))
-            methods.push_back(parse_method_option("--methods", name));
+            plan.methods.push_back(parse_method_option("--methods", name));
     }
+    plan.base.alpha_x = plan.base.alpha_y = parse_alpha("--alpha", cmd.alpha)[0];
+    plan.base.view = ggxcl::view_from_angles(parse_angle("--theta", cmd.theta, 0, 89), 0.0);
+    plan.base.precision = ggxcl::Precision::precise;
+    plan.count = std::uint32_t(parse_whole("-n", std::to_string(parse_count("-n", cmd.count)), 1, 1u << 30));
+    plan.repeats = int(parse_whole("--repeats", cmd.repeats, 5, 101));
+    return plan;
+}
+
+// Each method's precise write and furnace tasks, then the store-only kernel's.
+std::vector<BenchTask> limit_tasks(const LimitsPlan& plan, BenchDevice& device)
+{
     std::vector<BenchTask> tasks;
-    for (ggxcl::Method method : methods) {
-        ggxcl::SampleParams p = base;
+    for (ggxcl::Method method : plan.methods) {
+        ggxcl::SampleParams p = plan.base;
         p.method = method;
         tasks.push_back({BenchJob::write, p, &device});
         tasks.push_back({BenchJob::furnace, p, &device});
     }
-    tasks.push_back({BenchJob::store, base, &device});
+    tasks.push_back({BenchJob::store, plan.base, &device});
     return tasks;
 }
 
-LimitReport measure_limits(const LimitsCommand& cmd)
+LimitReport measure_limits(const LimitsPlan& plan, const std::string& selector)
 {
-    const std::uint64_t count = parse_whole("-n", std::to_string(parse_count("-n", cmd.count)), 1, 1u << 30);
     ApiChoice choice;
-    choice.selector = cmd.device;
-    BenchDevice device = open_bench_device(choice, std::uint32_t(count), {});  // OpenCL: ApiChoice's default
-    const std::vector<BenchTask> tasks = limit_tasks(cmd, device);
+    choice.selector = selector;
+    BenchDevice device = open_bench_device(choice, plan.count, {});  // OpenCL: ApiChoice's default
+    const std::vector<BenchTask> tasks = limit_tasks(plan, device);
     LimitReport report;
     report.device = device.label();
     std::cerr << "counting the operations of the kernels (clang)\n";
     const std::vector<std::optional<OpCounts>> ops = count_task_ops(tasks, report.ops_unavailable);
     std::cerr << "measuring the device's peaks (a child process, at most " << peak_probe_limit_s << " s)\n";
     try {
-        report.peaks = measure_peaks_in_child(cmd.device, peak_probe_limit_s);
+        report.peaks = measure_peaks_in_child(selector, peak_probe_limit_s);
         report.has_peaks = true;
     } catch (const std::exception& e) {
         report.peaks_unavailable = e.what();
     }
-    const int repeats = int(parse_whole("--repeats", cmd.repeats, 5, 101));
-    std::cerr << "timing " << tasks.size() << " rows, " << repeats << " interleaved rounds\n";
-    const std::vector<Timing> timings = time_interleaved(tasks, repeats);
+    std::cerr << "timing " << tasks.size() << " rows, " << plan.repeats << " interleaved rounds\n";
+    const std::vector<Timing> timings = time_interleaved(tasks, plan.repeats);
     for (std::size_t t = 0; t < tasks.size(); ++t) {
         const bool store = tasks[t].job == BenchJob::store;
         report.rows.push_back({store ? row_of("all", "store-only", "write", timings[t])  // the bench's name of it
@@ -108,8 +121,9 @@ int main(int argc, char** argv)
             std::cout << peak_rates_text(measure_peaks(sampler)) << std::flush;
             return 0;
         }
+        const LimitsPlan plan = plan_of(cmd);
         install_interrupt_cleanup();
-        const LimitReport report = measure_limits(cmd);
+        const LimitReport report = measure_limits(plan, cmd.device);
         std::ostringstream md;
         write_limit_section(md, report);
         std::cout << md.str();

@@ -6,7 +6,8 @@
 // errors are half-sized, not float-sized (control: the largest is above 1e-4); a D off by 1% in
 // alpha fails the same bound (negative control); and D at the pole overflows to Inf where
 // 1 / (pi alpha^2) passes 65504, alpha 0.002.  Every method's m, sample by sample, against the
-// reference's on the same half view, roughness and uniforms (the uniforms on half's grid below 1;
+// reference's on the same half view, roughness and uniforms (Philox's, rounded toward zero by
+// ggx_uniform_real, which keeps every float below 1 below 1 in half: checked on all 2^24 of them;
 // ggx_sincos.h still computes in float).  The CPU's f16 flags are printed: a CPU with AVX512-FP16
 // lowers _Float16 to its own instructions.
 #include <doctest/doctest.h>
@@ -24,6 +25,7 @@
 
 namespace ggx_f16 {
 #define GGX_ARITHMETIC 16
+#include "ggx_philox.h"
 #include "ggx_samplers.h"
 } // namespace ggx_f16
 
@@ -108,7 +110,8 @@ TEST_CASE("the GGX math in half precision agrees with the double reference withi
             lambda.add(double(ggx_f16::ggx_lambda(w.h, ax, ay)), exact_lambda, 1 + std::fabs(exact_lambda));
             G1.add(double(ggx_f16::ggx_G1(w.h, ax, ay)), ggxref::G1(w.d, dx, dy));
             G2.add(double(ggx_f16::ggx_G2(w.h, v.h, ax, ay)), ggxref::G2_height_correlated(w.d, v.d, dx, dy));
-            G2_separable.add(double(ggx_f16::ggx_G2_separable(w.h, v.h, ax, ay)), ggxref::G2_separable(w.d, v.d, dx, dy));
+            G2_separable.add(double(ggx_f16::ggx_G2_separable(w.h, v.h, ax, ay)),
+                             ggxref::G2_separable(w.d, v.d, dx, dy));
         }
     }
     const Worst* all[] = {&D, &lambda, &G1, &G2, &G2_separable};
@@ -154,11 +157,11 @@ double angle(const ggx_f16::ggx_vec3& a, const ggxref::Vec3& b)
 }
 
 // The angles between the half build's m and the reference's over views 0-80 degrees and alphas 0.1-1,
-// on uniforms of half's grid; `swap` feeds the half build (u2, u1): a wrong sample for the control.
+// on Philox's uniforms made half by ggx_uniform_real; `swap` feeds the half build (u2, u1): a wrong
+// sample for the control.
 std::vector<double> half_angles(ggxref::Method method, bool swap)
 {
-    std::mt19937_64 random(7);
-    std::uniform_int_distribution<int> grid(0, 2047);  // u = k / 2048: exact in half, below 1
+    std::uint64_t index = 0;
     const double alphas[][2] = {{0.1, 0.1}, {0.3, 0.3}, {1.0, 1.0}, {0.1, 0.5}};
     std::vector<double> angles;
     for (const auto& a : alphas) {
@@ -170,7 +173,8 @@ std::vector<double> half_angles(ggxref::Method method, bool swap)
             const half ax = half(a[0]), ay = half(a[1]);
             const ggxref::Params params{double(ax), double(ay), view.d};
             for (int k = 0; k < 2000; ++k) {
-                const half u1 = half(grid(random) / 2048.0), u2 = half(grid(random) / 2048.0);
+                const ggx_f16::ggx_uniform_pair u = ggx_f16::ggx_philox_pair(20261207, index++);
+                const half u1 = ggx_f16::ggx_uniform_real(u.u1), u2 = ggx_f16::ggx_uniform_real(u.u2);
                 const ggxref::Sample want = ggxref::sample(method, params, double(u1), double(u2));
                 const ggx_f16::ggx_sample got = ggx_f16::ggx_sample_method(
                     int(method), ggx_f16::ggx_vec3_make(half(0), half(0), half(1)), view.h, ax, ay, swap ? u2 : u1,
@@ -204,4 +208,24 @@ TEST_CASE("every method samples in half precision close to the reference on the 
     }
     const std::vector<double> swapped = half_angles(ggxref::Method::caps, true);
     CHECK(swapped[swapped.size() * 99 / 100] > 1e-2);  // negative control: the uniforms swapped
+}
+
+TEST_CASE("uniforms become half rounded toward zero: every float below 1 stays below 1, at the half below or equal")
+{
+    int mismatches = 0, rounded_to_one = 0;
+    for (std::uint32_t k = 0; k < (1u << 24); ++k) {  // every float k 2^-24 in [0, 1), Philox's grid
+        const float u = float(k) * 0x1p-24f;
+        const half h = ggx_f16::ggx_uniform_real(u);
+        const half up = half(u);  // to nearest: the control
+        rounded_to_one += float(up) == 1.0f;
+        // Toward zero: h <= u < the next half above h.
+        unsigned short bits;
+        std::memcpy(&bits, &h, sizeof bits);
+        const unsigned short next_bits = (unsigned short)(bits + 1u);
+        half next;
+        std::memcpy(&next, &next_bits, sizeof next);
+        mismatches += !(float(h) <= u && u < float(next) && float(h) < 1.0f);
+    }
+    CHECK(mismatches == 0);
+    CHECK(rounded_to_one == 4096);  // negative control: to nearest, the 2^12 floats from 1 - 2^-12 on become 1.0
 }

@@ -36,7 +36,7 @@
 
 // GGX_ARITHMETIC: the arithmetic type of the device math, ggx_real: 32 (float, the default) or 16
 // (half precision; so far C++'s _Float16 only, for the headers written on ggx_real: the math, the
-// samplers, the dielectric; ggx_sincos.h, Philox, Sobol and the kernels' I/O stay float).  GGX_R(x) makes the float literal x (0.5f) a ggx_real: in float the literal itself; in
+// samplers, the dielectric, the sincos; Philox, Sobol and the kernels' I/O stay float).  GGX_R(x) makes the float literal x (0.5f) a ggx_real: in float the literal itself; in
 // half a conversion that the compiler folds, so that no operation is promoted to float by a literal.
 // One arithmetic per translation unit: in C++ a half build includes the headers inside a namespace
 // of its own, after <cmath>, <cstdint> and <cstring> (tests/host/test_half_math.cpp).

@@ -7,8 +7,8 @@
 // alpha fails the same bound (negative control); and D at the pole overflows to Inf where
 // 1 / (pi alpha^2) passes 65504, alpha 0.002.  Every method's m, sample by sample, against the
 // reference's on the same half view, roughness and uniforms (Philox's, rounded toward zero by
-// ggx_uniform_real, which keeps every float below 1 below 1 in half: checked on all 2^24 of them;
-// ggx_sincos.h still computes in float).  The CPU's f16 flags are printed: a CPU with AVX512-FP16
+// ggx_uniform_real, which keeps every float below 1 below 1 in half: checked on all 2^24 of them),
+// and the sampling angle's sine and cosine in half on every half u in [0, 1).  The CPU's f16 flags are printed: a CPU with AVX512-FP16
 // lowers _Float16 to its own instructions.
 #include <doctest/doctest.h>
 
@@ -228,4 +228,35 @@ TEST_CASE("uniforms become half rounded toward zero: every float below 1 stays b
     }
     CHECK(mismatches == 0);
     CHECK(rounded_to_one == 4096);  // negative control: to nearest, the 2^12 floats from 1 - 2^-12 on become 1.0
+}
+
+TEST_CASE("the sampling angle's sine and cosine in half: every half u in [0, 1) within 1.25 x 2^-11")
+{
+    double worst = 0;  // in units of 2^-11, a half ulp in [0.5, 1)
+    int exact_quarters = 0;
+    for (unsigned short bits = 0; bits < 0x3C00; ++bits) {  // every half in [0, 1)
+        half u;
+        std::memcpy(&u, &bits, sizeof u);
+        const ggx_f16::ggx_sin_cos got = ggx_f16::ggx_sincos_2pi(u);
+        const double angle = 2 * M_PI * double(u);
+        worst = std::max({worst, std::fabs(double(got.sine) - std::sin(angle)) * 2048,
+                          std::fabs(double(got.cosine) - std::cos(angle)) * 2048});
+        if (double(u) * 4 == std::rint(double(u) * 4))
+            exact_quarters += std::fabs(double(got.sine)) == std::fabs(std::rint(std::sin(angle))) &&
+                              std::fabs(double(got.cosine)) == std::fabs(std::rint(std::cos(angle)));
+    }
+    MESSAGE("half sincos: largest error " << worst << " x 2^-11");
+    CHECK(worst <= 1.25);  // 2.5 half ulps near 1 (measured 1.12: x = f^2 and three fmas, each rounded)
+    CHECK(exact_quarters == 4);  // 0, 1/4, 1/2, 3/4: 0 and 1 exactly
+    // Negative control: the float form's pi/2 rounded to half, no remainder, misses by more.
+    double without_remainder = 0;
+    for (unsigned short bits = 0x3000; bits < 0x3400; ++bits) {  // u in [1/8, 1/4): f up to 1/2
+        half u;
+        std::memcpy(&u, &bits, sizeof u);
+        const ggx_f16::ggx_sin_cos got = ggx_f16::ggx_sincos_2pi(u);
+        const half f = half(4 * double(u) - std::rint(4 * double(u)));
+        const double wrong = double(got.sine) - double(f) * 4.838267949e-04;  // the remainder's share taken out
+        without_remainder = std::max(without_remainder, std::fabs(wrong - std::sin(2 * M_PI * double(u))) * 2048);
+    }
+    CHECK(without_remainder > worst);
 }

@@ -8,8 +8,8 @@
 // 1 / (pi alpha^2) passes 65504, alpha 0.002.  Every method's m, sample by sample, against the
 // reference's on the same half view, roughness and uniforms (Philox's, rounded toward zero by
 // ggx_uniform_real, which keeps every float below 1 below 1 in half: checked on all 2^24 of them),
-// and the sampling angle's sine and cosine in half on every half u in [0, 1).  The CPU's f16 flags are printed: a CPU with AVX512-FP16
-// lowers _Float16 to its own instructions.
+// and the sampling angle's sine and cosine in half on every half u in [0, 1).  The CPU's f16 flags
+// are printed: a CPU with AVX512-FP16 lowers _Float16 to its own instructions.
 #include <doctest/doctest.h>
 
 #include <algorithm>

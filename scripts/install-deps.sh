@@ -27,7 +27,7 @@ test_packages=(
   libstb-dev                          # PNG decoding in the tests, PNG encoding in examples/albedo_table
   pkgconf                             # the install test builds a consumer with pkg-config
   patchelf                            # $ORIGIN run paths in the relocatable GPU-check bundle (device-check.sh --bundle)
-  clang-15                            # the device headers as C++ and CUDA (test_languages); ggx bench's op counts
+  clang-15                            # the device headers as C++ and CUDA (test_languages); ggx-limits' op counts
   libclc-15-dev llvm-spirv-15 spirv-tools  # every program for AMD, NVPTX and SPIR-V targets (test_gpu_compilers)
   openmpi-bin libopenmpi-dev          # mpirun for test_mpi_shards (ggx itself links no MPI)
   slurm-wlm munge                     # a one-node Slurm started by test_slurm_cluster

@@ -83,25 +83,6 @@ GGX_INLINE ggx_vec3 ggx_stretch(ggx_vec3 w, ggx_real ax, ggx_real ay)
     return ggx_vec3_make(ax * w.x, ay * w.y, w.z);
 }
 
-// A uniform u in [0, 1), made in float (ggx_philox.h, ggx_sobol.h), as the ggx_real a sampler takes:
-// in half rounded toward zero, so that it stays below 1 (to nearest, every u from 1 - 2^-12 on would
-// round to 1.0, the edge of the disk or cap, where m lies in the surface).
-GGX_INLINE ggx_real ggx_uniform_real(float u)
-{
-#if GGX_ARITHMETIC == 16
-    ggx_real h = (ggx_real)u;
-    if ((float)h > u) {  // rounded up: the next half below (u >= 0, so h > 0 and its bits step down)
-        unsigned short bits;
-        std::memcpy(&bits, &h, sizeof bits);
-        bits = (unsigned short)(bits - 1u);
-        std::memcpy(&h, &bits, sizeof bits);
-    }
-    return h;
-#else
-    return u;
-#endif
-}
-
 // The form of a method's functions that the dispatchers of ggx_samplers.h
 // call for every method alike: the normal n (read by world-space methods)
 // and both roughnesses.  A tangent-space method's forms ignore n.

@@ -36,8 +36,9 @@
 
 // GGX_ARITHMETIC: the arithmetic type of the device math, ggx_real: 32 (float, the default) or 16
 // (half precision; so far C++'s _Float16 only, for the headers written on ggx_real: the math, the
-// samplers, the dielectric, the sincos; Philox, Sobol and the kernels' I/O stay float).  GGX_R(x) makes the float literal x (0.5f) a ggx_real: in float the literal itself; in
-// half a conversion that the compiler folds, so that no operation is promoted to float by a literal.
+// samplers, the dielectric, the sincos; Philox, Sobol and the kernels' I/O stay float).  GGX_R(x)
+// makes the float literal x (0.5f) a ggx_real: in float the literal itself; in half a conversion that
+// the compiler folds, so that no operation is promoted to float by a literal.
 // One arithmetic per translation unit: in C++ a half build includes the headers inside a namespace
 // of its own, after <cmath>, <cstdint> and <cstring> (tests/host/test_half_math.cpp).
 #ifndef GGX_ARITHMETIC
@@ -210,6 +211,25 @@ GGX_INLINE ggx_real ggx_clamp(ggx_real x, ggx_real lo, ggx_real hi) { return ggx
 #define GGX_R(x) ((ggx_real)(x))
 #else
 #define GGX_R(x) (x)
+#endif
+
+// A uniform u in [0, 1), made in float (ggx_philox.h, ggx_sobol.h), as the ggx_real a sampler takes:
+// in half rounded toward zero, so that it stays below 1 (to nearest, every u from 1 - 2^-12 on would
+// round to 1.0, the edge of the disk or cap, where m lies in the surface).
+#if GGX_ARITHMETIC == 16
+GGX_INLINE ggx_real ggx_uniform_real(float u)
+{
+    ggx_real h = (ggx_real)u;
+    if ((float)h > u) {  // rounded up: the next half below (u >= 0, so h > 0 and its bits step down)
+        std::uint16_t bits;
+        std::memcpy(&bits, &h, sizeof bits);
+        bits = std::uint16_t(bits - 1u);
+        std::memcpy(&h, &bits, sizeof bits);
+    }
+    return h;
+}
+#else
+GGX_INLINE ggx_real ggx_uniform_real(float u) { return u; }
 #endif
 
 #endif

@@ -356,16 +356,6 @@ StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl:
     return map_against(outcomes, host_outcomes(method, cases), cases, axes);
 }
 
-StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
-{
-    return conductor_map(host_outcomes(method, cases), cases, axes);
-}
-
-StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes)
-{
-    return map_against(cpp_outcomes(method, cases), host_outcomes(method, cases), cases, axes);
-}
-
 dielectric::Map dielectric::device_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                                        const std::vector<StressCase>& cases, const StressAxes& axes, bool guards)
 {

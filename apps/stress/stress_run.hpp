@@ -71,12 +71,10 @@ std::vector<StressOutcome> cpp_outcomes(ggxcl::Method method, const std::vector<
 StressMap device_stress_map(ggxcl::Backend& device, ggxcl::Method method, ggxcl::Precision precision,
                             const std::vector<StressCase>& cases, const StressAxes& axes, bool guards = true,
                             const ggxcl::UserSampler* user = nullptr);
-StressMap host_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
-StressMap cpp_stress_map(ggxcl::Method method, const std::vector<StressCase>& cases, const StressAxes& axes);
 
 // The conductor's map of `outcomes`, the cases whose m or o lies too far from `reference`'s (the same
-// cases' reference outcomes) counted as inaccurate or inaccurate_edge.  The *_stress_map functions each
-// draw the reference's outcomes again; a caller that makes several maps of the same cases draws them
+// cases' reference outcomes) counted as inaccurate or inaccurate_edge.  device_stress_map draws the
+// reference's outcomes for its one map; a caller that makes several maps of the same cases draws them
 // once (host_outcomes) and passes them here (the reference against itself: its own map).
 StressMap map_against(const std::vector<StressOutcome>& outcomes, const std::vector<StressOutcome>& reference,
                       const std::vector<StressCase>& cases, const StressAxes& axes);

@@ -21,7 +21,7 @@ const LimitRow* find_limit_row(const LimitReport& r, const std::string& method, 
                                const std::string& job)
 {
     for (const LimitRow& row : r.rows)
-        if (row.row.method == method && row.row.precision == precision && row.row.job == job && row.row.eta == 0.0f)
+        if (row.row.method == method && row.row.precision == precision && row.row.job == job)
             return &row;
     return nullptr;
 }
@@ -46,6 +46,10 @@ std::string compute_cell(const RowLimit& limit)
 
 void write_peaks(std::ostream& md, const LimitReport& r)
 {
+    if (!r.ops_unavailable.empty()) {  // the probe is not run: it has nothing to divide
+        md << "Compute limits unavailable: no op counts (" << r.ops_unavailable << ").\n\n";
+        return;
+    }
     if (!r.has_peaks) {
         md << "Compute limits unavailable: the peak probe failed (" << r.peaks_unavailable << ").\n\n";
         return;
@@ -56,8 +60,6 @@ void write_peaks(std::ostream& md, const LimitReport& r)
     for (OpClass c : all_op_classes)
         md << (c == OpClass::float_op ? " " : ", ") << op_class_name(c) << " " << giga(r.peaks[c]);
     md << ".\n\n";
-    if (!r.ops_unavailable.empty())
-        md << "Compute limits unavailable: no op counts (" << r.ops_unavailable << ").\n\n";
 }
 
 void write_ops_table(std::ostream& md, const std::vector<const LimitRow*>& rows)
@@ -82,7 +84,7 @@ void write_ops_table(std::ostream& md, const std::vector<const LimitRow*>& rows)
 std::optional<RowLimit> row_limit(const LimitRow& limit_row, const LimitReport& report)
 {
     const BenchRow& row = limit_row.row;
-    if ((row.job != "write" && row.job != "furnace") || row.eta != 0.0f)  // conductors only
+    if (row.job != "write" && row.job != "furnace")
         return std::nullopt;
     RowLimit limit;
     if (limit_row.ops && report.has_peaks)

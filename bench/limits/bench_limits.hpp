@@ -39,8 +39,8 @@ struct RowLimit {
     double percent = 0;                   // tighter / measured x 100
 };
 
-// The limits of a conductor's write or furnace row (nothing for other jobs, dielectric rows, or when
-// neither limit is known).
+// The limits of a write or furnace row (ggx-limits times conductors only; nothing for other jobs, or
+// when neither limit is known).
 std::optional<RowLimit> row_limit(const LimitRow& row, const LimitReport& report);
 
 // The CSV: a row per timed row, its ns, op counts and limits (percent_of_limit: what

@@ -79,12 +79,14 @@ LimitReport measure_limits(const LimitsPlan& plan, const std::string& selector)
     report.device = device.label();
     std::cerr << "counting the operations of the kernels (clang)\n";
     const std::vector<std::optional<OpCounts>> ops = count_task_ops(tasks, report.ops_unavailable);
-    std::cerr << "measuring the device's peaks (a child process, at most " << peak_probe_limit_s << " s)\n";
-    try {
-        report.peaks = measure_peaks_in_child(selector, peak_probe_limit_s);
-        report.has_peaks = true;
-    } catch (const std::exception& e) {
-        report.peaks_unavailable = e.what();
+    if (report.ops_unavailable.empty()) {  // without op counts the peaks divide nothing
+        std::cerr << "measuring the device's peaks (a child process, at most " << peak_probe_limit_s << " s)\n";
+        try {
+            report.peaks = measure_peaks_in_child(selector, peak_probe_limit_s);
+            report.has_peaks = true;
+        } catch (const std::exception& e) {
+            report.peaks_unavailable = e.what();
+        }
     }
     std::cerr << "timing " << tasks.size() << " rows, " << plan.repeats << " interleaved rounds\n";
     const std::vector<Timing> timings = time_interleaved(tasks, plan.repeats);
